@@ -1,0 +1,2 @@
+package org.handsim.bench;
+public class BenchMain { public static void main(String[] a){ System.out.println("bench"); } }

@@ -1,0 +1,181 @@
+package org.handsim.math;
+
+import java.util.Arrays;
+
+/**
+ * An immutable rigid transform (rotation R, translation t) mapping points from a child frame
+ * into its parent: {@code p_parent = R · p_child + t}. Stored row-major in 12 doubles
+ * {@code [r00 r01 r02 tx; r10 r11 r12 ty; r20 r21 r22 tz]}, the top three rows of the
+ * homogeneous 4×4 matrix.
+ *
+ * <p><b>Convention (worked example).</b> {@code RigidTransform.dh(θ, d, a, α)} is the standard
+ * Denavit–Hartenberg link transform {@code T(i−1 → i) = Rz(θ)·Tz(d)·Tx(a)·Rx(α)} (Craig's
+ * "classic" DH, Fu–Gonzalez–Lee §2.2). With θ = 90°, d = 0, a = 1, α = 0 the child origin is at
+ * parent (0, 1, 0) and the child x axis is the parent y axis: {@code apply({0,0,0})} = (0, 1, 0).
+ */
+public final class RigidTransform {
+    /** The identity transform. */
+    public static final RigidTransform IDENTITY = new RigidTransform(new double[] {
+        1, 0, 0, 0,
+        0, 1, 0, 0,
+        0, 0, 1, 0});
+
+    private final double[] m;
+
+    private RigidTransform(double[] m12) {
+        this.m = m12;
+    }
+
+    /**
+     * Wraps a copy of the given 12 row-major values. The rotation part is not re-orthogonalised;
+     * callers pass rotations they built from angles.
+     */
+    public static RigidTransform of(double[] m12) {
+        if (m12.length != 12) {
+            throw new IllegalArgumentException("a rigid transform needs 12 values, got " + m12.length);
+        }
+        return new RigidTransform(m12.clone());
+    }
+
+    /** A pure translation. */
+    public static RigidTransform translation(double x, double y, double z) {
+        return new RigidTransform(new double[] {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z});
+    }
+
+    /** A rotation by {@code angle} radians about the z axis. */
+    public static RigidTransform rotZ(double angle) {
+        double c = Math.cos(angle), s = Math.sin(angle);
+        return new RigidTransform(new double[] {c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0});
+    }
+
+    /** A rotation by {@code angle} radians about the x axis. */
+    public static RigidTransform rotX(double angle) {
+        double c = Math.cos(angle), s = Math.sin(angle);
+        return new RigidTransform(new double[] {1, 0, 0, 0, 0, c, -s, 0, 0, s, c, 0});
+    }
+
+    /**
+     * Rotation by the axis-angle vector {@code (rx, ry, rz)} (direction = axis, length = angle
+     * in radians, Rodrigues' formula) followed by the translation {@code (tx, ty, tz)}: the
+     * {@code --pose-b} convention of the CLI.
+     */
+    public static RigidTransform fromPose(double tx, double ty, double tz, double rx, double ry, double rz) {
+        double[] m = new double[12];
+        double angle = Math.sqrt(rx * rx + ry * ry + rz * rz);
+        if (angle < 1e-300) {
+            m[0] = m[5] = m[10] = 1;
+        } else {
+            double x = rx / angle, y = ry / angle, z = rz / angle;
+            double c = Math.cos(angle), s = Math.sin(angle), v = 1 - c;
+            m[0] = x * x * v + c;     m[1] = x * y * v - z * s; m[2] = x * z * v + y * s;
+            m[4] = y * x * v + z * s; m[5] = y * y * v + c;     m[6] = y * z * v - x * s;
+            m[8] = z * x * v - y * s; m[9] = z * y * v + x * s; m[10] = z * z * v + c;
+        }
+        m[3] = tx; m[7] = ty; m[11] = tz;
+        return new RigidTransform(m);
+    }
+
+    /**
+     * The standard Denavit–Hartenberg transform {@code Rz(θ)·Tz(d)·Tx(a)·Rx(α)}
+     * (paper Table I; Fu–Gonzalez–Lee eq. 2.2-29). Angles in radians, lengths in metres.
+     */
+    public static RigidTransform dh(double theta, double d, double a, double alpha) {
+        double[] m = new double[12];
+        dhInto(theta, d, a, alpha, m, 0);
+        return new RigidTransform(m);
+    }
+
+    /** Writes the DH transform's 12 values into {@code out[off..off+11]} (allocation-free). */
+    public static void dhInto(double theta, double d, double a, double alpha, double[] out, int off) {
+        double ct = Math.cos(theta), st = Math.sin(theta);
+        double ca = Math.cos(alpha), sa = Math.sin(alpha);
+        out[off] = ct;      out[off + 1] = -st * ca; out[off + 2] = st * sa;  out[off + 3] = a * ct;
+        out[off + 4] = st;  out[off + 5] = ct * ca;  out[off + 6] = -ct * sa; out[off + 7] = a * st;
+        out[off + 8] = 0;   out[off + 9] = sa;       out[off + 10] = ca;      out[off + 11] = d;
+    }
+
+    /** out = A·B for 12-value row-major rigid transforms (allocation-free; out must not alias). */
+    public static void multiply(double[] a, int ao, double[] b, int bo, double[] out, int oo) {
+        for (int r = 0; r < 3; r++) {
+            double a0 = a[ao + 4 * r], a1 = a[ao + 4 * r + 1], a2 = a[ao + 4 * r + 2];
+            out[oo + 4 * r] = a0 * b[bo] + a1 * b[bo + 4] + a2 * b[bo + 8];
+            out[oo + 4 * r + 1] = a0 * b[bo + 1] + a1 * b[bo + 5] + a2 * b[bo + 9];
+            out[oo + 4 * r + 2] = a0 * b[bo + 2] + a1 * b[bo + 6] + a2 * b[bo + 10];
+            out[oo + 4 * r + 3] = a0 * b[bo + 3] + a1 * b[bo + 7] + a2 * b[bo + 11] + a[ao + 4 * r + 3];
+        }
+    }
+
+    /** @return this · other (apply {@code other} first, then this). */
+    public RigidTransform compose(RigidTransform other) {
+        double[] out = new double[12];
+        multiply(m, 0, other.m, 0, out, 0);
+        return new RigidTransform(out);
+    }
+
+    /** @return the inverse transform (Rᵀ, −Rᵀt). */
+    public RigidTransform inverse() {
+        double[] o = new double[12];
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                o[4 * r + c] = m[4 * c + r];
+            }
+        }
+        for (int r = 0; r < 3; r++) {
+            o[4 * r + 3] = -(o[4 * r] * m[3] + o[4 * r + 1] * m[7] + o[4 * r + 2] * m[11]);
+        }
+        return new RigidTransform(o);
+    }
+
+    /** out = R·p + t (allocation-free; out may alias p). */
+    public void apply(double[] p, double[] out) {
+        double x = p[0], y = p[1], z = p[2];
+        out[0] = m[0] * x + m[1] * y + m[2] * z + m[3];
+        out[1] = m[4] * x + m[5] * y + m[6] * z + m[7];
+        out[2] = m[8] * x + m[9] * y + m[10] * z + m[11];
+    }
+
+    /** out = R·v (a direction: no translation; out may alias v). */
+    public void rotate(double[] v, double[] out) {
+        double x = v[0], y = v[1], z = v[2];
+        out[0] = m[0] * x + m[1] * y + m[2] * z;
+        out[1] = m[4] * x + m[5] * y + m[6] * z;
+        out[2] = m[8] * x + m[9] * y + m[10] * z;
+    }
+
+    /** @return the point {@code R·p + t} as a new array. */
+    public double[] apply(double[] p) {
+        double[] out = new double[3];
+        apply(p, out);
+        return out;
+    }
+
+    /** @return element (row, col) of the 3×4 matrix. */
+    public double get(int row, int col) {
+        return m[4 * row + col];
+    }
+
+    /** @return the translation (the child origin in the parent frame), a new array. */
+    public double[] origin() {
+        return new double[] {m[3], m[7], m[11]};
+    }
+
+    /** @return column {@code axis} (0 = x, 1 = y, 2 = z) of R: the child axis in the parent frame. */
+    public double[] axis(int axis) {
+        return new double[] {m[axis], m[4 + axis], m[8 + axis]};
+    }
+
+    /** Copies the 12 row-major values into {@code out[off..off+11]}. */
+    public void copyTo(double[] out, int off) {
+        System.arraycopy(m, 0, out, off, 12);
+    }
+
+    /** @return a copy of the 12 row-major values. */
+    public double[] toArray() {
+        return m.clone();
+    }
+
+    @Override
+    public String toString() {
+        return "RigidTransform" + Arrays.toString(m);
+    }
+}

@@ -1,0 +1,127 @@
+package org.handsim.util;
+
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Writes JSON for the command outputs (contracts: key order is insertion order). Numbers are
+ * written with Java's shortest round-trip form; a non-finite number is an error, never a
+ * silent {@code NaN} in the output.
+ */
+public final class JsonWriter {
+    private JsonWriter() {}
+
+    /** Compact JSON text of a value built from Map, List, arrays, numbers, strings, booleans, null. */
+    public static String write(Object v) {
+        StringBuilder sb = new StringBuilder();
+        append(sb, v, -1, 0);
+        return sb.toString();
+    }
+
+    /** Indented JSON text (2 spaces), for files people read. */
+    public static String pretty(Object v) {
+        StringBuilder sb = new StringBuilder();
+        append(sb, v, 2, 0);
+        return sb.append('\n').toString();
+    }
+
+    private static void newline(StringBuilder sb, int indent, int level) {
+        if (indent < 0) return;
+        sb.append('\n');
+        for (int i = 0; i < indent * level; i++) sb.append(' ');
+    }
+
+    private static void append(StringBuilder sb, Object v, int indent, int level) {
+        if (v == null) {
+            sb.append("null");
+        } else if (v instanceof String) {
+            quote(sb, (String) v);
+        } else if (v instanceof Boolean) {
+            sb.append(v);
+        } else if (v instanceof Double || v instanceof Float) {
+            number(sb, ((Number) v).doubleValue());
+        } else if (v instanceof Number) {
+            sb.append(((Number) v).longValue());
+        } else if (v instanceof double[]) {
+            double[] a = (double[]) v;
+            sb.append('[');
+            for (int i = 0; i < a.length; i++) {
+                if (i > 0) sb.append(',');
+                number(sb, a[i]);
+            }
+            sb.append(']');
+        } else if (v instanceof int[]) {
+            int[] a = (int[]) v;
+            sb.append('[');
+            for (int i = 0; i < a.length; i++) {
+                if (i > 0) sb.append(',');
+                sb.append(a[i]);
+            }
+            sb.append(']');
+        } else if (v instanceof double[][]) {
+            double[][] a = (double[][]) v;
+            sb.append('[');
+            for (int i = 0; i < a.length; i++) {
+                if (i > 0) sb.append(',');
+                append(sb, a[i], -1, 0);
+            }
+            sb.append(']');
+        } else if (v instanceof Map) {
+            sb.append('{');
+            Iterator<? extends Map.Entry<?, ?>> it = ((Map<?, ?>) v).entrySet().iterator();
+            boolean any = it.hasNext();
+            while (it.hasNext()) {
+                Map.Entry<?, ?> e = it.next();
+                newline(sb, indent, level + 1);
+                quote(sb, String.valueOf(e.getKey()));
+                sb.append(indent < 0 ? ":" : ": ");
+                append(sb, e.getValue(), indent, level + 1);
+                if (it.hasNext()) sb.append(',');
+            }
+            if (any) newline(sb, indent, level);
+            sb.append('}');
+        } else if (v instanceof List) {
+            List<?> l = (List<?>) v;
+            sb.append('[');
+            boolean scalars = l.stream().noneMatch(x -> x instanceof Map || x instanceof List);
+            for (int i = 0; i < l.size(); i++) {
+                if (i > 0) sb.append(',');
+                if (!scalars) newline(sb, indent, level + 1);
+                append(sb, l.get(i), indent, level + 1);
+            }
+            if (!scalars && !l.isEmpty()) newline(sb, indent, level);
+            sb.append(']');
+        } else {
+            throw new IllegalArgumentException("cannot write " + v.getClass().getName() + " as JSON");
+        }
+    }
+
+    private static void number(StringBuilder sb, double d) {
+        if (!Double.isFinite(d)) throw new IllegalArgumentException("refusing to write a non-finite number (" + d + ") as JSON");
+        if (d == Math.rint(d) && Math.abs(d) < 1e15) {
+            sb.append((long) d);
+            if (d == 0 && 1 / d < 0) sb.setLength(sb.length()); // -0 written as 0
+        } else {
+            sb.append(d);
+        }
+    }
+
+    private static void quote(StringBuilder sb, String s) {
+        sb.append('"');
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            switch (c) {
+                case '"': sb.append("\\\""); break;
+                case '\\': sb.append("\\\\"); break;
+                case '\n': sb.append("\\n"); break;
+                case '\r': sb.append("\\r"); break;
+                case '\t': sb.append("\\t"); break;
+                default:
+                    if (c < 0x20) sb.append(String.format("\\u%04x", (int) c));
+                    else sb.append(c);
+            }
+        }
+        sb.append('"');
+    }
+}
