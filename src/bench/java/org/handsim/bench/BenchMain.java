@@ -1,2 +1,31 @@
 package org.handsim.bench;
-public class BenchMain { public static void main(String[] a){ System.out.println("bench"); } }
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * {@code gradle bench [-Ponly=suite1,suite2]}: runs the benchmark suites in one JVM and prints
+ * medians. Suites register in {@link #SUITES}, one line each.
+ */
+public final class BenchMain {
+    /** A named group of measurements. */
+    public interface Suite {
+        void run() throws Exception;
+    }
+
+    static final Map<String, Suite> SUITES = new LinkedHashMap<>();
+    static {
+        // suites register here, one line each: SUITES.put("name", new SomeBench());
+    }
+
+    public static void main(String[] args) throws Exception {
+        System.out.println("# HandSim benchmarks  java " + System.getProperty("java.version") + ", "
+            + Runtime.getRuntime().availableProcessors() + " cores, " + java.time.LocalDate.now());
+        java.util.Set<String> only = new java.util.HashSet<>(java.util.Arrays.asList(args));
+        for (Map.Entry<String, Suite> e : SUITES.entrySet()) {
+            if (!only.isEmpty() && !only.contains(e.getKey())) continue;
+            System.out.println("\n## " + e.getKey());
+            e.getValue().run();
+        }
+    }
+}
