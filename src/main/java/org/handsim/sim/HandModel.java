@@ -66,7 +66,7 @@ public final class HandModel {
     // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
     private final double[] lastT = new double[3], lastQ = new double[3], lastTau = new double[3];
     // results
-    private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3];
+    private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3], contactQ = new double[3];
     private final double[] maxForce = new double[3];
     private final long[] counters = new long[Counter.values().length];
 
@@ -126,6 +126,7 @@ public final class HandModel {
             breakTorque[i] = Double.NaN;
             breakForce[i] = Double.NaN;
             breakQ[i] = Double.NaN;
+            contactQ[i] = Double.NaN;
             maxForce[i] = 0;
             updateFinger(k, false);
         }
@@ -261,6 +262,7 @@ public final class HandModel {
         double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
         if (which == 2 && c.state() == ClutchState.FREE) {
             c.innerContact(hi);
+            if (Double.isNaN(contactQ[i])) contactQ[i] = hi;
             lastT[i] = tTouch;
             lastQ[i] = hi;
             lastTau[i] = 0;
@@ -417,7 +419,8 @@ public final class HandModel {
     public double maxContactForce(int k) { return maxForce[k - 1]; }
     /** Motor count of finger k's (first) breakaway, NaN if none. */
     public double breakawayCounts(int k) { return breakQ[k - 1]; }
-    public double contactCounts(int k) { return clutch[k - 1].qContact(); }
+    /** Motor count where finger k's inner link (first) met the object, NaN if never. */
+    public double contactCounts(int k) { return contactQ[k - 1]; }
     /** Work counters since {@link #initialise()}. */
     public long counter(Counter c) { return counters[c.ordinal()]; }
     public long[] counters() { return counters.clone(); }
