@@ -45,17 +45,18 @@ import org.handsim.util.JsonObject;
  * }</pre>
  * Motors M1–M3 drive fingers 1–3 (counts in [0, 17 500]); M4 is the spread (counts in [0, 3 150]).
  */
-public final class Scenario {
-    private final String name, description;
-    private final Path file;
-    private final RigidTransform worldFromPalm;
-    private final double[] gravity;
-    private final ObjectPlacement object;
-    private final double[] startCounts = new double[4];
-    private final Trajectory[] motors = new Trajectory[4];
-    private final double dt, duration;
-    private final boolean writeTrace, writeCharts, computeTorques;
-    private final JsonObject root;
+public final class Scenario implements Cloneable {
+    // effectively immutable: only the with...() copies below assign after construction
+    private String name, description;
+    private Path file;
+    private RigidTransform worldFromPalm;
+    private double[] gravity;
+    private ObjectPlacement object;
+    private double[] startCounts = new double[4];
+    private Trajectory[] motors = new Trajectory[4];
+    private double dt, duration;
+    private boolean writeTrace, writeCharts, computeTorques;
+    private JsonObject root;
 
     /** Where the object is and how it is tessellated. */
     public record ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions) {}
@@ -213,4 +214,69 @@ public final class Scenario {
     public boolean computeTorques() { return computeTorques; }
     /** The parsed file (for fields other tools add). */
     public JsonObject json() { return root; }
+
+    private Scenario copy() {
+        try {
+            Scenario c = (Scenario) super.clone();
+            c.gravity = gravity.clone();
+            c.startCounts = startCounts.clone();
+            c.motors = motors.clone();
+            return c;
+        } catch (CloneNotSupportedException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    /** A copy with another time step (seconds, in (0, 0.1]). */
+    public Scenario withDt(double newDt) {
+        if (!(newDt > 0) || newDt > 0.1) throw new IllegalArgumentException("dt must be in (0, 0.1] s, got " + newDt);
+        Scenario c = copy();
+        c.dt = newDt;
+        return c;
+    }
+
+    /** A copy with another duration (seconds). */
+    public Scenario withDuration(double seconds) {
+        if (!(seconds > 0)) throw new IllegalArgumentException("duration must be > 0, got " + seconds);
+        Scenario c = copy();
+        c.duration = seconds;
+        return c;
+    }
+
+    /** A copy with another name (the output folder). */
+    public Scenario withName(String newName) {
+        Scenario c = copy();
+        c.name = newName;
+        return c;
+    }
+
+    /** A copy with another object (null: none). */
+    public Scenario withObject(ObjectPlacement placement) {
+        Scenario c = copy();
+        c.object = placement;
+        return c;
+    }
+
+    /** A copy with another gravity vector (world frame, m/s²). */
+    public Scenario withGravity(double[] g) {
+        Scenario c = copy();
+        c.gravity = g.clone();
+        return c;
+    }
+
+    /** A copy where motor m (0..3) follows {@code t} from t = 0 (its start counts become t's start). */
+    public Scenario withMotor(int m, Trajectory t) {
+        Scenario c = copy();
+        c.motors[m] = t;
+        c.startCounts[m] = t.start();
+        c.duration = Math.max(c.duration, t.duration());
+        return c;
+    }
+
+    /** A copy with torques computed or not (the clutch does not need them). */
+    public Scenario withTorques(boolean on) {
+        Scenario c = copy();
+        c.computeTorques = on;
+        return c;
+    }
 }
