@@ -403,6 +403,12 @@ public final class HandModel {
     public ClutchState state(int k) { return clutch[k - 1].state(); }
     /** Joint angles of finger k (a new array, radians). */
     public double[] joints(int k) { return q[k - 1].clone(); }
+    /** Joint velocities of finger k (a new array, rad/s). */
+    public double[] velocities(int k) { return qd[k - 1].clone(); }
+    /** Joint accelerations of finger k (a new array, rad/s²). */
+    public double[] accelerations(int k) { return qdd[k - 1].clone(); }
+    /** An immutable copy of the state now, for other threads. */
+    public Snapshot snapshot() { return Snapshot.of(this); }
     /** Joint torques of finger k (a new array, N·m). */
     public double[] torques(int k) { return tau[k - 1].clone(); }
     /** Motor counts of finger k now. */
