@@ -126,14 +126,29 @@ public final class Kdop {
         if (z < b[off + 4]) b[off + 4] = z;
         if (z > b[off + 5]) b[off + 5] = z;
         if (m == 3) return;
-        double margin = MARGIN * (Math.abs(x) + Math.abs(y) + Math.abs(z));
-        for (int i = 3; i < m; i++) {
-            double p = dx[i] * x + dy[i] * y + dz[i] * z;
-            double lo = p - margin, hi = p + margin;
-            int s = off + 2 * i;
-            if (lo < b[s]) b[s] = lo;
-            if (hi > b[s + 1]) b[s + 1] = hi;
+        double mg = MARGIN * (Math.abs(x) + Math.abs(y) + Math.abs(z));
+        int s = off + 6;
+        if (k != 14) {   // edge directions, slots 6..17
+            slot(b, s, x + y, mg);
+            slot(b, s + 2, x + z, mg);
+            slot(b, s + 4, y + z, mg);
+            slot(b, s + 6, x - y, mg);
+            slot(b, s + 8, x - z, mg);
+            slot(b, s + 10, y - z, mg);
+            s += 12;
         }
+        if (k != 18) {   // corner directions
+            slot(b, s, x + y + z, mg);
+            slot(b, s + 2, x + y - z, mg);
+            slot(b, s + 4, x - y + z, mg);
+            slot(b, s + 6, -x + y + z, mg);
+        }
+    }
+
+    private static void slot(double[] b, int s, double p, double mg) {
+        double lo = p - mg, hi = p + mg;
+        if (lo < b[s]) b[s] = lo;
+        if (hi > b[s + 1]) b[s + 1] = hi;
     }
 
     /**

@@ -78,6 +78,8 @@ public final class KdopTree {
     final boolean[] degenerate;
     private final int degenerateCount;
     private double[] vertices;
+    /** Per triangle: normal (b−a)×(c−a) and its permanent terms ({@link Predicates#normal}) from {@link #vertices}. */
+    final double[] triN, triNAbs;
 
     private KdopTree(TriangleMesh mesh, Kdop kdop, SplitRule rule, int maxLeafSize) {
         this.mesh = mesh;
@@ -108,7 +110,18 @@ public final class KdopTree {
         this.child = Arrays.copyOf(ch, count);
         this.size = Arrays.copyOf(sz, count);
         this.bounds = new double[count * k];
+        this.triN = new double[3 * n];
+        this.triNAbs = new double[3 * n];
         fitBounds(vertices, bounds);
+        normals(vertices, tris, triN, triNAbs);
+    }
+
+    /** The floating-point normals and permanents of every triangle, as {@link Predicates#normal}. */
+    static void normals(double[] v, int[] tris, double[] n, double[] nAbs) {
+        for (int t = 0; t < tris.length; t += 3) {
+            int a = 3 * tris[t], b = 3 * tris[t + 1], c = 3 * tris[t + 2];
+            Predicates.normal(v[a], v[a + 1], v[a + 2], v[b], v[b + 1], v[b + 2], v[c], v[c + 1], v[c + 2], n, nAbs, t);
+        }
     }
 
     /** Builds with the default split rule and leaf size. */
@@ -338,6 +351,7 @@ public final class KdopTree {
         if (vertices == mesh.vertices()) vertices = new double[newVertices.length];
         System.arraycopy(newVertices, 0, vertices, 0, newVertices.length);
         fitBounds(vertices, bounds);
+        normals(vertices, tris, triN, triNAbs);
     }
 
     /** Refits to the mesh's vertices moved by {@code pose} (mesh frame → new frame). */
@@ -347,6 +361,7 @@ public final class KdopTree {
         pose.copyTo(m, 0);
         transformPoints(m, mesh.vertices(), vertices, mesh.vertexCount());
         fitBounds(vertices, bounds);
+        normals(vertices, tris, triN, triNAbs);
     }
 
     /**

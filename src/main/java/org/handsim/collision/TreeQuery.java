@@ -107,69 +107,121 @@ public final class TreeQuery {
         if (a.k() != b.k()) throw new IllegalArgumentException("trees have different k: " + a.k() + " and " + b.k());
         out.clear();
         if (a.nodeCount == 0 || b.nodeCount == 0) return;
-        final int k = a.k();
         long exact0 = tt.predicates().exactCalls();
-        double[] bb, vb;
-        boolean lazy = false;
         double[] bv = b.vertices();
-        int nbv = bv.length / 3;
-        if (isIdentity(m)) {
+        int nbv = bv.length / 3, nbt = b.tris.length / 3;
+        boolean identity = isIdentity(m);
+        boolean refit = !identity && placement == Placement.REFIT;
+        lazy = !identity && placement == Placement.TRANSFORM;
+        if (++stamp == Integer.MAX_VALUE) {
+            Arrays.fill(nodeStamp, 0);
+            Arrays.fill(vertStamp, 0);
+            Arrays.fill(triStamp, 0);
+            stamp = 1;
+        }
+        if (identity) {
             bb = b.bounds;
             vb = bv;
-        } else if (placement == Placement.REFIT) {
+            nB = b.triN;
+            nAbsB = b.triNAbs;
+        } else {
             if (placedVerts.length < bv.length) placedVerts = new double[bv.length];
             if (placedBounds.length < b.bounds.length) placedBounds = new double[b.bounds.length];
-            KdopTree.transformPoints(m, bv, placedVerts, nbv);
-            b.fitBounds(placedVerts, placedBounds);
-            bb = placedBounds;
-            vb = placedVerts;
-        } else {
-            if (placedVerts.length < bv.length) {
-                placedVerts = new double[bv.length];
-                vertStamp = new int[nbv];
-            }
-            if (placedBounds.length < b.bounds.length) {
-                placedBounds = new double[b.bounds.length];
-                nodeStamp = new int[b.nodeCount];
-            }
             if (vertStamp.length < nbv) vertStamp = new int[nbv];
             if (nodeStamp.length < b.nodeCount) nodeStamp = new int[b.nodeCount];
-            if (++stamp == Integer.MAX_VALUE) {
-                Arrays.fill(nodeStamp, 0);
-                Arrays.fill(vertStamp, 0);
-                stamp = 1;
+            if (triStamp.length < nbt) {
+                triStamp = new int[nbt];
+                placedN = new double[3 * nbt];
+                placedNAbs = new double[3 * nbt];
             }
-            tb.prepare(b.kdop(), m);
             bb = placedBounds;
             vb = placedVerts;
-            lazy = true;
+            nB = placedN;
+            nAbsB = placedNAbs;
+            if (refit) {
+                KdopTree.transformPoints(m, bv, placedVerts, nbv);
+                b.fitBounds(placedVerts, placedBounds);
+            } else {
+                tb.prepare(b.kdop(), m);
+            }
         }
-        walk(a, b, k, bb, vb, lazy, out, stopAtFirst);
+        normalsPlaced = identity;
+        walk(a, b, out, stopAtFirst);
         out.exactPredicates = tt.predicates().exactCalls() - exact0;
     }
 
-    private void walk(KdopTree a, KdopTree b, int k, double[] bb, double[] vb, boolean lazy,
-                      CollisionResult out, boolean stopAtFirst) {
-        final double[] ba = a.bounds, bSrc = b.bounds, va = a.vertices(), bv = b.vertices();
+    // per-query state of the walk
+    private boolean lazy, normalsPlaced;
+    private double[] bb, vb, nB, nAbsB;
+    private int[] triStamp = new int[0];
+    private double[] placedN = new double[0], placedNAbs = new double[0];
+
+    /** Makes B node nb's bounds available in A's frame (lazy placement), at bb[nb·k]. */
+    private void placeNode(KdopTree b, int nb) {
+        if (nodeStamp[nb] == stamp) return;
+        nodeStamp[nb] = stamp;
+        int k = b.k(), o = nb * k;
+        int c = b.child[nb];
+        if (c < 0) {
+            // a leaf: the exact k-DOP of its placed vertices (which the triangle tests need anyway)
+            Kdop kd = b.kdop();
+            kd.setEmpty(bb, o);
+            double[] src = b.vertices();
+            for (int j = ~c, e = j + b.size[nb]; j < e; j++) {
+                int t = 3 * b.order[j];
+                for (int q = 0; q < 3; q++) {
+                    int p = 3 * b.tris[t + q];
+                    placeVertex(src, p);
+                    kd.addPoint(bb, o, vb[p], vb[p + 1], vb[p + 2]);
+                }
+            }
+        } else {
+            tb.apply(b.bounds, o, bb, o);
+        }
+    }
+
+    private void placeVertex(double[] src, int off) {
+        int v = off / 3;
+        if (vertStamp[v] != stamp) {
+            KdopTree.transformPoint(m, src, off, vb, off);
+            vertStamp[v] = stamp;
+        }
+    }
+
+    /** Makes B triangle t's normal (from its placed vertices) available at nB[3t]. */
+    private void placeNormal(KdopTree b, int t) {
+        if (triStamp[t] == stamp) return;
+        triStamp[t] = stamp;
+        int o = 3 * t;
+        int p0 = 3 * b.tris[o], p1 = 3 * b.tris[o + 1], p2 = 3 * b.tris[o + 2];
+        if (lazy) {
+            double[] src = b.vertices();
+            placeVertex(src, p0);
+            placeVertex(src, p1);
+            placeVertex(src, p2);
+        }
+        double[] v = vb;
+        Predicates.normal(v[p0], v[p0 + 1], v[p0 + 2], v[p1], v[p1 + 1], v[p1 + 2], v[p2], v[p2 + 1], v[p2 + 2], nB, nAbsB, o);
+    }
+
+    private void walk(KdopTree a, KdopTree b, CollisionResult out, boolean stopAtFirst) {
+        final int k = a.k();
+        final double[] ba = a.bounds, va = a.vertices(), nA = a.triN, nAbsA = a.triNAbs;
+        final double[] bbl = bb;
         final int[] childA = a.child, childB = b.child, sizeA = a.size, sizeB = b.size;
         final int[] orderA = a.order, orderB = b.order, trisA = a.tris, trisB = b.tris;
         final boolean[] degA = a.degenerate, degB = b.degenerate;
-        final int[] nStamp = nodeStamp, vStamp = vertStamp;
-        final int st = stamp;
+        final boolean lz = lazy, placeNormals = !normalsPlaced;
         int[] stk = stack;
         int sp = 0;
-        stk[sp++] = 0;
-        stk[sp++] = 0;
-        long nodeTests = 0, triTests = 0, degSkipped = 0;
+        long tests = 1, triTests = 0, degSkipped = 0;
+        if (lz) placeNode(b, 0);
+        if (Kdop.overlap(ba, 0, bbl, 0, k)) {
+            stk[sp++] = 0;
+            stk[sp++] = 0;
+        }
         while (sp > 0) {
             int nb = stk[--sp], na = stk[--sp];
-            nodeTests++;
-            int ob = nb * k;
-            if (lazy && nStamp[nb] != st) {
-                tb.apply(bSrc, ob, bb, ob);
-                nStamp[nb] = st;
-            }
-            if (!Kdop.overlap(ba, na * k, bb, ob, k)) continue;
             int ca = childA[na], cb = childB[nb];
             if (ca < 0 && cb < 0) {
                 int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
@@ -181,14 +233,10 @@ public final class TreeQuery {
                             degSkipped++;
                             continue;
                         }
-                        int b0 = 3 * trisB[3 * tbi], b1 = 3 * trisB[3 * tbi + 1], b2 = 3 * trisB[3 * tbi + 2];
-                        if (lazy) {
-                            placeVertex(bv, vb, vStamp, st, b0);
-                            placeVertex(bv, vb, vStamp, st, b1);
-                            placeVertex(bv, vb, vStamp, st, b2);
-                        }
+                        if (placeNormals) placeNormal(b, tbi);
                         triTests++;
-                        int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], vb, b0, b1, b2);
+                        int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
+                            vb, 3 * trisB[3 * tbi], 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
                         if (r != TriangleIntersector.DISJOINT) {
                             out.add(ta, tbi, tt, r);
                             if (stopAtFirst) {
@@ -205,25 +253,32 @@ public final class TreeQuery {
                 stk = Arrays.copyOf(stk, 2 * stk.length);
                 stack = stk;
             }
+            tests += 2;
             if (cb < 0 || (ca >= 0 && sizeA[na] >= sizeB[nb])) {
-                stk[sp++] = ca; stk[sp++] = nb;
-                stk[sp++] = na + 1; stk[sp++] = nb;
+                int ob = nb * k;
+                if (Kdop.overlap(ba, ca * k, bbl, ob, k)) {
+                    stk[sp++] = ca; stk[sp++] = nb;
+                }
+                if (Kdop.overlap(ba, (na + 1) * k, bbl, ob, k)) {
+                    stk[sp++] = na + 1; stk[sp++] = nb;
+                }
             } else {
-                stk[sp++] = na; stk[sp++] = cb;
-                stk[sp++] = na; stk[sp++] = nb + 1;
+                int oa = na * k;
+                if (lz) {
+                    placeNode(b, cb);
+                    placeNode(b, nb + 1);
+                }
+                if (Kdop.overlap(ba, oa, bbl, cb * k, k)) {
+                    stk[sp++] = na; stk[sp++] = cb;
+                }
+                if (Kdop.overlap(ba, oa, bbl, (nb + 1) * k, k)) {
+                    stk[sp++] = na; stk[sp++] = nb + 1;
+                }
             }
         }
-        out.nodeTests = nodeTests;
-        out.kdopTests = nodeTests;
+        out.nodeTests = tests;
+        out.kdopTests = tests;
         out.triangleTests = triTests;
         out.degenerateSkipped = degSkipped;
-    }
-
-    private void placeVertex(double[] src, double[] dst, int[] vStamp, int st, int off) {
-        int v = off / 3;
-        if (vStamp[v] != st) {
-            KdopTree.transformPoint(m, src, off, dst, off);
-            vStamp[v] = st;
-        }
     }
 }

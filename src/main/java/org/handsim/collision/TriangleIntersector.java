@@ -95,6 +95,30 @@ public final class TriangleIntersector {
      * @return {@link #DISJOINT}, {@link #SEGMENT} or {@link #COPLANAR}
      */
     public int intersect(double[] va, int a0, int a1, int a2, double[] vb, int b0, int b1, int b2) {
+        load(va, a0, a1, a2, vb, b0, b1, b2);
+        double[] p = v1, q = v2;
+        Predicates.normal(q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], q[8], nrm, nAbs, 3);
+        Predicates.normal(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], nrm, nAbs, 0);
+        return decide();
+    }
+
+    /**
+     * As {@link #intersect(double[], int, int, int, double[], int, int, int)}, with each
+     * triangle's normal and permanent terms precomputed by {@link Predicates#normal} from the
+     * same coordinates ({@code nA[oA..oA+2]}, {@code nAbsA[oA..]}; likewise for B), as the
+     * tree query caches them.
+     */
+    public int intersect(double[] va, int a0, int a1, int a2, double[] nA, double[] nAbsA, int oA,
+                         double[] vb, int b0, int b1, int b2, double[] nB, double[] nAbsB, int oB) {
+        load(va, a0, a1, a2, vb, b0, b1, b2);
+        nrm[0] = nA[oA]; nrm[1] = nA[oA + 1]; nrm[2] = nA[oA + 2];
+        nAbs[0] = nAbsA[oA]; nAbs[1] = nAbsA[oA + 1]; nAbs[2] = nAbsA[oA + 2];
+        nrm[3] = nB[oB]; nrm[4] = nB[oB + 1]; nrm[5] = nB[oB + 2];
+        nAbs[3] = nAbsB[oB]; nAbs[4] = nAbsB[oB + 1]; nAbs[5] = nAbsB[oB + 2];
+        return decide();
+    }
+
+    private void load(double[] va, int a0, int a1, int a2, double[] vb, int b0, int b1, int b2) {
         tests++;
         segCount = 0;
         area = 0;
@@ -105,13 +129,13 @@ public final class TriangleIntersector {
         q[0] = vb[b0]; q[1] = vb[b0 + 1]; q[2] = vb[b0 + 2];
         q[3] = vb[b1]; q[4] = vb[b1 + 1]; q[5] = vb[b1 + 2];
         q[6] = vb[b2]; q[7] = vb[b2 + 1]; q[8] = vb[b2 + 2];
+    }
 
+    private int decide() {
         // T1's vertices against T2's plane
-        Predicates.normal(q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], q[8], nrm, nAbs, 3);
         for (int i = 0; i < 3; i++) d1[i] = side2(i);
         if ((d1[0] > 0 && d1[1] > 0 && d1[2] > 0) || (d1[0] < 0 && d1[1] < 0 && d1[2] < 0)) return DISJOINT;
         // T2's vertices against T1's plane
-        Predicates.normal(p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], nrm, nAbs, 0);
         for (int i = 0; i < 3; i++) d2[i] = side1(i);
         if ((d2[0] > 0 && d2[1] > 0 && d2[2] > 0) || (d2[0] < 0 && d2[1] < 0 && d2[2] < 0)) return DISJOINT;
 
