@@ -38,7 +38,8 @@ import org.handsim.mesh.TriangleMesh;
  *       of the intersection curve instead (a discrete ∮ n ds, independent of the band's width),
  *       or, in a face-to-face contact, by the coplanar overlap areas: mean error 1.3°, 0.40°,
  *       0.11° on the same cases, shrinking with the resolution (on icospheres of 320, 1 280,
- *       5 120 triangles: 0.88°, 0.15°, 0.08°, where the paper's rule gives 2.2°, 1.1°, 0.64°). Worked example: a finger link A pressed down onto a table B
+ *       5 120 triangles: 0.88°, 0.15°, 0.08°, where the paper's rule gives 2.2°, 1.1°, 0.64°).
+ *       Worked example: a finger link A pressed down onto a table B
  *       (B's top face normal +z) gives normal (0, 0, 1): the direction in which the table
  *       pushes the link. Swapping A and B and naming the same mesh as object flips the normal
  *       exactly;</li>
