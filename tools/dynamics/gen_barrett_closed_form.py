@@ -16,13 +16,13 @@ Derivation (Fu-Gonzalez-Lee, Robotics, 1987, section 3.2, the Lagrange-Euler for
     the ten inertial parameters of each link stay symbols, so the generated code serves any hand
     description file with this structure; the DH angle th_j = q_j + offset_j is an input.
   * Symbols c_j = cos th_j, s_j = sin th_j make every entry a polynomial.
-  * D_ik = sum_j Tr(U_jk J_j U_ji^T)                           (FGL eq 3.2-27)
-    U_ji = T_{i-1} Q ^{i-1}T_j                                   (FGL eq 3.2-15)
-    J_j  = pseudo-inertia about the origin of frame {j}           (FGL eq 3.2-18)
-  * c_i  = -sum_j m_j g U_ji rbar_j                               (FGL eq 3.2-31)
-  * V    = -sum_j m_j g T_j rbar_j                                (FGL eq 3.2-22)
+  * D_ik = sum_j Tr(U_jk J_j U_ji^T)                           (LE3)
+    U_ji = T_{i-1} Q ^{i-1}T_j                                   (LE1)
+    J_j  = pseudo-inertia about the origin of frame {j}           (FGL §3.2)
+  * c_i  = -sum_j m_j g U_ji rbar_j                               (FGL §3.2, c)
+  * V    = -sum_j m_j g T_j rbar_j                                (FGL §3.2)
   * h_i  = sum_k sum_m c_ikm qd_k qd_m with the Christoffel symbols
-    c_ikm = (dD_ik/dq_m + dD_im/dq_k - dD_km/dq_i) / 2, equal to FGL's h_ikm (eq 3.2-30): both
+    c_ikm = (dD_ik/dq_m + dD_im/dq_k - dD_km/dq_i) / 2, equal to FGL's h_ikm: both
     are the symmetric coefficients of the same quadratic form in qd.
   * Every polynomial is reduced modulo s_j^2 + c_j^2 - 1 (a Groebner basis), which is exact.
   * Each output is then a sum of (parameter-only coefficient) x (monomial in c, s, qd, g).
@@ -300,7 +300,7 @@ HEADER = '''package org.handsim.dynamics;
  * generated symbolically: the "analytical representation of the matrices" the paper
  * implemented. Valid for three revolute joints with standard DH twists α = (90°, 0, 0) and
  * offsets d = (0, 0, 0) (paper Table I); the link lengths and the ten inertial parameters of each
- * link (the pseudo-inertia J_j about the origin of frame {{j}}, FGL eq 3.2-18) are constructor
+ * link (the pseudo-inertia J_j about the origin of frame {{j}}, FGL §3.2) are constructor
  * arguments, folded once into the constants k0…k{nk}.
  *
  * <p>Inputs are the DH angles t_j = q_j + offset_j (radians), joint velocities (rad/s),
@@ -309,9 +309,9 @@ HEADER = '''package org.handsim.dynamics;
  * is the public face. Immutable and thread-safe.
  *
  * <p>How the expressions were derived (see the generator's docstring): D_ik = Σ_j Tr(U_jk J_j
- * U_jiᵀ) (FGL eq 3.2-27), C_i = −Σ_j m_j g U_ji r̄_j (eq 3.2-31), V = −Σ_j m_j g T_j r̄_j
- * (eq 3.2-22), H_i = Σ_km c_ikm q̇_k q̇_m with the Christoffel symbols of D (= FGL's h_ikm, eq
- * 3.2-30), each reduced modulo sin² + cos² = 1.
+ * U_jiᵀ) (formula LE3 of {{@link LagrangeEuler}}), C_i = −Σ_j m_j g U_ji r̄_j (LE5),
+ * V = −Σ_j m_j g T_j r̄_j, H_i = Σ_km c_ikm q̇_k q̇_m with the Christoffel symbols c_ikm of D
+ * (equal to FGL's h_ikm, LE4), each reduced modulo sin² + cos² = 1.
  */
 final class BarrettFingerKernel {{
 '''
@@ -379,7 +379,7 @@ def generate():
            '    void inverseDynamics(double t1, double t2, double t3, double qd1, double qd2, double qd3,\n'
            '                         double qdd1, double qdd2, double qdd3, double gx, double gy, double gz, double[] tau)',
            tau_body)
-    method('/** Potential energy V = −Σ m_j g·p_j (FGL eq 3.2-22), J. */\n'
+    method('/** Potential energy V = −Σ m_j g·p_j (FGL §3.2), J. */\n'
            '    double potentialEnergy(double t1, double t2, double t3, double gx, double gy, double gz)',
            lambda m: [f'        return {m.linear_form(V, G)};'])
 
@@ -389,7 +389,7 @@ def generate():
     fields = '\n'.join(f'    private final double k{i};' for i in range(len(consts.exprs)))
     ctor = ['    /**',
             '     * @param a1 DH length a of link 1, metres (likewise a2, a3)',
-            '     * @param p  the pseudo-inertias J_1, J_2, J_3 (FGL eq 3.2-18), 16 row-major values each',
+            '     * @param p  the pseudo-inertias J_1, J_2, J_3 (FGL §3.2), 16 row-major values each',
             '     *          ({@link LinkChain#pseudoInertia}): kg, kg·m, kg·m²',
             '     */',
             '    BarrettFingerKernel(double a1, double a2, double a3, double[] p) {']

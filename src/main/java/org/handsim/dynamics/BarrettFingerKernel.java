@@ -8,7 +8,7 @@ package org.handsim.dynamics;
  * generated symbolically: the "analytical representation of the matrices" the paper
  * implemented. Valid for three revolute joints with standard DH twists α = (90°, 0, 0) and
  * offsets d = (0, 0, 0) (paper Table I); the link lengths and the ten inertial parameters of each
- * link (the pseudo-inertia J_j about the origin of frame {j}, FGL eq 3.2-18) are constructor
+ * link (the pseudo-inertia J_j about the origin of frame {j}, FGL §3.2) are constructor
  * arguments, folded once into the constants k0…k41.
  *
  * <p>Inputs are the DH angles t_j = q_j + offset_j (radians), joint velocities (rad/s),
@@ -17,9 +17,9 @@ package org.handsim.dynamics;
  * is the public face. Immutable and thread-safe.
  *
  * <p>How the expressions were derived (see the generator's docstring): D_ik = Σ_j Tr(U_jk J_j
- * U_jiᵀ) (FGL eq 3.2-27), C_i = −Σ_j m_j g U_ji r̄_j (eq 3.2-31), V = −Σ_j m_j g T_j r̄_j
- * (eq 3.2-22), H_i = Σ_km c_ikm q̇_k q̇_m with the Christoffel symbols of D (= FGL's h_ikm, eq
- * 3.2-30), each reduced modulo sin² + cos² = 1.
+ * U_jiᵀ) (formula LE3 of {@link LagrangeEuler}), C_i = −Σ_j m_j g U_ji r̄_j (LE5),
+ * V = −Σ_j m_j g T_j r̄_j, H_i = Σ_km c_ikm q̇_k q̇_m with the Christoffel symbols c_ikm of D
+ * (equal to FGL's h_ikm, LE4), each reduced modulo sin² + cos² = 1.
  */
 final class BarrettFingerKernel {
     /** Number of hoisted constants. */
@@ -70,7 +70,7 @@ final class BarrettFingerKernel {
 
     /**
      * @param a1 DH length a of link 1, metres (likewise a2, a3)
-     * @param p  the pseudo-inertias J_1, J_2, J_3 (FGL eq 3.2-18), 16 row-major values each
+     * @param p  the pseudo-inertias J_1, J_2, J_3 (FGL §3.2), 16 row-major values each
      *          ({@link LinkChain#pseudoInertia}): kg, kg·m, kg·m²
      */
     BarrettFingerKernel(double a1, double a2, double a3, double[] p) {
@@ -382,7 +382,7 @@ final class BarrettFingerKernel {
         tau[2] = d13 * qdd1 + d23 * qdd2 + d33 * qdd3 + h3 + g3;
     }
 
-    /** Potential energy V = −Σ m_j g·p_j (FGL eq 3.2-22), J. */
+    /** Potential energy V = −Σ m_j g·p_j (FGL §3.2), J. */
     double potentialEnergy(double t1, double t2, double t3, double gx, double gy, double gz) {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);

@@ -6,7 +6,7 @@ package org.handsim.dynamics;
  *   τ = D(Θ)·Θ̈ + H(Θ, Θ̇) + C(Θ)
  * </pre>
  * with D the n×n inertia (mass) matrix, H the Coriolis and centrifugal torques and C the
- * gravity torques (Fu–Gonzalez–Lee eq 3.2-26 writes the same as τ = D(q)q̈ + h(q, q̇) + c(q)).
+ * gravity torques (Fu–Gonzalez–Lee §3.2 writes the same as τ = D(q)q̈ + h(q, q̇) + c(q)).
  * Three implementations compute the same quantities by different routes:
  * {@link LagrangeEuler} (the reference, FGL §3.2), {@link NewtonEuler} (the independent
  * cross-check, FGL §3.3) and {@link ClosedFormFinger} (generated closed-form expressions for
@@ -76,11 +76,11 @@ public interface ChainDynamics {
      */
     void terms(double[] q, double[] qd, double[] g, double[] dOut, double[] hOut, double[] cOut);
 
-    /** Kinetic energy {@code ½·q̇ᵀ·D(q)·q̇} (FGL eq 3.2-21), J. */
+    /** Kinetic energy {@code ½·q̇ᵀ·D(q)·q̇} (FGL §3.2), J. */
     double kineticEnergy(double[] q, double[] qd);
 
     /**
-     * Potential energy {@code V = −Σ_j m_j·gᵀ·p_j} (FGL eq 3.2-22), J, with p_j the centre of
+     * Potential energy {@code V = −Σ_j m_j·gᵀ·p_j} (FGL §3.2), J, with p_j the centre of
      * mass of link j in the base frame: zero at the base origin, so that C = ∂V/∂q.
      * Fixed links count too (their constant share does not change energy differences).
      */

@@ -11,15 +11,15 @@ import org.handsim.math.RigidTransform;
  * <h2>The algorithm</h2>
  * Let {@code T_j = ⁰T_j} be the pose of frame {j} in the base frame (a product of DH
  * transforms), {@code J_j} the pseudo-inertia of link j about its frame origin
- * ({@link LinkChain#pseudoInertia}, FGL eq 3.2-18), {@code r̄_j} its homogeneous centre of mass
+ * ({@link LinkChain#pseudoInertia}), {@code r̄_j} its homogeneous centre of mass
  * and {@code g = (gx, gy, gz, 0)} gravity in the base frame. With 1-based joints i, k, m, j:
  * <pre>
- *   U_ji  = ∂T_j/∂q_i  = T_{i−1}·Q·ⁱ⁻¹T_j            for i ≤ j, else 0      (FGL eq 3.2-15)
- *   U_jkm = ∂U_jk/∂q_m = T_{k−1}·Q·ᵏ⁻¹T_{m−1}·Q·ᵐ⁻¹T_j  for k ≤ m ≤ j          (FGL eq 3.2-16)
- *   D_ik  = Σ_{j=max(i,k)}^{n}   Tr(U_jk·J_j·U_jiᵀ)                          (FGL eq 3.2-27)
- *   h_ikm = Σ_{j=max(i,k,m)}^{n} Tr(U_jkm·J_j·U_jiᵀ),  h_i = Σ_k Σ_m h_ikm·q̇_k·q̇_m   (FGL eqs 3.2-29, 3.2-30)
- *   c_i   = Σ_{j=i}^{n} (−m_j·g·U_ji·r̄_j)                                    (FGL eq 3.2-31)
- *   τ     = D·q̈ + h + c                       (FGL eq 3.2-26; the paper's eq 8, H = h, C = c)
+ *   U_ji  = ∂T_j/∂q_i  = T_{i−1}·Q·ⁱ⁻¹T_j            for i ≤ j, else 0      (LE1)
+ *   U_jkm = ∂U_jk/∂q_m = T_{k−1}·Q·ᵏ⁻¹T_{m−1}·Q·ᵐ⁻¹T_j  for k ≤ m ≤ j          (LE2)
+ *   D_ik  = Σ_{j=max(i,k)}^{n}   Tr(U_jk·J_j·U_jiᵀ)                          (LE3)
+ *   h_ikm = Σ_{j=max(i,k,m)}^{n} Tr(U_jkm·J_j·U_jiᵀ),  h_i = Σ_k Σ_m h_ikm·q̇_k·q̇_m   (LE4)
+ *   c_i   = Σ_{j=i}^{n} (−m_j·g·U_ji·r̄_j)                                    (LE5)
+ *   τ     = D·q̈ + h + c                       (LE6: the paper's eq 8, H = h, C = c)
  * </pre>
  * with Q the derivative of a rotation about z (rows {@code (0 −1 0 0; 1 0 0 0; 0 0 0 0; 0 0 0 0)}).
  *
@@ -209,8 +209,8 @@ public final class LagrangeEuler implements ChainDynamics {
 
     /**
      * The time derivative of the inertia matrix along the motion,
-     * {@code Ḋ_ik = Σ_j Tr(U̇_jk·J_j·U_jiᵀ) + Tr(U_jk·J_j·U̇_jiᵀ)} (the derivative of FGL eq
-     * 3.2-27 by the product rule), kg·m²/s.
+     * {@code Ḋ_ik = Σ_j Tr(U̇_jk·J_j·U_jiᵀ) + Tr(U_jk·J_j·U̇_jiᵀ)} (the derivative of (LE3) by the
+     * product rule), kg·m²/s.
      *
      * @return dDotOut (dof×dof row-major; new if null)
      */
@@ -235,7 +235,7 @@ public final class LagrangeEuler implements ChainDynamics {
     }
 
     /**
-     * The Coriolis/centrifugal coefficients {@code h_ikm} of FGL eq 3.2-30 (kg·m²), written at
+     * The Coriolis/centrifugal coefficients {@code h_ikm} of (LE4) (kg·m²), written at
      * {@code out[(i·dof + k)·dof + m]}; symmetric in k and m.
      *
      * @return out (dof³ values; new if null)
@@ -343,7 +343,7 @@ public final class LagrangeEuler implements ChainDynamics {
         }
     }
 
-    /** D_ik = Σ_j ⟨U(j,k), P(j,i)⟩ (FGL eq 3.2-27); upper triangle computed, lower mirrored. */
+    /** D_ik = Σ_j ⟨U(j,k), P(j,i)⟩ (LE3); upper triangle computed, lower mirrored. */
     private void mass(double[] d) {
         for (int ip = 0; ip < dof; ip++) {
             int i = linkOfDof[ip];
@@ -357,7 +357,7 @@ public final class LagrangeEuler implements ChainDynamics {
         }
     }
 
-    /** h_i = Σ_j ⟨V_j, P(j,i)⟩ (FGL eqs 3.2-29, 3.2-30 with the sums over k, m inside). */
+    /** h_i = Σ_j ⟨V_j, P(j,i)⟩ (LE4 with the sums over k, m inside). */
     private void coriolis(double[] h) {
         for (int ip = 0; ip < dof; ip++) {
             int i = linkOfDof[ip];
@@ -367,7 +367,7 @@ public final class LagrangeEuler implements ChainDynamics {
         }
     }
 
-    /** c_i = −Σ_j gᵀ·U(j,i)·(m_j·r̄_j) (FGL eq 3.2-31). */
+    /** c_i = −Σ_j gᵀ·U(j,i)·(m_j·r̄_j) (LE5). */
     private void gravity(double[] g, double[] c) {
         Check.vec("g", g, 3);
         double gx = g[0], gy = g[1], gz = g[2];

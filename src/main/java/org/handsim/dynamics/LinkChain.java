@@ -27,7 +27,7 @@ import org.handsim.hand.LinkInertia;
  * <p><b>Mass properties</b> are those of {@link LinkInertia} (paper Table III, DESIGN.md):
  * centre of mass r̄_j in frame {j}, inertia tensor I_j about the centre of mass with axes
  * parallel to {j}, matrix entries (Ixy is the matrix element, i.e. −∫xy dm). The Lagrange–Euler
- * pseudo-inertia about the frame origin (Fu–Gonzalez–Lee eq 3.2-18) follows by the
+ * pseudo-inertia about the frame origin (Fu–Gonzalez–Lee §3.2) follows by the
  * parallel-axis rule, see {@link #pseudoInertia(int, double[], int)}.
  *
  * <p>Immutable and thread-safe.
@@ -154,7 +154,7 @@ public final class LinkChain {
     public int dofOfLink(int j) { return dofOfLink[j]; }
 
     /**
-     * Writes the pseudo-inertia matrix of link j (Fu–Gonzalez–Lee eq 3.2-18)
+     * Writes the pseudo-inertia matrix of link j (Fu–Gonzalez–Lee §3.2)
      * <pre>
      *   J_j = ∫ r̄ r̄ᵀ dm  (r̄ = (x, y, z, 1) in frame {j}) =
      *       [ Σxx  Σxy  Σxz  m·x̄ ]
@@ -166,7 +166,7 @@ public final class LinkChain {
      * about the frame origin are {@code Σ = Σc + m·r̄·r̄ᵀ} (parallel-axis rule), where the second
      * moments about the centre of mass follow from the inertia tensor I (matrix entries, about
      * the centre of mass) by {@code Σc = ½·tr(I)·E − I}; e.g. {@code Σc,xx = (−Ixx + Iyy + Izz)/2}
-     * and {@code Σc,xy = −Ixy} (FGL eq 3.2-18 writes the same with products of inertia).
+     * and {@code Σc,xy = −Ixy} (FGL §3.2 writes the same with products of inertia).
      */
     public void pseudoInertia(int j, double[] out, int off) {
         System.arraycopy(pseudo, 16 * j, out, off, 16);

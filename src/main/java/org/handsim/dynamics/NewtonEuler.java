@@ -16,17 +16,17 @@ import org.handsim.math.RigidTransform;
  * {@code T(j−1 → j)}, {@code ẑ_j = R_jᵀ·(0,0,1) = (0, sin α_j, cos α_j)} the axis of joint j,
  * {@code p*_j = R_jᵀ·(o_j − o_{j−1}) = (a_j, d_j·sin α_j, d_j·cos α_j)}, {@code s̄_j} the centre of
  * mass (Table III), {@code I_j} the inertia about it. Outward, j = 1..n, from
- * {@code ω_0 = ω̇_0 = 0} and {@code v̇_0 = −g} (gravity as a base acceleration, FGL eq 3.3-28):
+ * {@code ω_0 = ω̇_0 = 0} and {@code v̇_0 = −g} (gravity as a base acceleration):
  * <pre>
- *   ω_j   = R_jᵀ·ω_{j−1} + ẑ_j·q̇_j                                         (FGL eq 3.3-21)
- *   ω̇_j   = R_jᵀ·ω̇_{j−1} + ẑ_j·q̈_j + (R_jᵀ·ω_{j−1}) × ẑ_j·q̇_j            (FGL eq 3.3-22)
- *   v̇_j   = R_jᵀ·v̇_{j−1} + ω̇_j × p*_j + ω_j × (ω_j × p*_j)                 (FGL eq 3.3-23)
- *   ā_j   = v̇_j + ω̇_j × s̄_j + ω_j × (ω_j × s̄_j)                          (FGL eq 3.3-24)
- *   F_j   = m_j·ā_j,   N_j = I_j·ω̇_j + ω_j × (I_j·ω_j)                     (FGL eqs 3.3-25, 3.3-26)
+ *   ω_j   = R_jᵀ·ω_{j−1} + ẑ_j·q̇_j
+ *   ω̇_j   = R_jᵀ·ω̇_{j−1} + ẑ_j·q̈_j + (R_jᵀ·ω_{j−1}) × ẑ_j·q̇_j
+ *   v̇_j   = R_jᵀ·v̇_{j−1} + ω̇_j × p*_j + ω_j × (ω_j × p*_j)
+ *   ā_j   = v̇_j + ω̇_j × s̄_j + ω_j × (ω_j × s̄_j)
+ *   F_j   = m_j·ā_j,   N_j = I_j·ω̇_j + ω_j × (I_j·ω_j)
  * </pre>
  * Inward, j = n..1, with {@code f_{n+1} = n_{n+1} = 0}:
  * <pre>
- *   f_j = R_{j+1}·f_{j+1} + F_j                                                (FGL eq 3.3-27)
+ *   f_j = R_{j+1}·f_{j+1} + F_j
  *   n_j = R_{j+1}·n_{j+1} + p*_j × (R_{j+1}·f_{j+1}) + (p*_j + s̄_j) × F_j + N_j
  *   τ_j = n_jᵀ·ẑ_j
  * </pre>
@@ -166,7 +166,7 @@ public final class NewtonEuler implements ChainDynamics {
         rnea(zeroF, zeroF, g[0], g[1], g[2], cOut);
     }
 
-    /** Σ ½·m_j·|v̄_j|² + ½·ω_jᵀ·I_j·ω_j from an outward velocity pass (FGL eq 3.2-21 evaluated per body). */
+    /** Σ ½·m_j·|v̄_j|² + ½·ω_jᵀ·I_j·ω_j from an outward velocity pass (FGL §3.2, evaluated per body). */
     @Override
     public double kineticEnergy(double[] q, double[] qd) {
         Check.vec("qd", qd, dof);
