@@ -176,7 +176,8 @@ public final class DormandPrince54 extends AbstractIntegrator {
     }
 
     private boolean fsalHolds(Ode ode, double t, double[] y) {
-        if (!fsalValid || ode != fsalOde || t != fsalT) return false;
+        // t may differ from the remembered end time by rounding (t0 + h vs the caller's i·h)
+        if (!fsalValid || ode != fsalOde || Math.abs(t - fsalT) > 4 * Math.ulp(Math.max(Math.abs(t), Math.abs(fsalT)))) return false;
         for (int i = 0; i < n; i++) {
             if (y[i] != fsalY[i]) return false;
         }
