@@ -47,7 +47,7 @@ import org.handsim.math.RigidTransform;
 public final class LagrangeEuler implements ChainDynamics {
     private final LinkChain chain;
     private final int n, dof;
-    private final double[] dhA, dhAlpha, dhD, dhOffset, fixedQ;
+    private final double[] dhA, dhCosAlpha, dhSinAlpha, dhD, dhOffset, fixedQ;
     private final int[] linkOfDof;
     private final double[] pseudo;
     // scratch
@@ -66,14 +66,16 @@ public final class LagrangeEuler implements ChainDynamics {
         n = chain.links();
         dof = chain.dof();
         dhA = new double[n];
-        dhAlpha = new double[n];
+        dhCosAlpha = new double[n];
+        dhSinAlpha = new double[n];
         dhD = new double[n];
         dhOffset = new double[n];
         fixedQ = new double[n];
         for (int j = 0; j < n; j++) {
             DhRow r = chain.dh(j);
             dhA[j] = r.a();
-            dhAlpha[j] = r.alpha();
+            dhCosAlpha[j] = Math.cos(r.alpha());
+            dhSinAlpha[j] = Math.sin(r.alpha());
             dhD[j] = r.d();
             dhOffset[j] = r.thetaOffset();
             fixedQ[j] = chain.fixedValue(j);
@@ -268,7 +270,7 @@ public final class LagrangeEuler implements ChainDynamics {
         Check.vec("q", q, dof);
         for (int j = 0, p = 0; j < n; j++) {
             double qj = chain.isActive(j) ? q[p++] : fixedQ[j];
-            RigidTransform.dhInto(qj + dhOffset[j], dhD[j], dhA[j], dhAlpha[j], link, 0);
+            dhInto(qj + dhOffset[j], dhD[j], dhA[j], dhCosAlpha[j], dhSinAlpha[j], link);
             RigidTransform.multiply(tf, 12 * j, link, 0, tf, 12 * (j + 1));
         }
         for (int ip = 0; ip < dof; ip++) {
@@ -383,6 +385,26 @@ public final class LagrangeEuler implements ChainDynamics {
             }
             c[ip] = -s;
         }
+    }
+
+    /**
+     * The DH link transform {@code Rz(θ)·Tz(d)·Tx(a)·Rx(α)}, as {@link RigidTransform#dhInto}
+     * but with cos α and sin α precomputed (two trigonometric calls per link instead of four).
+     */
+    private static void dhInto(double theta, double d, double a, double ca, double sa, double[] out) {
+        double ct = Math.cos(theta), st = Math.sin(theta);
+        out[0] = ct;
+        out[1] = -st * ca;
+        out[2] = st * sa;
+        out[3] = a * ct;
+        out[4] = st;
+        out[5] = ct * ca;
+        out[6] = -ct * sa;
+        out[7] = a * st;
+        out[8] = 0;
+        out[9] = sa;
+        out[10] = ca;
+        out[11] = d;
     }
 
     /** Writes z × v into column slot (out[o], out[o+4], out[o+8]) of a 3×4 matrix. */

@@ -42,7 +42,7 @@ import org.handsim.math.RigidTransform;
 public final class NewtonEuler implements ChainDynamics {
     private final LinkChain chain;
     private final int n, dof;
-    private final double[] a, alpha, d, offset, fixedQ;
+    private final double[] a, cosAlpha, sinAlpha, d, offset, fixedQ;
     private final boolean[] active;
     private final double[] zHat, pStar, com, inertia, mass;
     // scratch
@@ -57,7 +57,8 @@ public final class NewtonEuler implements ChainDynamics {
         n = chain.links();
         dof = chain.dof();
         a = new double[n];
-        alpha = new double[n];
+        cosAlpha = new double[n];
+        sinAlpha = new double[n];
         d = new double[n];
         offset = new double[n];
         fixedQ = new double[n];
@@ -70,12 +71,13 @@ public final class NewtonEuler implements ChainDynamics {
         for (int j = 0; j < n; j++) {
             DhRow r = chain.dh(j);
             a[j] = r.a();
-            alpha[j] = r.alpha();
+            cosAlpha[j] = Math.cos(r.alpha());
+            sinAlpha[j] = Math.sin(r.alpha());
             d[j] = r.d();
             offset[j] = r.thetaOffset();
             fixedQ[j] = chain.fixedValue(j);
             active[j] = chain.isActive(j);
-            double sa = Math.sin(alpha[j]), ca = Math.cos(alpha[j]);
+            double sa = sinAlpha[j], ca = cosAlpha[j];
             zHat[3 * j + 1] = sa;
             zHat[3 * j + 2] = ca;
             pStar[3 * j] = a[j];
@@ -239,7 +241,21 @@ public final class NewtonEuler implements ChainDynamics {
         Check.vec("q", q, dof);
         for (int j = 0, p = 0; j < n; j++) {
             double qj = active[j] ? q[p++] : fixedQ[j];
-            RigidTransform.dhInto(qj + offset[j], d[j], a[j], alpha[j], tr, 12 * j);
+            // RigidTransform.dhInto with cos α, sin α precomputed: Rz(θ)·Tz(d)·Tx(a)·Rx(α)
+            double th = qj + offset[j], ct = Math.cos(th), st = Math.sin(th), ca = cosAlpha[j], sa = sinAlpha[j];
+            int o = 12 * j;
+            tr[o] = ct;
+            tr[o + 1] = -st * ca;
+            tr[o + 2] = st * sa;
+            tr[o + 3] = a[j] * ct;
+            tr[o + 4] = st;
+            tr[o + 5] = ct * ca;
+            tr[o + 6] = -ct * sa;
+            tr[o + 7] = a[j] * st;
+            tr[o + 8] = 0;
+            tr[o + 9] = sa;
+            tr[o + 10] = ca;
+            tr[o + 11] = d[j];
         }
     }
 
