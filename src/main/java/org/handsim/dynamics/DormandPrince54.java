@@ -2,11 +2,12 @@ package org.handsim.dynamics;
 
 /**
  * Dormand–Prince 5(4), the adaptive embedded Runge–Kutta pair behind MATLAB's {@code ode45}
- * (Dormand and Prince 1980; Hairer–Nørsett–Wanner, <i>Solving ODEs I</i>, §II.4–5, Table 5.2):
+ * (Dormand and Prince 1980; Hairer–Nørsett–Wanner, <i>Solving ODEs I</i>, §II.4 step-size
+ * control, §II.5 the coefficients):
  * seven stages, the last reused as the first of the next step (FSAL), the fifth-order solution
  * propagated and the embedded fourth-order one used only to estimate the local error.
  *
- * <p><b>Error control</b> (HNW II.4): with {@code sc_i = atol + rtol·max(|y_i|, |y_new,i|)} the
+ * <p><b>Error control</b> (HNW §II.4): with {@code sc_i = atol + rtol·max(|y_i|, |y_new,i|)} the
  * error norm is {@code err = sqrt(mean((ŷ_i − y_new,i)/sc_i)²)}; a step is accepted when
  * err ≤ 1, and the next step is {@code h·min(5, max(0.2, 0.9·err^(−1/5)))} (no growth right
  * after a rejection). {@link #step} covers the requested interval exactly with as many accepted

@@ -2,7 +2,7 @@ package org.handsim.dynamics;
 
 /**
  * Explicit (forward) Euler, order 1: {@code y ← y + h·f(t, y)} (Hairer–Nørsett–Wanner,
- * <i>Solving ODEs I</i>, §I.7). The cheapest step and the baseline of the speed-versus-accuracy
+ * <i>Solving ODEs I</i>, ch. I). The cheapest step and the baseline of the speed-versus-accuracy
  * study; it gains energy on oscillatory mechanical systems.
  */
 public final class ExplicitEuler extends AbstractIntegrator {

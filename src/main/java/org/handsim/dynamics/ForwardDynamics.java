@@ -7,9 +7,11 @@ import org.handsim.math.Cholesky;
  * <pre>
  *   D(q)·q̈ = τ − H(q, q̇) − C(q)
  * </pre>
- * by a Cholesky factorisation of D ({@link Cholesky}; D is symmetric positive definite for any
- * physical chain: ½·q̇ᵀ·D·q̇ is the kinetic energy, positive for any motion) and two triangular solves — no explicit inverse (Featherstone,
- * <i>Rigid Body Dynamics Algorithms</i>, 2008, §6.1). D, H and C come from any
+ * by a Cholesky factorisation of D ({@link Cholesky}) and two triangular solves, with no explicit
+ * inverse (the inertia-matrix method of Featherstone, <i>Rigid Body Dynamics Algorithms</i>,
+ * 2008, ch. 6). D is symmetric positive definite for a chain whose every joint moves some
+ * inertia, since ½·q̇ᵀ·D·q̇ is the kinetic energy (AbstractChainDynamicsTest checks it over the
+ * finger's joint range). D, H and C come from any
  * {@link ChainDynamics}; with {@link ClosedFormFinger} one call costs one closed-form evaluation
  * plus an n = 3 factorisation.
  *

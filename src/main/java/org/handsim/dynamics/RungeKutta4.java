@@ -1,8 +1,8 @@
 package org.handsim.dynamics;
 
 /**
- * The classical fourth-order Runge–Kutta method (Hairer–Nørsett–Wanner, <i>Solving ODEs I</i>,
- * §II.1, Table 1.2):
+ * The classical fourth-order Runge–Kutta method (Kutta 1901; Hairer–Nørsett–Wanner, <i>Solving ODEs
+ * I</i>, §II.1):
  * <pre>
  *   k1 = f(t, y),            k2 = f(t + h/2, y + h/2·k1),
  *   k3 = f(t + h/2, y + h/2·k2),  k4 = f(t + h, y + h·k3),

@@ -6,7 +6,7 @@ package org.handsim.dynamics;
  * <pre>
  *   v ← v + h·a(t, q, v),   q ← q + h·v
  * </pre>
- * (Hairer–Lubich–Wanner, <i>Geometric Numerical Integration</i>, §I.1.2). One evaluation per
+ * (Hairer–Lubich–Wanner, <i>Geometric Numerical Integration</i>, ch. I). One evaluation per
  * step like {@link ExplicitEuler}, but for separable Hamiltonians its energy error stays bounded
  * instead of drifting, which is why games and many simulators use it.
  *
