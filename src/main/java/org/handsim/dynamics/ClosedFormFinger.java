@@ -32,6 +32,7 @@ public final class ClosedFormFinger implements ChainDynamics {
     private final boolean allActive;
     private final double off1, off2, off3;
     private final double[] fixedTheta = new double[3];   // DH angle of a fixed joint
+    private final double[] offset = new double[3];
     private final int[] dofOfLink = new int[3];
     // scratch for chains with a fixed joint
     private final double[] d9 = new double[9], v3 = new double[3], hc3 = new double[3];
@@ -52,7 +53,8 @@ public final class ClosedFormFinger implements ChainDynamics {
         for (int j = 0; j < 3; j++) {
             chain.pseudoInertia(j, p, 16 * j);
             dofOfLink[j] = chain.dofOfLink(j);
-            fixedTheta[j] = chain.fixedValue(j) + chain.dh(j).thetaOffset();
+            offset[j] = chain.dh(j).thetaOffset();
+            fixedTheta[j] = chain.fixedValue(j) + offset[j];
         }
         kernel = new BarrettFingerKernel(chain.dh(0).a(), chain.dh(1).a(), chain.dh(2).a(), p);
         off1 = chain.dh(0).thetaOffset();
@@ -184,7 +186,7 @@ public final class ClosedFormFinger implements ChainDynamics {
 
     private double theta(int j, double[] q) {
         int p = dofOfLink[j];
-        return p >= 0 ? q[p] + chain.dh(j).thetaOffset() : fixedTheta[j];
+        return p >= 0 ? q[p] + offset[j] : fixedTheta[j];
     }
 
     private double rate(int j, double[] v) {

@@ -47,9 +47,9 @@ public final class NewtonEuler implements ChainDynamics {
     private final double[] zHat, pStar, com, inertia, mass;
     // scratch
     private final double[] tr;          // DH transforms T(j-1 -> j), 12 each
-    private final double[] w, wd, acc, f, mo;
+    private final double[] w, wd, acc;
     private final double[] qdF, qddF, zeroF, unitF;
-    private final double[] dTmp, hTmp, cTmp;
+    private final double[] column;
 
     /** Newton–Euler dynamics of {@code chain}. */
     public NewtonEuler(LinkChain chain) {
@@ -98,15 +98,11 @@ public final class NewtonEuler implements ChainDynamics {
         w = new double[3 * n];
         wd = new double[3 * n];
         acc = new double[3 * n];
-        f = new double[3 * n];
-        mo = new double[3 * n];
         qdF = new double[n];
         qddF = new double[n];
         zeroF = new double[n];
         unitF = new double[n];
-        dTmp = new double[dof * dof];
-        hTmp = new double[dof];
-        cTmp = new double[dof];
+        column = new double[dof];
     }
 
     @Override
@@ -267,9 +263,9 @@ public final class NewtonEuler implements ChainDynamics {
         for (int kp = 0; kp < dof; kp++) {
             int k = chain.linkOfDof(kp);
             unitF[k] = 1;
-            rnea(zeroF, unitF, 0, 0, 0, hTmp);
+            rnea(zeroF, unitF, 0, 0, 0, column);
             unitF[k] = 0;
-            for (int ip = 0; ip < dof; ip++) dOut[ip * dof + kp] = hTmp[ip];
+            for (int ip = 0; ip < dof; ip++) dOut[ip * dof + kp] = column[ip];
         }
     }
 
@@ -346,8 +342,6 @@ public final class NewtonEuler implements ChainDynamics {
             nx = cnx + (py * cfz - pz * cfy) + (ry * bigFz - rz * bigFy) + bigNx;
             ny = cny + (pz * cfx - px * cfz) + (rz * bigFx - rx * bigFz) + bigNy;
             nz = cnz + (px * cfy - py * cfx) + (rx * bigFy - ry * bigFx) + bigNz;
-            f[k] = fx; f[k + 1] = fy; f[k + 2] = fz;
-            mo[k] = nx; mo[k + 1] = ny; mo[k + 2] = nz;
             int p = chain.dofOfLink(j);
             if (p >= 0) tau[p] = nx * zHat[k] + ny * zHat[k + 1] + nz * zHat[k + 2];
         }
