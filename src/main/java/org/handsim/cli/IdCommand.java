@@ -1,11 +1,8 @@
 package org.handsim.cli;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -15,6 +12,7 @@ import org.handsim.dynamics.HandDynamics;
 import org.handsim.dynamics.LinkChain;
 import org.handsim.hand.HandDescription;
 import org.handsim.util.AtomicFile;
+import org.handsim.util.CsvInput;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -76,10 +74,9 @@ public final class IdCommand implements Callable<Integer> {
         else throw CliError.usage("handsim: --method must be le or ne, got '" + method + "'");
         HandDynamics hand = HandDynamics.of(HandDescription.barrettHand(), m);
         if (input != null || output != null) return bulk(hand);
-        if (finger == null) throw CliError.usage("handsim: --finger is required (or --input/--output for bulk)");
-        if (finger < 1 || finger > 3) throw CliError.usage("handsim: --finger must be 1, 2 or 3, got " + finger);
+        Args.finger(finger);
         double[][] v = {
-            numbers("--q", q), numbers("--qd", qd), numbers("--qdd", qdd), numbers("--gravity", gravity)};
+            Args.numbers("--q", q, 3), Args.numbers("--qd", qd, 3), Args.numbers("--qdd", qdd, 3), Args.numbers("--gravity", gravity, 3)};
         String[] names = {"q%d (value %d of --q)", "qd%d (value %d of --qd)", "qdd%d (value %d of --qdd)"};
         ChainDynamics d = hand.finger(finger);
         String bad = fixedJointViolation(finger, d.chain(), v[0], v[1], v[2], names);
@@ -108,104 +105,42 @@ public final class IdCommand implements Callable<Integer> {
         }
         double[] qf = new double[3], qdf = new double[3], qddf = new double[3], g = new double[3], tau = new double[3];
         String[] names = {"column q%d", "column qd%d", "column qdd%d"};
+        if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
         int rows = 0;
-        BufferedReader in;
-        try {
-            in = Files.newBufferedReader(input, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
-        }
-        try (BufferedReader r = in; AtomicFile af = new AtomicFile(output)) {
+        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
             Writer w = af.writer();
-            String header = r.readLine();
-            if (header == null) throw rowError(1, "empty file, expected the header " + IN_HEADER);
-            if (header.startsWith("\uFEFF")) header = header.substring(1);
-            if (!normalise(header).equals(IN_HEADER)) {
-                throw rowError(1, "header must be exactly '" + IN_HEADER + "', got '" + header.trim() + "'");
-            }
             w.write(OUT_HEADER);
             w.write('\n');
-            int line = 1;
-            String s;
-            while ((s = r.readLine()) != null) {
-                line++;
-                if (s.isBlank()) continue;
-                String[] p = s.split(",", -1);
-                if (p.length != COLUMNS.length) throw rowError(line, "expected " + COLUMNS.length + " columns, got " + p.length);
-                for (int i = 0; i < p.length; i++) p[i] = p[i].trim();
-                int k;
-                try {
-                    k = Integer.parseInt(p[0]);
-                } catch (NumberFormatException e) {
-                    throw rowError(line, "column finger = '" + p[0] + "' is not an integer");
-                }
-                if (k < 1 || k > 3) throw rowError(line, "finger must be 1, 2 or 3, got " + p[0]);
+            while (in.next()) {
+                int k = in.integer(0);
+                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
                 for (int j = 0; j < 3; j++) {
-                    qf[j] = cell(p, 1 + j, line);
-                    qdf[j] = cell(p, 4 + j, line);
-                    qddf[j] = cell(p, 7 + j, line);
-                    g[j] = cell(p, 10 + j, line);
+                    qf[j] = in.number(1 + j);
+                    qdf[j] = in.number(4 + j);
+                    qddf[j] = in.number(7 + j);
+                    g[j] = in.number(10 + j);
                 }
                 LinkChain chain = hand.finger(k).chain();
                 String bad = fixedJointViolation(k, chain, qf, qdf, qddf, names);
-                if (bad != null) throw rowError(line, bad);
+                if (bad != null) throw in.error(bad);
                 hand.inverseDynamics(k, qf, qdf, qddf, g, tau);
-                StringBuilder sb = new StringBuilder(s.length() + 64);
-                for (int i = 0; i < p.length; i++) sb.append(i == 0 ? "" : ",").append(p[i]);
+                StringBuilder sb = new StringBuilder(160);
+                for (int i = 0; i < COLUMNS.length; i++) sb.append(i == 0 ? "" : ",").append(in.text(i));
                 for (int j = 0; j < 3; j++) {
                     sb.append(',');
-                    if (chain.isActive(j)) sb.append(number(tau[j], line));
+                    if (!chain.isActive(j)) continue;
+                    if (!Double.isFinite(tau[j])) throw in.error("torque tau" + (j + 1) + " is not finite (" + tau[j] + ")");
+                    sb.append(Args.csv(tau[j]));
                 }
                 w.write(sb.append('\n').toString());
                 rows++;
             }
             af.commit();
+        } catch (CsvInput.CsvException e) {
+            throw CliError.usage("handsim: " + e.getMessage());
         }
         spec.commandLine().getErr().println("handsim id: " + rows + " rows written to " + output);
         return 0;
-    }
-
-    private CliError rowError(int line, String message) {
-        return CliError.usage("handsim: " + input + ":" + line + ": " + message);
-    }
-
-    private double cell(String[] p, int i, int line) {
-        try {
-            double d = Double.parseDouble(p[i]);
-            if (!Double.isFinite(d)) throw rowError(line, "column " + COLUMNS[i] + " = " + p[i] + " is not finite");
-            return d;
-        } catch (NumberFormatException e) {
-            throw rowError(line, "column " + COLUMNS[i] + " = '" + p[i] + "' is not a number");
-        }
-    }
-
-    private String number(double v, int line) {
-        if (!Double.isFinite(v)) throw rowError(line, "torque is not finite (" + v + ")");
-        return Double.toString(v);
-    }
-
-    private static String normalise(String header) {
-        String[] p = header.split(",", -1);
-        StringBuilder sb = new StringBuilder();
-        for (int i = 0; i < p.length; i++) sb.append(i == 0 ? "" : ",").append(p[i].trim());
-        return sb.toString();
-    }
-
-    /** Three finite numbers from "a,b,c"; the message names the option. */
-    private static double[] numbers(String option, String text) {
-        if (text == null) throw CliError.usage("handsim: " + option + " is required");
-        String[] p = text.split(",", -1);
-        if (p.length != 3) throw CliError.usage("handsim: " + option + " needs 3 comma-separated numbers, got '" + text + "'");
-        double[] v = new double[3];
-        for (int i = 0; i < 3; i++) {
-            try {
-                v[i] = Double.parseDouble(p[i].trim());
-            } catch (NumberFormatException e) {
-                throw CliError.usage("handsim: " + option + ": '" + p[i].trim() + "' is not a number");
-            }
-            if (!Double.isFinite(v[i])) throw CliError.usage("handsim: " + option + ": " + p[i].trim() + " is not finite");
-        }
-        return v;
     }
 
     /**
