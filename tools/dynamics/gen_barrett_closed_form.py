@@ -24,7 +24,9 @@ Derivation (Fu-Gonzalez-Lee, Robotics, 1987, section 3.2, the Lagrange-Euler for
   * h_i  = sum_k sum_m c_ikm qd_k qd_m with the Christoffel symbols
     c_ikm = (dD_ik/dq_m + dD_im/dq_k - dD_km/dq_i) / 2, equal to FGL's h_ikm: both
     are the symmetric coefficients of the same quadratic form in qd.
-  * Every polynomial is reduced modulo s_j^2 + c_j^2 - 1 (a Groebner basis), which is exact.
+  * Every polynomial is reduced modulo s_j^2 + c_j^2 - 1 (a Groebner basis), which is exact;
+    each output is then written in whichever basis gives fewer terms: (c3, s3) or the angle sum
+    (c23, s23) = (cos, sin)(th2 + th3) of the two parallel joints.
   * Each output is then a sum of (parameter-only coefficient) x (monomial in c, s, qd, g).
     The coefficients are hoisted into constants computed once in the constructor; what is left
     per call is sin/cos of three angles, the shared monomials and multiply-adds.
@@ -42,7 +44,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..'))
 OUT = os.path.join(ROOT, 'src', 'main', 'java', 'org', 'handsim', 'dynamics', 'BarrettFingerKernel.java')
 
 c1, s1, c2, s2, c3, s3 = sp.symbols('c1 s1 c2 s2 c3 s3')
-TRIG = [c1, s1, c2, s2, c3, s3]
+c23, s23 = sp.symbols('c23 s23')   # cos, sin of th2 + th3 (joints 2 and 3 are parallel)
+TRIG = [c1, s1, c2, s2, c3, s3, c23, s23]
 CS = [(c1, s1), (c2, s2), (c3, s3)]
 a1, a2, a3 = sp.symbols('a1 a2 a3')
 A = [a1, a2, a3]
@@ -69,6 +72,9 @@ LENGTHS = {a1: 'a1', a2: 'a2', a3: 'a3'}
 
 IDEAL = [s1**2 + c1**2 - 1, s2**2 + c2**2 - 1, s3**2 + c3**2 - 1]
 ORDER_GENS = (s1, s2, s3, c1, c2, c3)
+# the same polynomials in the angle-sum basis (c2, s2, c23, s23) instead of (c3, s3)
+IDEAL_SUM = [s1**2 + c1**2 - 1, s2**2 + c2**2 - 1, s23**2 + c23**2 - 1]
+ORDER_GENS_SUM = (s1, s2, s23, c1, c2, c23)
 
 
 def dh(j):
@@ -95,6 +101,20 @@ def reduce_trig(e):
         return e
     _, r = sp.reduced(e, IDEAL, *ORDER_GENS, order='lex')
     return sp.expand(r)
+
+
+def shortest_basis(e, outer_vars):
+    """e in the (c3, s3) basis, or rewritten with c3 = c23 c2 + s23 s2, s3 = s23 c2 - c23 s2 and
+    reduced modulo the angle-sum ideal, whichever has fewer terms (same value either way)."""
+    e = sp.expand(e)
+    alt = sp.expand(e.subs({c3: c23 * c2 + s23 * s2, s3: s23 * c2 - c23 * s2}, simultaneous=True))
+    if alt != 0:
+        _, alt = sp.reduced(alt, IDEAL_SUM, *ORDER_GENS_SUM, order='lex')
+        alt = sp.expand(alt)
+    gens = list(outer_vars) + TRIG
+    n_e = len(sp.Poly(e, *gens).terms()) if e != 0 else 0
+    n_alt = len(sp.Poly(alt, *gens).terms()) if alt != 0 else 0
+    return alt if n_alt < n_e else e
 
 
 def d_dtheta(e, i):
@@ -236,7 +256,7 @@ class Method:
 
     def linear_form(self, expr, outer_vars):
         """expr as sum over monomials of outer_vars of (sum of K * trig monomial)."""
-        poly = sp.Poly(sp.expand(expr), *(outer_vars + TRIG))
+        poly = sp.Poly(shortest_basis(expr, outer_vars), *(outer_vars + TRIG))
         groups = {}
         for exps, coeff in poly.terms():
             outer = exps[:len(outer_vars)]
@@ -261,7 +281,8 @@ class Method:
 
     def monomial_lines(self):
         """Java lines computing every registered trig monomial from smaller ones."""
-        have = {tuple(1 if i == k else 0 for i in range(6)): str(TRIG[k]) for k in range(6)}
+        nt = len(TRIG)
+        have = {tuple(1 if i == k else 0 for i in range(nt)): str(TRIG[k]) for k in range(nt)}
         lines = []
         todo = sorted(self.monos, key=lambda e: (sum(e), e))
         # include every prefix needed to build each monomial one factor at a time
@@ -270,10 +291,10 @@ class Method:
             e = list(e)
             while sum(e) > 1:
                 needed.add(tuple(e))
-                k = max(i for i in range(6) if e[i] > 0)
+                k = max(i for i in range(nt) if e[i] > 0)
                 e[k] -= 1
         for e in sorted(needed, key=lambda e: (sum(e), e)):
-            k = max(i for i in range(6) if e[i] > 0)
+            k = max(i for i in range(nt) if e[i] > 0)
             sub = list(e)
             sub[k] -= 1
             name = mono_name(e, TRIG)
@@ -288,6 +309,7 @@ TRIG_LINES = [
     '        final double c1 = Math.cos(t1), s1 = Math.sin(t1);',
     '        final double c2 = Math.cos(t2), s2 = Math.sin(t2);',
     '        final double c3 = Math.cos(t3), s3 = Math.sin(t3);',
+    '        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;',
 ]
 
 HEADER = '''package org.handsim.dynamics;

@@ -9,7 +9,7 @@ package org.handsim.dynamics;
  * implemented. Valid for three revolute joints with standard DH twists α = (90°, 0, 0) and
  * offsets d = (0, 0, 0) (paper Table I); the link lengths and the ten inertial parameters of each
  * link (the pseudo-inertia J_j about the origin of frame {j}, FGL §3.2) are constructor
- * arguments, folded once into the constants k0…k41.
+ * arguments, folded once into the constants k0…k38.
  *
  * <p>Inputs are the DH angles t_j = q_j + offset_j (radians), joint velocities (rad/s),
  * accelerations (rad/s²) and gravity (m/s², base frame {0}); outputs in kg·m² (D, row-major
@@ -23,7 +23,7 @@ package org.handsim.dynamics;
  */
 final class BarrettFingerKernel {
     /** Number of hoisted constants. */
-    static final int CONSTANTS = 42;
+    static final int CONSTANTS = 39;
 
     private final double k0;
     private final double k1;
@@ -64,9 +64,6 @@ final class BarrettFingerKernel {
     private final double k36;
     private final double k37;
     private final double k38;
-    private final double k39;
-    private final double k40;
-    private final double k41;
 
     /**
      * @param a1 DH length a of link 1, metres (likewise a2, a3)
@@ -74,48 +71,45 @@ final class BarrettFingerKernel {
      *          ({@link LinkChain#pseudoInertia}): kg, kg·m, kg·m²
      */
     BarrettFingerKernel(double a1, double a2, double a3, double[] p) {
-        k0 = p[0] + p[32] + p[21] + p[10] + p[26] + p[42] + 2.0 * a1 * p[3] + p[15] * a1 * a1 + p[31] * a1 * a1 + p[47] * a1 * a1 + 2.0 * a3 * p[35] + p[47] * a3 * a3;
-        k1 = -2.0 * a1 * p[23];
-        k2 = 2.0 * a1 * p[19] + 2.0 * a1 * a2 * p[31] + 2.0 * a1 * a2 * p[47];
-        k3 = 2.0 * p[33] + 2.0 * a3 * p[39];
-        k4 = -p[32] + p[37] - 2.0 * a3 * p[35] - p[47] * a3 * a3;
-        k5 = -2.0 * a1 * p[35] - 2.0 * a1 * a3 * p[47];
-        k6 = -2.0 * a1 * p[39];
-        k7 = -2.0 * p[17] + 2.0 * p[33] - 2.0 * a2 * p[23] + 2.0 * a3 * p[39];
-        k8 = p[16] - p[32] - p[21] + p[37] + 2.0 * a2 * p[19] + p[31] * a2 * a2 + p[47] * a2 * a2 - 2.0 * a3 * p[35] - p[47] * a3 * a3;
-        k9 = -2.0 * a2 * p[35] - 2.0 * a2 * a3 * p[47];
-        k10 = -2.0 * a2 * p[39];
-        k11 = -2.0 * p[32] + 2.0 * p[37] - 4.0 * a3 * p[35] - 2.0 * p[47] * a3 * a3;
-        k12 = -4.0 * p[33] - 4.0 * a3 * p[39];
+        k0 = p[0] + p[21] + p[37] + p[10] + p[26] + p[42] + 2.0 * a1 * p[3] + p[15] * a1 * a1 + p[31] * a1 * a1 + p[47] * a1 * a1;
+        k1 = -2.0 * a1 * p[39];
+        k2 = 2.0 * a1 * p[35] + 2.0 * a1 * a3 * p[47];
+        k3 = -2.0 * a1 * p[23];
+        k4 = 2.0 * a1 * p[19] + 2.0 * a1 * a2 * p[31] + 2.0 * a1 * a2 * p[47];
+        k5 = -2.0 * p[33] - 2.0 * a3 * p[39];
+        k6 = p[32] - p[37] + 2.0 * a3 * p[35] + p[47] * a3 * a3;
+        k7 = -2.0 * a2 * p[39];
+        k8 = 2.0 * a2 * p[35] + 2.0 * a2 * a3 * p[47];
+        k9 = -2.0 * p[17] - 2.0 * a2 * p[23];
+        k10 = p[16] - p[21] + 2.0 * a2 * p[19] + p[31] * a2 * a2 + p[47] * a2 * a2;
+        k11 = -p[34] - a3 * p[43];
+        k12 = -p[38];
         k13 = -p[18] - a2 * p[27] - a2 * p[43];
         k14 = -p[22];
-        k15 = p[38];
-        k16 = -p[34] - a3 * p[43];
-        k17 = p[16] + p[32] + p[21] + p[37] + 2.0 * a2 * p[19] + p[31] * a2 * a2 + p[47] * a2 * a2 + 2.0 * a3 * p[35] + p[47] * a3 * a3;
-        k18 = p[32] + p[37] + 2.0 * a3 * p[35] + p[47] * a3 * a3;
-        k19 = -a2 * p[39];
-        k20 = a2 * p[35] + a2 * a3 * p[47];
-        k21 = 2.0 * p[34] + 2.0 * a3 * p[43];
-        k22 = 2.0 * p[38];
-        k23 = 8.0 * p[33] + 8.0 * a3 * p[39];
-        k24 = -4.0 * p[32] + 4.0 * p[37] - 8.0 * a3 * p[35] - 4.0 * p[47] * a3 * a3;
-        k25 = -2.0 * p[16] + 2.0 * p[32] + 2.0 * p[21] - 2.0 * p[37] - 4.0 * a2 * p[19] - 2.0 * p[31] * a2 * a2 - 2.0 * p[47] * a2 * a2 + 4.0 * a3 * p[35] + 2.0 * p[47] * a3 * a3;
-        k26 = -4.0 * p[17] + 4.0 * p[33] - 4.0 * a2 * p[23] + 4.0 * a3 * p[39];
-        k27 = 4.0 * a2 * p[39];
-        k28 = -4.0 * a2 * p[35] - 4.0 * a2 * a3 * p[47];
-        k29 = -p[17] + p[33] - a2 * p[23] + a3 * p[39];
-        k30 = a1 * p[19] + a1 * a2 * p[31] + a1 * a2 * p[47];
-        k31 = a1 * p[23];
-        k32 = -a1 * p[39];
-        k33 = a1 * p[35] + a1 * a3 * p[47];
-        k34 = p[33] + a3 * p[39];
-        k35 = -p[11] - p[27] - p[43];
-        k36 = -p[3] - a1 * p[15] - a1 * p[31] - a1 * p[47];
-        k37 = p[23];
-        k38 = -p[19] - a2 * p[31] - a2 * p[47];
-        k39 = p[35] + a3 * p[47];
-        k40 = p[39];
-        k41 = -p[7];
+        k15 = p[16] + p[32] + p[21] + p[37] + 2.0 * a2 * p[19] + p[31] * a2 * a2 + p[47] * a2 * a2 + 2.0 * a3 * p[35] + p[47] * a3 * a3;
+        k16 = p[32] + p[37] + 2.0 * a3 * p[35] + p[47] * a3 * a3;
+        k17 = -a2 * p[39];
+        k18 = a2 * p[35] + a2 * a3 * p[47];
+        k19 = 2.0 * p[38];
+        k20 = -2.0 * p[34] - 2.0 * a3 * p[43];
+        k21 = -2.0 * p[32] + 2.0 * p[37] - 4.0 * a3 * p[35] - 2.0 * p[47] * a3 * a3;
+        k22 = -4.0 * p[33] - 4.0 * a3 * p[39];
+        k23 = 2.0 * p[17] + 2.0 * p[33] + 2.0 * a2 * p[23] + 2.0 * a3 * p[39];
+        k24 = -2.0 * p[16] + 2.0 * p[21] - 4.0 * a2 * p[19] - 2.0 * p[31] * a2 * a2 - 2.0 * p[47] * a2 * a2;
+        k25 = -4.0 * p[17] - 4.0 * a2 * p[23];
+        k26 = -p[17] - p[33] - a2 * p[23] - a3 * p[39];
+        k27 = a1 * p[35] + a1 * a3 * p[47];
+        k28 = a1 * p[39];
+        k29 = a1 * p[19] + a1 * a2 * p[31] + a1 * a2 * p[47];
+        k30 = a1 * p[23];
+        k31 = -p[33] - a3 * p[39];
+        k32 = -p[11] - p[27] - p[43];
+        k33 = -p[3] - a1 * p[15] - a1 * p[31] - a1 * p[47];
+        k34 = p[39];
+        k35 = -p[35] - a3 * p[47];
+        k36 = p[23];
+        k37 = -p[19] - a2 * p[31] - a2 * p[47];
+        k38 = -p[7];
     }
 
     /** D(q), eq (8): writes the 9 entries of the symmetric 3×3 inertia matrix, row-major. */
@@ -123,28 +117,19 @@ final class BarrettFingerKernel {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);
         final double c3 = Math.cos(t3), s3 = Math.sin(t3);
-        final double c3_s3 = c3 * s3;
-        final double c3_c3 = c3 * c3;
-        final double s2_s3 = s2 * s3;
-        final double s2_c3 = s2 * c3;
-        final double c2_s3 = c2 * s3;
-        final double c2_c3 = c2 * c3;
+        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;
+        final double c23_s23 = c23 * s23;
+        final double c23_c23 = c23 * c23;
+        final double c2_s23 = c2 * s23;
+        final double c2_c23 = c2 * c23;
         final double c2_s2 = c2 * s2;
         final double c2_c2 = c2 * c2;
-        final double c2_s2_s3 = c2_s2 * s3;
-        final double c2_s2_c3 = c2_s2 * c3;
-        final double c2_c2_s3 = c2_c2 * s3;
-        final double c2_c2_c3 = c2_c2 * c3;
-        final double c2_s2_c3_s3 = c2_s2_c3 * s3;
-        final double c2_s2_c3_c3 = c2_s2_c3 * c3;
-        final double c2_c2_c3_s3 = c2_c2_c3 * s3;
-        final double c2_c2_c3_c3 = c2_c2_c3 * c3;
-        final double d11 = (k0 + k1 * s2 + k2 * c2 + k3 * c3_s3 + k4 * c3_c3 + k5 * s2_s3 + k6 * s2_c3 + k6 * c2_s3 - k5 * c2_c3 + k7 * c2_s2 + k8 * c2_c2 + k9 * c2_s2_s3 + k10 * c2_s2_c3 + k10 * c2_c2_s3 - k9 * c2_c2_c3 + k11 * c2_s2_c3_s3 + k12 * c2_s2_c3_c3 + k12 * c2_c2_c3_s3 - k11 * c2_c2_c3_c3);
-        final double d12 = (k13 * s2 + k14 * c2 + k15 * s2_s3 + k16 * s2_c3 + k16 * c2_s3 - k15 * c2_c3);
-        final double d13 = (k15 * s2_s3 + k16 * s2_c3 + k16 * c2_s3 - k15 * c2_c3);
-        final double d22 = (k17 + k10 * s3 - k9 * c3);
-        final double d23 = (k18 + k19 * s3 + k20 * c3);
-        final double d33 = k18;
+        final double d11 = (k0 + k1 * s23 + k2 * c23 + k3 * s2 + k4 * c2 + k5 * c23_s23 + k6 * c23_c23 + k7 * c2_s23 + k8 * c2_c23 + k9 * c2_s2 + k10 * c2_c2);
+        final double d12 = (k11 * s23 + k12 * c23 + k13 * s2 + k14 * c2);
+        final double d13 = (k11 * s23 + k12 * c23);
+        final double d22 = (k15 + k7 * s3 + k8 * c3);
+        final double d23 = (k16 + k17 * s3 + k18 * c3);
+        final double d33 = k16;
         d[0] = d11;
         d[1] = d12;
         d[2] = d13;
@@ -161,38 +146,31 @@ final class BarrettFingerKernel {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);
         final double c3 = Math.cos(t3), s3 = Math.sin(t3);
-        final double c3_s3 = c3 * s3;
-        final double c3_c3 = c3 * c3;
-        final double s2_s3 = s2 * s3;
-        final double s2_c3 = s2 * c3;
-        final double c2_s3 = c2 * s3;
-        final double c2_c3 = c2 * c3;
+        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;
+        final double c23_s23 = c23 * s23;
+        final double c23_c23 = c23 * c23;
+        final double s2_s23 = s2 * s23;
+        final double s2_c23 = s2 * c23;
+        final double c2_s23 = c2 * s23;
+        final double c2_c23 = c2 * c23;
         final double c2_s2 = c2 * s2;
         final double c2_c2 = c2 * c2;
-        final double c2_s2_s3 = c2_s2 * s3;
-        final double c2_s2_c3 = c2_s2 * c3;
-        final double c2_c2_s3 = c2_c2 * s3;
-        final double c2_c2_c3 = c2_c2 * c3;
-        final double c2_s2_c3_s3 = c2_s2_c3 * s3;
-        final double c2_s2_c3_c3 = c2_s2_c3 * c3;
-        final double c2_c2_c3_s3 = c2_c2_c3 * s3;
-        final double c2_c2_c3_c3 = c2_c2_c3 * c3;
         final double qd1_qd1 = qd1 * qd1;
         final double qd1_qd2 = qd1 * qd2;
         final double qd1_qd3 = qd1 * qd3;
         final double qd2_qd2 = qd2 * qd2;
         final double qd2_qd3 = qd2 * qd3;
         final double qd3_qd3 = qd3 * qd3;
-        final double h1 = qd3_qd3 * (-k16 * s2_s3 + k15 * s2_c3 + k15 * c2_s3 + k16 * c2_c3)
-                + qd2_qd3 * (k21 * s2_s3 + k22 * s2_c3 + k22 * c2_s3 - k21 * c2_c3)
-                + qd2_qd2 * (-k14 * s2 + k13 * c2 - k16 * s2_s3 + k15 * s2_c3 + k15 * c2_s3 + k16 * c2_c3)
-                + qd1_qd3 * (-k3 - k11 * c3_s3 - k12 * c3_c3 - k6 * s2_s3 + k5 * s2_c3 + k5 * c2_s3 + k6 * c2_c3 - k11 * c2_s2 - k12 * c2_c2 - k10 * c2_s2_s3 + k9 * c2_s2_c3 + k9 * c2_c2_s3 + k10 * c2_c2_c3 + k23 * c2_s2_c3_s3 + k24 * c2_s2_c3_c3 + k24 * c2_c2_c3_s3 - k23 * c2_c2_c3_c3)
-                + qd1_qd2 * (-k7 - k9 * s3 - k10 * c3 - k2 * s2 + k1 * c2 - k11 * c3_s3 - k12 * c3_c3 - k6 * s2_s3 + k5 * s2_c3 + k5 * c2_s3 + k6 * c2_c3 + k25 * c2_s2 + k26 * c2_c2 + k27 * c2_s2_s3 + k28 * c2_s2_c3 + k28 * c2_c2_s3 - k27 * c2_c2_c3 + k23 * c2_s2_c3_s3 + k24 * c2_s2_c3_c3 + k24 * c2_c2_c3_s3 - k23 * c2_c2_c3_c3);
-        final double h2 = qd3_qd3 * (-k20 * s3 + k19 * c3)
-                + qd2_qd3 * (k9 * s3 + k10 * c3)
-                + qd1_qd1 * (k29 - k20 * s3 + k19 * c3 + k30 * s2 + k31 * c2 + k4 * c3_s3 - k3 * c3_c3 + k32 * s2_s3 + k33 * s2_c3 + k33 * c2_s3 - k32 * c2_c3 + k8 * c2_s2 - k7 * c2_c2 + k10 * c2_s2_s3 - k9 * c2_s2_c3 - k9 * c2_c2_s3 - k10 * c2_c2_c3 + k12 * c2_s2_c3_s3 - k11 * c2_s2_c3_c3 - k11 * c2_c2_c3_s3 - k12 * c2_c2_c3_c3);
-        final double h3 = qd2_qd2 * (k20 * s3 - k19 * c3)
-                + qd1_qd1 * (k34 + k4 * c3_s3 - k3 * c3_c3 + k32 * s2_s3 + k33 * s2_c3 + k33 * c2_s3 - k32 * c2_c3 + k4 * c2_s2 - k3 * c2_c2 + k19 * c2_s2_s3 + k20 * c2_s2_c3 + k20 * c2_c2_s3 - k19 * c2_c2_c3 + k12 * c2_s2_c3_s3 - k11 * c2_s2_c3_c3 - k11 * c2_c2_c3_s3 - k12 * c2_c2_c3_c3);
+        final double h1 = qd3_qd3 * (-k12 * s23 + k11 * c23)
+                + qd2_qd3 * (k19 * s23 + k20 * c23)
+                + qd2_qd2 * (-k12 * s23 + k11 * c23 - k14 * s2 + k13 * c2)
+                + qd1_qd3 * (-k5 - k2 * s23 + k1 * c23 + k21 * c23_s23 + k22 * c23_c23 - k8 * c2_s23 + k7 * c2_c23)
+                + qd1_qd2 * (k23 - k2 * s23 + k1 * c23 - k4 * s2 + k3 * c2 + k21 * c23_s23 + k22 * c23_c23 - k7 * s2_s23 - k8 * s2_c23 - k8 * c2_s23 + k7 * c2_c23 + k24 * c2_s2 + k25 * c2_c2);
+        final double h2 = qd3_qd3 * (k17 * s2_s23 + k18 * s2_c23 - k18 * c2_s23 + k17 * c2_c23)
+                + qd2_qd3 * (k7 * s2_s23 + k8 * s2_c23 - k8 * c2_s23 + k7 * c2_c23)
+                + qd1_qd1 * (k26 + k27 * s23 + k28 * c23 + k29 * s2 + k30 * c2 + k6 * c23_s23 - k5 * c23_c23 + k17 * s2_s23 + k18 * s2_c23 + k18 * c2_s23 - k17 * c2_c23 + k10 * c2_s2 - k9 * c2_c2);
+        final double h3 = qd2_qd2 * (-k17 * s2_s23 - k18 * s2_c23 + k18 * c2_s23 - k17 * c2_c23)
+                + qd1_qd1 * (k31 + k27 * s23 + k28 * c23 + k6 * c23_s23 - k5 * c23_c23 + k18 * c2_s23 - k17 * c2_c23);
         h[0] = h1;
         h[1] = h2;
         h[2] = h3;
@@ -203,30 +181,23 @@ final class BarrettFingerKernel {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);
         final double c3 = Math.cos(t3), s3 = Math.sin(t3);
-        final double s2_s3 = s2 * s3;
-        final double s2_c3 = s2 * c3;
-        final double c2_s3 = c2 * s3;
-        final double c2_c3 = c2 * c3;
+        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;
+        final double s1_s23 = s1 * s23;
+        final double s1_c23 = s1 * c23;
         final double s1_s2 = s1 * s2;
         final double s1_c2 = s1 * c2;
+        final double c1_s23 = c1 * s23;
+        final double c1_c23 = c1 * c23;
         final double c1_s2 = c1 * s2;
         final double c1_c2 = c1 * c2;
-        final double s1_s2_s3 = s1_s2 * s3;
-        final double s1_s2_c3 = s1_s2 * c3;
-        final double s1_c2_s3 = s1_c2 * s3;
-        final double s1_c2_c3 = s1_c2 * c3;
-        final double c1_s2_s3 = c1_s2 * s3;
-        final double c1_s2_c3 = c1_s2 * c3;
-        final double c1_c2_s3 = c1_c2 * s3;
-        final double c1_c2_c3 = c1_c2 * c3;
-        final double g1 = gy * (k35 * s1 + k36 * c1 + k37 * c1_s2 + k38 * c1_c2 + k39 * c1_s2_s3 + k40 * c1_s2_c3 + k40 * c1_c2_s3 - k39 * c1_c2_c3)
-                + gx * (-k36 * s1 + k35 * c1 - k37 * s1_s2 - k38 * s1_c2 - k39 * s1_s2_s3 - k40 * s1_s2_c3 - k40 * s1_c2_s3 + k39 * s1_c2_c3);
-        final double g2 = gz * (k37 * s2 + k38 * c2 + k39 * s2_s3 + k40 * s2_c3 + k40 * c2_s3 - k39 * c2_c3)
-                + gy * (-k38 * s1_s2 + k37 * s1_c2 - k40 * s1_s2_s3 + k39 * s1_s2_c3 + k39 * s1_c2_s3 + k40 * s1_c2_c3)
-                + gx * (-k38 * c1_s2 + k37 * c1_c2 - k40 * c1_s2_s3 + k39 * c1_s2_c3 + k39 * c1_c2_s3 + k40 * c1_c2_c3);
-        final double g3 = gz * (k39 * s2_s3 + k40 * s2_c3 + k40 * c2_s3 - k39 * c2_c3)
-                + gy * (-k40 * s1_s2_s3 + k39 * s1_s2_c3 + k39 * s1_c2_s3 + k40 * s1_c2_c3)
-                + gx * (-k40 * c1_s2_s3 + k39 * c1_s2_c3 + k39 * c1_c2_s3 + k40 * c1_c2_c3);
+        final double g1 = gy * (k32 * s1 + k33 * c1 + k34 * c1_s23 + k35 * c1_c23 + k36 * c1_s2 + k37 * c1_c2)
+                + gx * (-k33 * s1 + k32 * c1 - k34 * s1_s23 - k35 * s1_c23 - k36 * s1_s2 - k37 * s1_c2);
+        final double g2 = gz * (k34 * s23 + k35 * c23 + k36 * s2 + k37 * c2)
+                + gy * (-k35 * s1_s23 + k34 * s1_c23 - k37 * s1_s2 + k36 * s1_c2)
+                + gx * (-k35 * c1_s23 + k34 * c1_c23 - k37 * c1_s2 + k36 * c1_c2);
+        final double g3 = gz * (k34 * s23 + k35 * c23)
+                + gy * (-k35 * s1_s23 + k34 * s1_c23)
+                + gx * (-k35 * c1_s23 + k34 * c1_c23);
         c[0] = g1;
         c[1] = g2;
         c[2] = g3;
@@ -238,46 +209,35 @@ final class BarrettFingerKernel {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);
         final double c3 = Math.cos(t3), s3 = Math.sin(t3);
-        final double c3_s3 = c3 * s3;
-        final double c3_c3 = c3 * c3;
-        final double s2_s3 = s2 * s3;
-        final double s2_c3 = s2 * c3;
-        final double c2_s3 = c2 * s3;
-        final double c2_c3 = c2 * c3;
+        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;
+        final double c23_s23 = c23 * s23;
+        final double c23_c23 = c23 * c23;
+        final double s2_s23 = s2 * s23;
+        final double s2_c23 = s2 * c23;
+        final double c2_s23 = c2 * s23;
+        final double c2_c23 = c2 * c23;
         final double c2_s2 = c2 * s2;
         final double c2_c2 = c2 * c2;
+        final double s1_s23 = s1 * s23;
+        final double s1_c23 = s1 * c23;
         final double s1_s2 = s1 * s2;
         final double s1_c2 = s1 * c2;
+        final double c1_s23 = c1 * s23;
+        final double c1_c23 = c1 * c23;
         final double c1_s2 = c1 * s2;
         final double c1_c2 = c1 * c2;
-        final double c2_s2_s3 = c2_s2 * s3;
-        final double c2_s2_c3 = c2_s2 * c3;
-        final double c2_c2_s3 = c2_c2 * s3;
-        final double c2_c2_c3 = c2_c2 * c3;
-        final double s1_s2_s3 = s1_s2 * s3;
-        final double s1_s2_c3 = s1_s2 * c3;
-        final double s1_c2_s3 = s1_c2 * s3;
-        final double s1_c2_c3 = s1_c2 * c3;
-        final double c1_s2_s3 = c1_s2 * s3;
-        final double c1_s2_c3 = c1_s2 * c3;
-        final double c1_c2_s3 = c1_c2 * s3;
-        final double c1_c2_c3 = c1_c2 * c3;
-        final double c2_s2_c3_s3 = c2_s2_c3 * s3;
-        final double c2_s2_c3_c3 = c2_s2_c3 * c3;
-        final double c2_c2_c3_s3 = c2_c2_c3 * s3;
-        final double c2_c2_c3_c3 = c2_c2_c3 * c3;
         final double qd1_qd1 = qd1 * qd1;
         final double qd1_qd2 = qd1 * qd2;
         final double qd1_qd3 = qd1 * qd3;
         final double qd2_qd2 = qd2 * qd2;
         final double qd2_qd3 = qd2 * qd3;
         final double qd3_qd3 = qd3 * qd3;
-        final double d11 = (k0 + k1 * s2 + k2 * c2 + k3 * c3_s3 + k4 * c3_c3 + k5 * s2_s3 + k6 * s2_c3 + k6 * c2_s3 - k5 * c2_c3 + k7 * c2_s2 + k8 * c2_c2 + k9 * c2_s2_s3 + k10 * c2_s2_c3 + k10 * c2_c2_s3 - k9 * c2_c2_c3 + k11 * c2_s2_c3_s3 + k12 * c2_s2_c3_c3 + k12 * c2_c2_c3_s3 - k11 * c2_c2_c3_c3);
-        final double d12 = (k13 * s2 + k14 * c2 + k15 * s2_s3 + k16 * s2_c3 + k16 * c2_s3 - k15 * c2_c3);
-        final double d13 = (k15 * s2_s3 + k16 * s2_c3 + k16 * c2_s3 - k15 * c2_c3);
-        final double d22 = (k17 + k10 * s3 - k9 * c3);
-        final double d23 = (k18 + k19 * s3 + k20 * c3);
-        final double d33 = k18;
+        final double d11 = (k0 + k1 * s23 + k2 * c23 + k3 * s2 + k4 * c2 + k5 * c23_s23 + k6 * c23_c23 + k7 * c2_s23 + k8 * c2_c23 + k9 * c2_s2 + k10 * c2_c2);
+        final double d12 = (k11 * s23 + k12 * c23 + k13 * s2 + k14 * c2);
+        final double d13 = (k11 * s23 + k12 * c23);
+        final double d22 = (k15 + k7 * s3 + k8 * c3);
+        final double d23 = (k16 + k17 * s3 + k18 * c3);
+        final double d33 = k16;
         d[0] = d11;
         d[1] = d12;
         d[2] = d13;
@@ -287,27 +247,27 @@ final class BarrettFingerKernel {
         d[6] = d13;
         d[7] = d23;
         d[8] = d33;
-        final double h1 = qd3_qd3 * (-k16 * s2_s3 + k15 * s2_c3 + k15 * c2_s3 + k16 * c2_c3)
-                + qd2_qd3 * (k21 * s2_s3 + k22 * s2_c3 + k22 * c2_s3 - k21 * c2_c3)
-                + qd2_qd2 * (-k14 * s2 + k13 * c2 - k16 * s2_s3 + k15 * s2_c3 + k15 * c2_s3 + k16 * c2_c3)
-                + qd1_qd3 * (-k3 - k11 * c3_s3 - k12 * c3_c3 - k6 * s2_s3 + k5 * s2_c3 + k5 * c2_s3 + k6 * c2_c3 - k11 * c2_s2 - k12 * c2_c2 - k10 * c2_s2_s3 + k9 * c2_s2_c3 + k9 * c2_c2_s3 + k10 * c2_c2_c3 + k23 * c2_s2_c3_s3 + k24 * c2_s2_c3_c3 + k24 * c2_c2_c3_s3 - k23 * c2_c2_c3_c3)
-                + qd1_qd2 * (-k7 - k9 * s3 - k10 * c3 - k2 * s2 + k1 * c2 - k11 * c3_s3 - k12 * c3_c3 - k6 * s2_s3 + k5 * s2_c3 + k5 * c2_s3 + k6 * c2_c3 + k25 * c2_s2 + k26 * c2_c2 + k27 * c2_s2_s3 + k28 * c2_s2_c3 + k28 * c2_c2_s3 - k27 * c2_c2_c3 + k23 * c2_s2_c3_s3 + k24 * c2_s2_c3_c3 + k24 * c2_c2_c3_s3 - k23 * c2_c2_c3_c3);
-        final double h2 = qd3_qd3 * (-k20 * s3 + k19 * c3)
-                + qd2_qd3 * (k9 * s3 + k10 * c3)
-                + qd1_qd1 * (k29 - k20 * s3 + k19 * c3 + k30 * s2 + k31 * c2 + k4 * c3_s3 - k3 * c3_c3 + k32 * s2_s3 + k33 * s2_c3 + k33 * c2_s3 - k32 * c2_c3 + k8 * c2_s2 - k7 * c2_c2 + k10 * c2_s2_s3 - k9 * c2_s2_c3 - k9 * c2_c2_s3 - k10 * c2_c2_c3 + k12 * c2_s2_c3_s3 - k11 * c2_s2_c3_c3 - k11 * c2_c2_c3_s3 - k12 * c2_c2_c3_c3);
-        final double h3 = qd2_qd2 * (k20 * s3 - k19 * c3)
-                + qd1_qd1 * (k34 + k4 * c3_s3 - k3 * c3_c3 + k32 * s2_s3 + k33 * s2_c3 + k33 * c2_s3 - k32 * c2_c3 + k4 * c2_s2 - k3 * c2_c2 + k19 * c2_s2_s3 + k20 * c2_s2_c3 + k20 * c2_c2_s3 - k19 * c2_c2_c3 + k12 * c2_s2_c3_s3 - k11 * c2_s2_c3_c3 - k11 * c2_c2_c3_s3 - k12 * c2_c2_c3_c3);
+        final double h1 = qd3_qd3 * (-k12 * s23 + k11 * c23)
+                + qd2_qd3 * (k19 * s23 + k20 * c23)
+                + qd2_qd2 * (-k12 * s23 + k11 * c23 - k14 * s2 + k13 * c2)
+                + qd1_qd3 * (-k5 - k2 * s23 + k1 * c23 + k21 * c23_s23 + k22 * c23_c23 - k8 * c2_s23 + k7 * c2_c23)
+                + qd1_qd2 * (k23 - k2 * s23 + k1 * c23 - k4 * s2 + k3 * c2 + k21 * c23_s23 + k22 * c23_c23 - k7 * s2_s23 - k8 * s2_c23 - k8 * c2_s23 + k7 * c2_c23 + k24 * c2_s2 + k25 * c2_c2);
+        final double h2 = qd3_qd3 * (k17 * s2_s23 + k18 * s2_c23 - k18 * c2_s23 + k17 * c2_c23)
+                + qd2_qd3 * (k7 * s2_s23 + k8 * s2_c23 - k8 * c2_s23 + k7 * c2_c23)
+                + qd1_qd1 * (k26 + k27 * s23 + k28 * c23 + k29 * s2 + k30 * c2 + k6 * c23_s23 - k5 * c23_c23 + k17 * s2_s23 + k18 * s2_c23 + k18 * c2_s23 - k17 * c2_c23 + k10 * c2_s2 - k9 * c2_c2);
+        final double h3 = qd2_qd2 * (-k17 * s2_s23 - k18 * s2_c23 + k18 * c2_s23 - k17 * c2_c23)
+                + qd1_qd1 * (k31 + k27 * s23 + k28 * c23 + k6 * c23_s23 - k5 * c23_c23 + k18 * c2_s23 - k17 * c2_c23);
         h[0] = h1;
         h[1] = h2;
         h[2] = h3;
-        final double g1 = gy * (k35 * s1 + k36 * c1 + k37 * c1_s2 + k38 * c1_c2 + k39 * c1_s2_s3 + k40 * c1_s2_c3 + k40 * c1_c2_s3 - k39 * c1_c2_c3)
-                + gx * (-k36 * s1 + k35 * c1 - k37 * s1_s2 - k38 * s1_c2 - k39 * s1_s2_s3 - k40 * s1_s2_c3 - k40 * s1_c2_s3 + k39 * s1_c2_c3);
-        final double g2 = gz * (k37 * s2 + k38 * c2 + k39 * s2_s3 + k40 * s2_c3 + k40 * c2_s3 - k39 * c2_c3)
-                + gy * (-k38 * s1_s2 + k37 * s1_c2 - k40 * s1_s2_s3 + k39 * s1_s2_c3 + k39 * s1_c2_s3 + k40 * s1_c2_c3)
-                + gx * (-k38 * c1_s2 + k37 * c1_c2 - k40 * c1_s2_s3 + k39 * c1_s2_c3 + k39 * c1_c2_s3 + k40 * c1_c2_c3);
-        final double g3 = gz * (k39 * s2_s3 + k40 * s2_c3 + k40 * c2_s3 - k39 * c2_c3)
-                + gy * (-k40 * s1_s2_s3 + k39 * s1_s2_c3 + k39 * s1_c2_s3 + k40 * s1_c2_c3)
-                + gx * (-k40 * c1_s2_s3 + k39 * c1_s2_c3 + k39 * c1_c2_s3 + k40 * c1_c2_c3);
+        final double g1 = gy * (k32 * s1 + k33 * c1 + k34 * c1_s23 + k35 * c1_c23 + k36 * c1_s2 + k37 * c1_c2)
+                + gx * (-k33 * s1 + k32 * c1 - k34 * s1_s23 - k35 * s1_c23 - k36 * s1_s2 - k37 * s1_c2);
+        final double g2 = gz * (k34 * s23 + k35 * c23 + k36 * s2 + k37 * c2)
+                + gy * (-k35 * s1_s23 + k34 * s1_c23 - k37 * s1_s2 + k36 * s1_c2)
+                + gx * (-k35 * c1_s23 + k34 * c1_c23 - k37 * c1_s2 + k36 * c1_c2);
+        final double g3 = gz * (k34 * s23 + k35 * c23)
+                + gy * (-k35 * s1_s23 + k34 * s1_c23)
+                + gx * (-k35 * c1_s23 + k34 * c1_c23);
         c[0] = g1;
         c[1] = g2;
         c[2] = g3;
@@ -319,64 +279,53 @@ final class BarrettFingerKernel {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);
         final double c3 = Math.cos(t3), s3 = Math.sin(t3);
-        final double c3_s3 = c3 * s3;
-        final double c3_c3 = c3 * c3;
-        final double s2_s3 = s2 * s3;
-        final double s2_c3 = s2 * c3;
-        final double c2_s3 = c2 * s3;
-        final double c2_c3 = c2 * c3;
+        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;
+        final double c23_s23 = c23 * s23;
+        final double c23_c23 = c23 * c23;
+        final double s2_s23 = s2 * s23;
+        final double s2_c23 = s2 * c23;
+        final double c2_s23 = c2 * s23;
+        final double c2_c23 = c2 * c23;
         final double c2_s2 = c2 * s2;
         final double c2_c2 = c2 * c2;
+        final double s1_s23 = s1 * s23;
+        final double s1_c23 = s1 * c23;
         final double s1_s2 = s1 * s2;
         final double s1_c2 = s1 * c2;
+        final double c1_s23 = c1 * s23;
+        final double c1_c23 = c1 * c23;
         final double c1_s2 = c1 * s2;
         final double c1_c2 = c1 * c2;
-        final double c2_s2_s3 = c2_s2 * s3;
-        final double c2_s2_c3 = c2_s2 * c3;
-        final double c2_c2_s3 = c2_c2 * s3;
-        final double c2_c2_c3 = c2_c2 * c3;
-        final double s1_s2_s3 = s1_s2 * s3;
-        final double s1_s2_c3 = s1_s2 * c3;
-        final double s1_c2_s3 = s1_c2 * s3;
-        final double s1_c2_c3 = s1_c2 * c3;
-        final double c1_s2_s3 = c1_s2 * s3;
-        final double c1_s2_c3 = c1_s2 * c3;
-        final double c1_c2_s3 = c1_c2 * s3;
-        final double c1_c2_c3 = c1_c2 * c3;
-        final double c2_s2_c3_s3 = c2_s2_c3 * s3;
-        final double c2_s2_c3_c3 = c2_s2_c3 * c3;
-        final double c2_c2_c3_s3 = c2_c2_c3 * s3;
-        final double c2_c2_c3_c3 = c2_c2_c3 * c3;
         final double qd1_qd1 = qd1 * qd1;
         final double qd1_qd2 = qd1 * qd2;
         final double qd1_qd3 = qd1 * qd3;
         final double qd2_qd2 = qd2 * qd2;
         final double qd2_qd3 = qd2 * qd3;
         final double qd3_qd3 = qd3 * qd3;
-        final double d11 = (k0 + k1 * s2 + k2 * c2 + k3 * c3_s3 + k4 * c3_c3 + k5 * s2_s3 + k6 * s2_c3 + k6 * c2_s3 - k5 * c2_c3 + k7 * c2_s2 + k8 * c2_c2 + k9 * c2_s2_s3 + k10 * c2_s2_c3 + k10 * c2_c2_s3 - k9 * c2_c2_c3 + k11 * c2_s2_c3_s3 + k12 * c2_s2_c3_c3 + k12 * c2_c2_c3_s3 - k11 * c2_c2_c3_c3);
-        final double d12 = (k13 * s2 + k14 * c2 + k15 * s2_s3 + k16 * s2_c3 + k16 * c2_s3 - k15 * c2_c3);
-        final double d13 = (k15 * s2_s3 + k16 * s2_c3 + k16 * c2_s3 - k15 * c2_c3);
-        final double d22 = (k17 + k10 * s3 - k9 * c3);
-        final double d23 = (k18 + k19 * s3 + k20 * c3);
-        final double d33 = k18;
-        final double h1 = qd3_qd3 * (-k16 * s2_s3 + k15 * s2_c3 + k15 * c2_s3 + k16 * c2_c3)
-                + qd2_qd3 * (k21 * s2_s3 + k22 * s2_c3 + k22 * c2_s3 - k21 * c2_c3)
-                + qd2_qd2 * (-k14 * s2 + k13 * c2 - k16 * s2_s3 + k15 * s2_c3 + k15 * c2_s3 + k16 * c2_c3)
-                + qd1_qd3 * (-k3 - k11 * c3_s3 - k12 * c3_c3 - k6 * s2_s3 + k5 * s2_c3 + k5 * c2_s3 + k6 * c2_c3 - k11 * c2_s2 - k12 * c2_c2 - k10 * c2_s2_s3 + k9 * c2_s2_c3 + k9 * c2_c2_s3 + k10 * c2_c2_c3 + k23 * c2_s2_c3_s3 + k24 * c2_s2_c3_c3 + k24 * c2_c2_c3_s3 - k23 * c2_c2_c3_c3)
-                + qd1_qd2 * (-k7 - k9 * s3 - k10 * c3 - k2 * s2 + k1 * c2 - k11 * c3_s3 - k12 * c3_c3 - k6 * s2_s3 + k5 * s2_c3 + k5 * c2_s3 + k6 * c2_c3 + k25 * c2_s2 + k26 * c2_c2 + k27 * c2_s2_s3 + k28 * c2_s2_c3 + k28 * c2_c2_s3 - k27 * c2_c2_c3 + k23 * c2_s2_c3_s3 + k24 * c2_s2_c3_c3 + k24 * c2_c2_c3_s3 - k23 * c2_c2_c3_c3);
-        final double h2 = qd3_qd3 * (-k20 * s3 + k19 * c3)
-                + qd2_qd3 * (k9 * s3 + k10 * c3)
-                + qd1_qd1 * (k29 - k20 * s3 + k19 * c3 + k30 * s2 + k31 * c2 + k4 * c3_s3 - k3 * c3_c3 + k32 * s2_s3 + k33 * s2_c3 + k33 * c2_s3 - k32 * c2_c3 + k8 * c2_s2 - k7 * c2_c2 + k10 * c2_s2_s3 - k9 * c2_s2_c3 - k9 * c2_c2_s3 - k10 * c2_c2_c3 + k12 * c2_s2_c3_s3 - k11 * c2_s2_c3_c3 - k11 * c2_c2_c3_s3 - k12 * c2_c2_c3_c3);
-        final double h3 = qd2_qd2 * (k20 * s3 - k19 * c3)
-                + qd1_qd1 * (k34 + k4 * c3_s3 - k3 * c3_c3 + k32 * s2_s3 + k33 * s2_c3 + k33 * c2_s3 - k32 * c2_c3 + k4 * c2_s2 - k3 * c2_c2 + k19 * c2_s2_s3 + k20 * c2_s2_c3 + k20 * c2_c2_s3 - k19 * c2_c2_c3 + k12 * c2_s2_c3_s3 - k11 * c2_s2_c3_c3 - k11 * c2_c2_c3_s3 - k12 * c2_c2_c3_c3);
-        final double g1 = gy * (k35 * s1 + k36 * c1 + k37 * c1_s2 + k38 * c1_c2 + k39 * c1_s2_s3 + k40 * c1_s2_c3 + k40 * c1_c2_s3 - k39 * c1_c2_c3)
-                + gx * (-k36 * s1 + k35 * c1 - k37 * s1_s2 - k38 * s1_c2 - k39 * s1_s2_s3 - k40 * s1_s2_c3 - k40 * s1_c2_s3 + k39 * s1_c2_c3);
-        final double g2 = gz * (k37 * s2 + k38 * c2 + k39 * s2_s3 + k40 * s2_c3 + k40 * c2_s3 - k39 * c2_c3)
-                + gy * (-k38 * s1_s2 + k37 * s1_c2 - k40 * s1_s2_s3 + k39 * s1_s2_c3 + k39 * s1_c2_s3 + k40 * s1_c2_c3)
-                + gx * (-k38 * c1_s2 + k37 * c1_c2 - k40 * c1_s2_s3 + k39 * c1_s2_c3 + k39 * c1_c2_s3 + k40 * c1_c2_c3);
-        final double g3 = gz * (k39 * s2_s3 + k40 * s2_c3 + k40 * c2_s3 - k39 * c2_c3)
-                + gy * (-k40 * s1_s2_s3 + k39 * s1_s2_c3 + k39 * s1_c2_s3 + k40 * s1_c2_c3)
-                + gx * (-k40 * c1_s2_s3 + k39 * c1_s2_c3 + k39 * c1_c2_s3 + k40 * c1_c2_c3);
+        final double d11 = (k0 + k1 * s23 + k2 * c23 + k3 * s2 + k4 * c2 + k5 * c23_s23 + k6 * c23_c23 + k7 * c2_s23 + k8 * c2_c23 + k9 * c2_s2 + k10 * c2_c2);
+        final double d12 = (k11 * s23 + k12 * c23 + k13 * s2 + k14 * c2);
+        final double d13 = (k11 * s23 + k12 * c23);
+        final double d22 = (k15 + k7 * s3 + k8 * c3);
+        final double d23 = (k16 + k17 * s3 + k18 * c3);
+        final double d33 = k16;
+        final double h1 = qd3_qd3 * (-k12 * s23 + k11 * c23)
+                + qd2_qd3 * (k19 * s23 + k20 * c23)
+                + qd2_qd2 * (-k12 * s23 + k11 * c23 - k14 * s2 + k13 * c2)
+                + qd1_qd3 * (-k5 - k2 * s23 + k1 * c23 + k21 * c23_s23 + k22 * c23_c23 - k8 * c2_s23 + k7 * c2_c23)
+                + qd1_qd2 * (k23 - k2 * s23 + k1 * c23 - k4 * s2 + k3 * c2 + k21 * c23_s23 + k22 * c23_c23 - k7 * s2_s23 - k8 * s2_c23 - k8 * c2_s23 + k7 * c2_c23 + k24 * c2_s2 + k25 * c2_c2);
+        final double h2 = qd3_qd3 * (k17 * s2_s23 + k18 * s2_c23 - k18 * c2_s23 + k17 * c2_c23)
+                + qd2_qd3 * (k7 * s2_s23 + k8 * s2_c23 - k8 * c2_s23 + k7 * c2_c23)
+                + qd1_qd1 * (k26 + k27 * s23 + k28 * c23 + k29 * s2 + k30 * c2 + k6 * c23_s23 - k5 * c23_c23 + k17 * s2_s23 + k18 * s2_c23 + k18 * c2_s23 - k17 * c2_c23 + k10 * c2_s2 - k9 * c2_c2);
+        final double h3 = qd2_qd2 * (-k17 * s2_s23 - k18 * s2_c23 + k18 * c2_s23 - k17 * c2_c23)
+                + qd1_qd1 * (k31 + k27 * s23 + k28 * c23 + k6 * c23_s23 - k5 * c23_c23 + k18 * c2_s23 - k17 * c2_c23);
+        final double g1 = gy * (k32 * s1 + k33 * c1 + k34 * c1_s23 + k35 * c1_c23 + k36 * c1_s2 + k37 * c1_c2)
+                + gx * (-k33 * s1 + k32 * c1 - k34 * s1_s23 - k35 * s1_c23 - k36 * s1_s2 - k37 * s1_c2);
+        final double g2 = gz * (k34 * s23 + k35 * c23 + k36 * s2 + k37 * c2)
+                + gy * (-k35 * s1_s23 + k34 * s1_c23 - k37 * s1_s2 + k36 * s1_c2)
+                + gx * (-k35 * c1_s23 + k34 * c1_c23 - k37 * c1_s2 + k36 * c1_c2);
+        final double g3 = gz * (k34 * s23 + k35 * c23)
+                + gy * (-k35 * s1_s23 + k34 * s1_c23)
+                + gx * (-k35 * c1_s23 + k34 * c1_c23);
         tau[0] = d11 * qdd1 + d12 * qdd2 + d13 * qdd3 + h1 + g1;
         tau[1] = d12 * qdd1 + d22 * qdd2 + d23 * qdd3 + h2 + g2;
         tau[2] = d13 * qdd1 + d23 * qdd2 + d33 * qdd3 + h3 + g3;
@@ -387,24 +336,17 @@ final class BarrettFingerKernel {
         final double c1 = Math.cos(t1), s1 = Math.sin(t1);
         final double c2 = Math.cos(t2), s2 = Math.sin(t2);
         final double c3 = Math.cos(t3), s3 = Math.sin(t3);
-        final double s2_s3 = s2 * s3;
-        final double s2_c3 = s2 * c3;
-        final double c2_s3 = c2 * s3;
-        final double c2_c3 = c2 * c3;
+        final double c23 = c2 * c3 - s2 * s3, s23 = s2 * c3 + c2 * s3;
+        final double s1_s23 = s1 * s23;
+        final double s1_c23 = s1 * c23;
         final double s1_s2 = s1 * s2;
         final double s1_c2 = s1 * c2;
+        final double c1_s23 = c1 * s23;
+        final double c1_c23 = c1 * c23;
         final double c1_s2 = c1 * s2;
         final double c1_c2 = c1 * c2;
-        final double s1_s2_s3 = s1_s2 * s3;
-        final double s1_s2_c3 = s1_s2 * c3;
-        final double s1_c2_s3 = s1_c2 * s3;
-        final double s1_c2_c3 = s1_c2 * c3;
-        final double c1_s2_s3 = c1_s2 * s3;
-        final double c1_s2_c3 = c1_s2 * c3;
-        final double c1_c2_s3 = c1_c2 * s3;
-        final double c1_c2_c3 = c1_c2 * c3;
-        return gz * (k41 + k38 * s2 - k37 * c2 + k40 * s2_s3 - k39 * s2_c3 - k39 * c2_s3 - k40 * c2_c3)
-                + gy * (k36 * s1 - k35 * c1 + k37 * s1_s2 + k38 * s1_c2 + k39 * s1_s2_s3 + k40 * s1_s2_c3 + k40 * s1_c2_s3 - k39 * s1_c2_c3)
-                + gx * (k35 * s1 + k36 * c1 + k37 * c1_s2 + k38 * c1_c2 + k39 * c1_s2_s3 + k40 * c1_s2_c3 + k40 * c1_c2_s3 - k39 * c1_c2_c3);
+        return gz * (k38 + k35 * s23 - k34 * c23 + k37 * s2 - k36 * c2)
+                + gy * (k33 * s1 - k32 * c1 + k34 * s1_s23 + k35 * s1_c23 + k36 * s1_s2 + k37 * s1_c2)
+                + gx * (k32 * s1 + k33 * c1 + k34 * c1_s23 + k35 * c1_c23 + k36 * c1_s2 + k37 * c1_c2);
     }
 }
