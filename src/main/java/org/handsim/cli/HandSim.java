@@ -19,6 +19,7 @@ public final class HandSim implements Runnable {
     /** Every sub-command, in the order `handsim --help` lists them. */
     static final List<Class<?>> SUBCOMMANDS = List.of(
         // sub-commands register here, one line each
+        MeshCommand.class
     );
 
     @Override
