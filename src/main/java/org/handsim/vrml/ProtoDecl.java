@@ -24,6 +24,8 @@ final class ProtoDecl {
     String[] urls;
     /** For a resolved EXTERNPROTO: the PROTO definition found in the referenced file. */
     ProtoDecl resolvedFrom;
+    /** Nodes one instance creates when expanded (computed once; -1: not yet). */
+    long expandedSize = -1;
 
     ProtoDecl(NodeType iface, VrmlText text, int offset) {
         this.iface = iface;

@@ -40,6 +40,12 @@ final class ProtoExpander {
             }
             return null;
         }
+        long size = sizeOf(def);
+        if (session.expandedNodes + size > session.maxExpandedNodes) {
+            throw inst.text.error(inst.offset, "PROTO expansion creates more than " + session.maxExpandedNodes
+                + " nodes (an instance of " + inst.type.name + " alone expands to " + (size >= LARGE ? "over " + LARGE : String.valueOf(size))
+                + "; exponentially nested PROTOs?); refused");
+        }
         NodeType di = def.iface;
         Object[] actual = new Object[di.size()];
         for (int j = 0; j < actual.length; j++) {
@@ -54,6 +60,41 @@ final class ProtoExpander {
         }
         Cloner c = new Cloner(def, actual, inst);
         return c.copy(def.body.get(0), depth);
+    }
+
+    private static final long LARGE = Long.MAX_VALUE / 4;
+
+    /**
+     * Nodes one expansion of {@code def} creates: its body's nodes (each once, as USE inside the
+     * body is copied once), where a nested instance counts as its own expansion. Values passed
+     * in through IS are not copied and not counted. Computed once per declaration, before any
+     * copying, so exponential nesting is refused in O(size of the declarations), not after
+     * billions of copies. Saturates at {@link #LARGE}.
+     */
+    static long sizeOf(ProtoDecl def) {
+        if (def.expandedSize >= 0) return def.expandedSize;
+        long total = 0;
+        IdentityHashMap<VrmlNode, Boolean> seen = new IdentityHashMap<>();
+        java.util.ArrayDeque<VrmlNode> stack = new java.util.ArrayDeque<>();
+        if (def.body != null && !def.body.isEmpty()) stack.push(def.body.get(0));
+        while (!stack.isEmpty()) {
+            VrmlNode n = stack.pop();
+            if (seen.put(n, Boolean.TRUE) != null) continue;
+            total = Math.min(LARGE, total + 1);
+            if (n.type.proto != null) {
+                ProtoDecl d = n.type.proto;
+                ProtoDecl dd = d.resolvedFrom != null ? d.resolvedFrom : d;
+                if (dd.body != null) total = Math.min(LARGE, total + sizeOf(dd));
+            }
+            for (int i = 0; i < n.type.size(); i++) {
+                if (n.isRefs != null && n.isRefs[i] != null) continue;
+                Object v = n.values[i];
+                if (v instanceof VrmlNode) stack.push((VrmlNode) v);
+                else if (v instanceof VrmlNode[]) for (VrmlNode c : (VrmlNode[]) v) stack.push(c);
+            }
+        }
+        def.expandedSize = total;
+        return total;
     }
 
     private static String[] quote(String[] s) {

@@ -119,6 +119,10 @@ public final class VrmlLoader extends LoaderBase {
      * @throws VrmlParseException {@code FILE:LINE:COL: message} if it cannot be loaded
      */
     public VrmlScene load(Path file) {
+        return onWorker(() -> loadHere(file));
+    }
+
+    private VrmlScene loadHere(Path file) {
         String name = file.toString();
         LoadSession s = session();
         try {
@@ -168,6 +172,10 @@ public final class VrmlLoader extends LoaderBase {
 
     /** Loads VRML text from a reader, using {@code name} in messages. */
     public VrmlScene load(String name, Reader reader) {
+        return onWorker(() -> loadHere(name, reader));
+    }
+
+    private VrmlScene loadHere(String name, Reader reader) {
         StringBuilder sb = new StringBuilder();
         char[] buf = new char[1 << 16];
         try {
@@ -193,6 +201,47 @@ public final class VrmlLoader extends LoaderBase {
         } catch (IOException e) {
             throw new VrmlParseException(name, 1, 1, "cannot read: " + e);
         }
+    }
+
+    /** Stack of the thread that parses and builds: enough for {@link #maxDepth} levels whatever the caller's stack. */
+    private static final long WORKER_STACK = 256L << 20;
+
+    /**
+     * Runs a load on a fresh thread with a large stack and waits for it. Parsing and scene
+     * building are recursive (bounded by {@link #maxDepth}); running them on a thread of known
+     * stack size means the depth limit, not the caller's thread, decides what loads, and a
+     * deeply nested file gives the depth-limit error, never a StackOverflowError.
+     */
+    private static VrmlScene onWorker(java.util.function.Supplier<VrmlScene> job) {
+        Object[] result = new Object[1];
+        Thread t = new Thread(null, () -> {
+            try {
+                result[0] = job.get();
+            } catch (Throwable e) {
+                result[0] = e;
+            }
+        }, "vrml-loader", WORKER_STACK);
+        t.setDaemon(true);
+        t.start();
+        boolean interrupted = false;
+        while (true) {
+            try {
+                t.join();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) Thread.currentThread().interrupt();
+        Object r = result[0];
+        if (r instanceof VrmlScene) return (VrmlScene) r;
+        if (r instanceof RuntimeException) {
+            RuntimeException e = (RuntimeException) r;
+            e.addSuppressed(new Exception("rethrown from the vrml-loader thread"));
+            throw e;
+        }
+        if (r instanceof Error) throw (Error) r;
+        throw new IllegalStateException("VRML load failed", (Throwable) r);
     }
 
     private LoadSession session() {

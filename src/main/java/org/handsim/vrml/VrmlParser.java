@@ -59,6 +59,8 @@ final class VrmlParser {
         final Scope parent;
         final HashMap<String, VrmlNode> defs = new HashMap<>();
         final HashMap<String, NodeType> protos = new HashMap<>();
+        /** DEF names whose node is still being parsed (a USE of one would make a cycle). */
+        final java.util.HashSet<String> open = new java.util.HashSet<>();
         /** The PROTO whose body (or nested default) this scope belongs to; IS refers to it. */
         final ProtoDecl inProto;
         /** True in a PROTO body (instances are not expanded yet). */
@@ -86,6 +88,12 @@ final class VrmlParser {
         this.expander = new ProtoExpander(session);
         this.scope = new Scope(null, null, false);
         this.baseDepth = session.activeDepth;
+    }
+
+    /** Skips white space and comments; returns the offset of the next token. */
+    private int skipPos() {
+        lx.skip();
+        return lx.pos;
     }
 
     /** Parses the whole file; returns the top-level nodes (expanded, unresolved instances dropped). */
@@ -121,7 +129,7 @@ final class VrmlParser {
 
     /** node ::= [DEF id] Type { body } | USE id. Returns null for an unresolved EXTERNPROTO instance. */
     private VrmlNode node() {
-        int start = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int start = skipPos();
         if (!lx.atIdentifier()) {
             int c = lx.skip();
             if (c == '{' || c == '[') throw lx.error("expected a node type name before '" + (char) c + "'");
@@ -134,6 +142,9 @@ final class VrmlParser {
             VrmlNode n = scope.defs.get(name);
             if (n == null) {
                 if (scope.defs.containsKey(name)) return null; // DEF of an unresolved EXTERNPROTO instance
+                if (scope.open.contains(name)) {
+                    throw text.error(at, "USE '" + name + "' inside the node DEF '" + name + "' itself (a node cannot contain itself)");
+                }
                 throw text.error(at, "USE '" + name + "' before any DEF '" + name + "' in this scope");
             }
             return n;
@@ -142,7 +153,7 @@ final class VrmlParser {
         int defAt = start;
         if (word.equals("DEF")) {
             defName = lx.identifier("a name after DEF");
-            start = lx.skip() >= 0 ? lx.pos : lx.pos;
+            start = skipPos();
             word = lx.identifier("a node type after DEF " + defName);
         }
         NodeType type = scope.findProto(word);
@@ -161,7 +172,12 @@ final class VrmlParser {
         VrmlNode n = new VrmlNode(type, text, start);
         n.defName = defName;
         lx.expect('{', "after node type " + word);
-        body(n);
+        boolean opened = defName != null && scope.open.add(defName);
+        try {
+            body(n);
+        } finally {
+            if (opened) scope.open.remove(defName);
+        }
         depth--;
         VrmlNode result = n;
         if (type.proto != null && !scope.inBody) {
@@ -220,11 +236,12 @@ final class VrmlParser {
                 isBinding(n, i, fname);
                 continue;
             }
-            if (!type.hasValue(i)) {
-                throw text.error(fieldAt, "'" + fname + "' is an " + NodeType.KIND_NAMES[type.kinds[i]] + " of " + type.name
+            if (!type.hasValue(i) || !fname.equals(type.names[i])) {
+                String kind = fname.equals(type.names[i]) ? NodeType.KIND_NAMES[type.kinds[i]] : fname.startsWith("set_") ? "eventIn" : "eventOut";
+                throw text.error(fieldAt, "'" + fname + "' is an " + kind + " of " + type.name
                     + ": it takes no value here (only IS inside a PROTO)");
             }
-            int valueAt = lx.skip() >= 0 ? lx.pos : lx.pos;
+            int valueAt = skipPos();
             n.values[i] = value(type.types[i], fname, type.name);
             n.valueOffsets[i] = valueAt;
             if (type.types[i] == FieldType.MFInt32 && fname.equals("coordIndex") && type.name.equals("IndexedFaceSet")) {
@@ -250,7 +267,7 @@ final class VrmlParser {
     }
 
     private void isBinding(VrmlNode n, int i, String fname) {
-        int at = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int at = skipPos();
         String target = lx.identifier("an interface name after IS");
         ProtoDecl p = scope.inProto;
         if (p == null || !scope.inBody) throw text.error(at, "IS is only allowed inside a PROTO body ('" + fname + " IS " + target + "')");
@@ -277,7 +294,7 @@ final class VrmlParser {
         String name = lx.identifier("a name for the Script " + kind);
         if (lx.atWord("IS")) {
             lx.identifier("IS");
-            int isAt = lx.skip() >= 0 ? lx.pos : lx.pos;
+            int isAt = skipPos();
             String target = lx.identifier("an interface name after IS");
             if (scope.inProto == null || !scope.inBody) throw text.error(isAt, "IS is only allowed inside a PROTO body");
             return;
@@ -331,7 +348,7 @@ final class VrmlParser {
     }
 
     private int[] mfInt(String what) {
-        int open = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int open = skipPos();
         if (!lx.accept('[')) return new int[] {lx.readInt(what)};
         int[] a = new int[16];
         int n = 0;
@@ -346,7 +363,7 @@ final class VrmlParser {
     }
 
     private float[] mfFloat(int k, String what) {
-        int open = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int open = skipPos();
         if (!lx.accept('[')) {
             float[] v = new float[k];
             for (int j = 0; j < k; j++) v[j] = lx.readFloat(what);
@@ -365,7 +382,7 @@ final class VrmlParser {
     }
 
     private double[] mfTime(String what) {
-        int open = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int open = skipPos();
         if (!lx.accept('[')) return new double[] {lx.readDouble(what)};
         double[] a = new double[8];
         int n = 0;
@@ -380,7 +397,7 @@ final class VrmlParser {
     }
 
     private String[] mfString(String what) {
-        int open = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int open = skipPos();
         if (!lx.accept('[')) return new String[] {lx.string(what)};
         List<String> l = new ArrayList<>();
         while (true) {
@@ -393,7 +410,7 @@ final class VrmlParser {
     }
 
     private VrmlNode[] mfNode(String field, String node) {
-        int open = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int open = skipPos();
         if (!lx.accept('[')) {
             if (lx.atWord("NULL")) { lx.identifier("NULL"); return new VrmlNode[0]; }
             VrmlNode n = node();
@@ -418,7 +435,7 @@ final class VrmlParser {
 
     /** SFImage: width height components, then width×height pixels (never preallocated from the claim). */
     private int[] image(String what) {
-        int at = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int at = skipPos();
         int w = lx.readInt(what), h = lx.readInt(what), comp = lx.readInt(what);
         if (w < 0 || h < 0 || comp < 0 || comp > 4) throw text.error(at, "bad image header " + w + " " + h + " " + comp + " for " + what);
         long pixels = (long) w * h;
@@ -489,7 +506,7 @@ final class VrmlParser {
         // the declaration exists (for IS and recursion checks) before its defaults are parsed
         while (!lx.accept(']')) {
             if (lx.atEnd()) throw text.error(at, "interface of PROTO " + name + " is not closed: missing ']'");
-            int declAt = lx.skip() >= 0 ? lx.pos : lx.pos;
+            int declAt = skipPos();
             String kind = lx.identifier("field, exposedField, eventIn or eventOut");
             int k = kindOf(kind);
             if (k < 0) throw text.error(declAt, "expected field, exposedField, eventIn or eventOut in PROTO " + name + ", found '" + kind + "'");
@@ -563,7 +580,7 @@ final class VrmlParser {
         List<Object> defaults = new ArrayList<>();
         while (!lx.accept(']')) {
             if (lx.atEnd()) throw text.error(at, "interface of EXTERNPROTO " + name + " is not closed: missing ']'");
-            int declAt = lx.skip() >= 0 ? lx.pos : lx.pos;
+            int declAt = skipPos();
             String kind = lx.identifier("field, exposedField, eventIn or eventOut");
             int k = kindOf(kind);
             if (k < 0) throw text.error(declAt, "expected field, exposedField, eventIn or eventOut in EXTERNPROTO " + name + ", found '" + kind + "'");
@@ -575,7 +592,7 @@ final class VrmlParser {
             kinds.add(k);
             defaults.add(null);
         }
-        int urlAt = lx.skip() >= 0 ? lx.pos : lx.pos;
+        int urlAt = skipPos();
         String[] urls = mfString("the URL list of EXTERNPROTO " + name);
         NodeType iface = newType(name, names, types, kinds, defaults);
         iface.isExtern = true;
