@@ -220,39 +220,43 @@ final class GeometryBuilder {
         boolean closedSpine = ns > 2 && spine[0] == spine[3 * ns - 3] && spine[1] == spine[3 * ns - 2] && spine[2] == spine[3 * ns - 1];
         boolean closedCs = nc > 2 && cs[0] == cs[2 * nc - 2] && cs[1] == cs[2 * nc - 1];
         double[][] frame = spineFrames(spine, ns, closedSpine);
-        float[] p = new float[3 * ns * nc];
+        // a closed cross-section or spine shares its seam: the last ring point/ring is the first
+        int ncr = closedCs ? nc - 1 : nc, nsr = closedSpine ? ns - 1 : ns;
+        float[] p = new float[3 * nsr * ncr];
         double[] m = new double[9];
-        for (int i = 0; i < ns; i++) {
+        for (int i = 0; i < nsr; i++) {
             double[] f = frame[i];
             int si = Math.min(i, sc.length / 2 - 1), oi = Math.min(i, or.length / 4 - 1);
             double sx = si >= 0 ? sc[2 * si] : 1, sz = si >= 0 ? sc[2 * si + 1] : 1;
             if (oi >= 0) rotation(or[4 * oi], or[4 * oi + 1], or[4 * oi + 2], or[4 * oi + 3], m);
             else rotation(0, 0, 1, 0, m);
-            for (int k = 0; k < nc; k++) {
+            for (int k = 0; k < ncr; k++) {
                 double lx = cs[2 * k] * sx, lz = cs[2 * k + 1] * sz;
                 // orientation rotation of (lx, 0, lz)
                 double rx = m[0] * lx + m[2] * lz, ry = m[3] * lx + m[5] * lz, rz = m[6] * lx + m[8] * lz;
-                int v = i * nc + k;
+                int v = i * ncr + k;
                 for (int a = 0; a < 3; a++) {
                     p[3 * v + a] = (float) (spine[3 * i + a] + rx * f[a] + ry * f[3 + a] + rz * f[6 + a]);
                 }
             }
         }
         int body = 2 * (ns - 1) * (nc - 1);
-        int capN = closedCs ? nc - 1 : nc;
+        int capN = ncr;
         boolean begin = g.getBool("beginCap") && !closedSpine && capN >= 3;
         boolean end = g.getBool("endCap") && !closedSpine && capN >= 3;
         int[] ci = new int[3 * (body + (begin ? capN - 2 : 0) + (end ? capN - 2 : 0))];
         int o = 0;
         for (int i = 0; i + 1 < ns; i++) {
+            int r0 = i * ncr, r1 = (i + 1 == nsr ? 0 : i + 1) * ncr;
             for (int k = 0; k + 1 < nc; k++) {
-                int a = i * nc + k, b = i * nc + k + 1, c = (i + 1) * nc + k + 1, d = (i + 1) * nc + k;
+                int k1 = k + 1 == ncr ? 0 : k + 1;
+                int a = r0 + k, b = r0 + k1, c = r1 + k1, d = r1 + k;
                 ci[o++] = a; ci[o++] = b; ci[o++] = c;
                 ci[o++] = a; ci[o++] = c; ci[o++] = d;
             }
         }
-        if (begin) o = cap(p, 0, nc, capN, true, ci, o);
-        if (end) o = cap(p, (ns - 1) * nc, nc, capN, false, ci, o);
+        if (begin) o = cap(p, 0, capN, true, ci, o);
+        if (end) o = cap(p, (ns - 1) * ncr, capN, false, ci, o);
         TriGeometry t = new TriGeometry();
         t.fpoints = p;
         t.coordIndex = o == ci.length ? ci : Arrays.copyOf(ci, o);
@@ -266,7 +270,7 @@ final class GeometryBuilder {
      * k→k+1 and each end-ring edge k+1→k, so the begin cap runs the ring backwards and the end
      * cap forwards: then every cap edge meets its body edge in the opposite direction.
      */
-    private int cap(float[] p, int base, int nc, int capN, boolean reverse, int[] ci, int o) {
+    private int cap(float[] p, int base, int capN, boolean reverse, int[] ci, int o) {
         double[] poly = new double[3 * capN];
         int[] ring = new int[capN];
         for (int k = 0; k < capN; k++) {

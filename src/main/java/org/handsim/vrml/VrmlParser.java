@@ -603,7 +603,7 @@ final class VrmlParser {
         session.activeDepth = baseDepth + depth;
         ProtoDecl target;
         try {
-            target = session.resolveExternProto(text, urlAt, name, urls);
+            target = session.resolveExternProto(text, at, name, urls);
         } finally {
             session.activeDepth = savedDepth;
         }
