@@ -18,6 +18,8 @@ public final class HandSim implements Runnable {
 
     /** Every sub-command, in the order `handsim --help` lists them. */
     static final List<Class<?>> SUBCOMMANDS = List.of(
+        FkCommand.class,
+        IkCommand.class
         // sub-commands register here, one line each
         MeshCommand.class
     );

@@ -94,6 +94,28 @@ public final class RigidTransform {
         out[off + 8] = 0;   out[off + 9] = sa;       out[off + 10] = ca;      out[off + 11] = d;
     }
 
+    /**
+     * out = A · DH(θ, d, a, α): appends a DH link transform to {@code A} without a temporary
+     * (allocation-free; {@code out} must not overlap {@code A}'s 12 values).
+     */
+    public static void multiplyDh(double[] a, int ao, double theta, double d, double len, double alpha,
+                                  double[] out, int oo) {
+        double ct = Math.cos(theta), st = Math.sin(theta);
+        double ca = Math.cos(alpha), sa = Math.sin(alpha);
+        double c1x = -st * ca, c1y = ct * ca, c1z = sa;
+        double c2x = st * sa, c2y = -ct * sa, c2z = ca;
+        double c3x = len * ct, c3y = len * st, c3z = d;
+        for (int r = 0; r < 3; r++) {
+            int i = ao + 4 * r;
+            double a0 = a[i], a1 = a[i + 1], a2 = a[i + 2];
+            int o = oo + 4 * r;
+            out[o] = a0 * ct + a1 * st;
+            out[o + 1] = a0 * c1x + a1 * c1y + a2 * c1z;
+            out[o + 2] = a0 * c2x + a1 * c2y + a2 * c2z;
+            out[o + 3] = a0 * c3x + a1 * c3y + a2 * c3z + a[i + 3];
+        }
+    }
+
     /** out = A·B for 12-value row-major rigid transforms (allocation-free; out must not alias). */
     public static void multiply(double[] a, int ao, double[] b, int bo, double[] out, int oo) {
         for (int r = 0; r < 3; r++) {

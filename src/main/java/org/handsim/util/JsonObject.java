@@ -35,6 +35,9 @@ public final class JsonObject {
         return path.isEmpty() ? field : path + "." + field;
     }
 
+    /** The parsed value of a field as is (Map, List, Double, String, Boolean or null). */
+    public Object raw(String field) { return map.get(field); }
+
     public boolean has(String field) { return map.containsKey(field) && map.get(field) != null; }
 
     public Set<String> keys() { return map.keySet(); }

@@ -1,0 +1,107 @@
+package org.handsim.chart;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import org.handsim.sim.Recorder;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.axis.NumberAxis;
+import org.jfree.chart.plot.CombinedDomainXYPlot;
+import org.jfree.chart.plot.ValueMarker;
+import org.jfree.chart.plot.XYPlot;
+import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.chart.ui.RectangleAnchor;
+import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.xy.XYSeries;
+import org.jfree.data.xy.XYSeriesCollection;
+
+/**
+ * The paper's Fig. 7 (angle, velocity, acceleration and torque of joints k2 and k3 against time,
+ * the breakaway marked) and Fig. 8 (contact force on the finger against time), from a
+ * {@link Recorder}. Traces with more points than a chart can show are thinned to at most
+ * {@value #MAX_POINTS} points (every n-th row, keeping the last).
+ */
+public final class PaperCharts {
+    static final int MAX_POINTS = 4000;
+    static final Color J2 = new Color(0x1f77b4), J3 = new Color(0xd62728), BREAK = new Color(0x2ca02c);
+
+    private PaperCharts() {}
+
+    /** Fig. 7 for finger k; {@code breakawayTime} NaN for none. */
+    public static JFreeChart figure7(Recorder r, int k, double breakawayTime, String title) {
+        NumberAxis time = new NumberAxis("time t (s)");
+        CombinedDomainXYPlot plot = new CombinedDomainXYPlot(time);
+        plot.setGap(8);
+        plot.add(panel(r, k, Recorder.TH2, Recorder.TH3, "angle (deg)", Math.toDegrees(1), breakawayTime), 1);
+        plot.add(panel(r, k, Recorder.DTH2, Recorder.DTH3, "velocity (deg/s)", Math.toDegrees(1), breakawayTime), 1);
+        plot.add(panel(r, k, Recorder.DDTH2, Recorder.DDTH3, "acceleration (deg/s²)", Math.toDegrees(1), breakawayTime), 1);
+        plot.add(panel(r, k, Recorder.TAU2, Recorder.TAU3, "torque (N·m)", 1, breakawayTime), 1);
+        JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), plot, true);
+        chart.setBackgroundPaint(Color.WHITE);
+        return chart;
+    }
+
+    private static XYPlot panel(Recorder r, int k, int c2, int c3, String label, double scale, double tb) {
+        XYSeriesCollection data = new XYSeriesCollection();
+        data.addSeries(series(r, k, c2, "joint " + k + "2", scale));
+        data.addSeries(series(r, k, c3, "joint " + k + "3", scale));
+        NumberAxis y = new NumberAxis(label);
+        y.setAutoRangeIncludesZero(true);
+        XYPlot p = new XYPlot(data, null, y, renderer());
+        style(p);
+        mark(p, tb);
+        return p;
+    }
+
+    /** Fig. 8: total contact force on finger k against time. */
+    public static JFreeChart figure8(Recorder r, int k, double breakawayTime, String title) {
+        XYSeriesCollection data = new XYSeriesCollection();
+        XYSeries s = new XYSeries("contact force, finger " + k, false, true);
+        int step = Math.max(1, r.rows() / MAX_POINTS);
+        for (int row = 0; row < r.rows(); row += step) s.add(r.time(row), r.force(k, row), false);
+        if (r.rows() > 0) s.add(r.time(r.rows() - 1), r.force(k, r.rows() - 1), false);
+        data.addSeries(s);
+        NumberAxis x = new NumberAxis("time t (s)");
+        NumberAxis y = new NumberAxis("contact force (N)");
+        XYPlot p = new XYPlot(data, x, y, renderer());
+        style(p);
+        mark(p, breakawayTime);
+        JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), p, true);
+        chart.setBackgroundPaint(Color.WHITE);
+        return chart;
+    }
+
+    private static XYSeries series(Recorder r, int k, int c, String name, double scale) {
+        XYSeries s = new XYSeries(name, false, true);
+        int step = Math.max(1, r.rows() / MAX_POINTS);
+        for (int row = 0; row < r.rows(); row += step) s.add(r.time(row), r.get(k, c, row) * scale, false);
+        if (r.rows() > 0) s.add(r.time(r.rows() - 1), r.get(k, c, r.rows() - 1) * scale, false);
+        return s;
+    }
+
+    static XYLineAndShapeRenderer renderer() {
+        XYLineAndShapeRenderer rr = new XYLineAndShapeRenderer(true, false);
+        rr.setSeriesPaint(0, J2);
+        rr.setSeriesPaint(1, J3);
+        rr.setSeriesStroke(0, new BasicStroke(2f));
+        rr.setSeriesStroke(1, new BasicStroke(2f));
+        return rr;
+    }
+
+    static void style(XYPlot p) {
+        p.setBackgroundPaint(Color.WHITE);
+        p.setDomainGridlinePaint(new Color(0xdddddd));
+        p.setRangeGridlinePaint(new Color(0xdddddd));
+        p.getRangeAxis().setLabelFont(new Font("SansSerif", Font.PLAIN, 13));
+    }
+
+    private static void mark(XYPlot p, double tb) {
+        if (Double.isNaN(tb)) return;
+        ValueMarker m = new ValueMarker(tb, BREAK, new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+        m.setLabel(String.format("breakaway %.3f s", tb));
+        m.setLabelFont(new Font("SansSerif", Font.PLAIN, 11));
+        m.setLabelAnchor(RectangleAnchor.TOP_RIGHT);
+        m.setLabelTextAnchor(TextAnchor.TOP_LEFT);
+        p.addDomainMarker(m);
+    }
+}

@@ -1,0 +1,42 @@
+package org.handsim.cli;
+
+/** Parsing of the comma-separated numeric arguments the sub-commands share. */
+final class Args {
+    private Args() {}
+
+    /**
+     * Parses {@code "a,b,c"} into exactly {@code n} finite numbers.
+     *
+     * @throws CliError (exit 2) naming the option and the bad value
+     */
+    static double[] numbers(String option, String text, int n) {
+        if (text == null) throw CliError.usage("handsim: missing " + option);
+        String[] parts = text.split(",", -1);
+        if (parts.length != n) {
+            throw CliError.usage("handsim: " + option + " needs " + n + " comma-separated numbers, got '" + text + "'");
+        }
+        double[] out = new double[n];
+        for (int i = 0; i < n; i++) {
+            try {
+                out[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException e) {
+                throw CliError.usage("handsim: " + option + ": '" + parts[i] + "' is not a number");
+            }
+            if (!Double.isFinite(out[i])) throw CliError.usage("handsim: " + option + ": '" + parts[i] + "' is not finite");
+        }
+        return out;
+    }
+
+    /** Checks a finger number. */
+    static int finger(Integer k) {
+        if (k == null) throw CliError.usage("handsim: missing --finger (1, 2 or 3)");
+        if (k < 1 || k > 3) throw CliError.usage("handsim: --finger must be 1, 2 or 3, got " + k);
+        return k;
+    }
+
+    /** Formats a number for CSV output: shortest round-trip text; refuses non-finite values. */
+    static String csv(double d) {
+        if (!Double.isFinite(d)) throw new IllegalStateException("refusing to write non-finite value " + d);
+        return Double.toString(d);
+    }
+}

@@ -1,0 +1,122 @@
+package org.handsim.cli;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.handsim.kinematics.FingerKinematics;
+import org.handsim.kinematics.Transmission;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.CsvInput;
+import org.handsim.util.JsonWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code handsim fk}: forward kinematics of one finger, or of every row of a CSV file. */
+@Command(name = "fk", mixinStandardHelpOptions = true,
+    description = {"Forward kinematics (paper Section II.A): the origins of frames {k0}..{k3} and the fingertip.",
+        "Prints {\"finger\":K,\"frame\":\"base\",\"joints\":[t1,t2,t3],\"origins\":[[x,y,z] x4],\"fingertip\":[x,y,z]}",
+        "(metres; joints in radians). Bulk: --input IN.csv (header finger,t1,t2,t3) --output OUT.csv",
+        "adds o0x,o0y,o0z,...,o3z in the base frame."})
+public final class FkCommand implements Callable<Integer> {
+    static final String IN_HEADER = "finger,t1,t2,t3";
+    static final String OUT_HEADER = IN_HEADER + ",o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--finger", paramLabel = "K", description = "finger 1, 2 or 3")
+    Integer finger;
+
+    @Option(names = "--joints", paramLabel = "t1,t2,t3", description = "joint angles in radians (finger 3: t1 = 0)")
+    String joints;
+
+    @Option(names = "--counts", paramLabel = "q[,qSpread]", description = "motor encoder counts: q_Mk in [0, 17500], optional spread q_M4 in [0, 3150]")
+    String counts;
+
+    @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the output: finger base {k0} (default) or palm {P}")
+    String frame;
+
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    Path input;
+
+    @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
+    Path output;
+
+    @Override
+    public Integer call() throws IOException {
+        if (!frame.equals("base") && !frame.equals("palm")) throw CliError.usage("handsim: --frame must be base or palm, got '" + frame + "'");
+        if (input != null || output != null) return bulk();
+        int k = Args.finger(finger);
+        double[] j;
+        if ((joints == null) == (counts == null)) throw CliError.usage("handsim: give exactly one of --joints or --counts");
+        if (joints != null) {
+            j = Args.numbers("--joints", joints, 3);
+        } else {
+            String[] p = counts.split(",", -1);
+            if (p.length < 1 || p.length > 2) throw CliError.usage("handsim: --counts needs q or q,qSpread, got '" + counts + "'");
+            double[] q = Args.numbers("--counts", counts, p.length);
+            try {
+                j = Transmission.barrettHand().joints(k, q[0], p.length == 2 ? q[1] : 0, null);
+            } catch (IllegalArgumentException e) {
+                throw CliError.usage("handsim: --counts: " + e.getMessage());
+            }
+        }
+        double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
+        try {
+            FingerKinematics fk = FingerKinematics.of(k);
+            if (frame.equals("palm")) fk.framesInPalm(j, frames); else fk.frames(j, frames);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: --joints: " + e.getMessage());
+        }
+        double[][] origins = new double[4][];
+        for (int i = 0; i < 4; i++) origins[i] = new double[] {frames[12 * i + 3], frames[12 * i + 7], frames[12 * i + 11]};
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("finger", k);
+        out.put("frame", frame);
+        out.put("joints", j);
+        out.put("origins", origins);
+        out.put("fingertip", origins[3]);
+        spec.commandLine().getOut().println(JsonWriter.write(out));
+        return 0;
+    }
+
+    private int bulk() throws IOException {
+        if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
+        if (finger != null || joints != null || counts != null) throw CliError.usage("handsim: --input/--output cannot be combined with --finger, --joints or --counts");
+        FingerKinematics[] fks = {FingerKinematics.of(1), FingerKinematics.of(2), FingerKinematics.of(3)};
+        double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
+        double[] j = new double[3];
+        int rows = 0;
+        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
+            Writer w = af.writer();
+            w.write(OUT_HEADER);
+            w.write('\n');
+            while (in.next()) {
+                int k = in.integer(0);
+                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
+                for (int i = 0; i < 3; i++) j[i] = in.number(i + 1);
+                try {
+                    if (frame.equals("palm")) fks[k - 1].framesInPalm(j, frames); else fks[k - 1].frames(j, frames);
+                } catch (IllegalArgumentException e) {
+                    throw in.error(e.getMessage());
+                }
+                StringBuilder sb = new StringBuilder();
+                sb.append(k).append(',').append(in.text(1)).append(',').append(in.text(2)).append(',').append(in.text(3));
+                for (int f = 0; f < 4; f++) {
+                    for (int c = 0; c < 3; c++) sb.append(',').append(Args.csv(frames[12 * f + 4 * c + 3]));
+                }
+                w.write(sb.append('\n').toString());
+                rows++;
+            }
+            af.commit();
+        } catch (CsvInput.CsvException e) {
+            throw CliError.usage("handsim: " + e.getMessage());
+        }
+        spec.commandLine().getErr().println("handsim fk: " + rows + " rows written to " + output);
+        return 0;
+    }
+}

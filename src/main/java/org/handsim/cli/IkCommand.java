@@ -1,0 +1,90 @@
+package org.handsim.cli;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.handsim.kinematics.IkResult;
+import org.handsim.kinematics.InverseKinematics;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.CsvInput;
+import org.handsim.util.JsonWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code handsim ik}: inverse kinematics of one finger, or of every row of a CSV file. */
+@Command(name = "ik", mixinStandardHelpOptions = true,
+    description = {"Inverse kinematics (paper eqs 5-7) with joint limits and the closest reachable point.",
+        "Prints {\"reachable\":true|false,\"joints\":[t1,t2,t3],\"fingertip\":[x,y,z],\"error_m\":e}",
+        "(metres, radians; fingertip in the target's frame; unreachable: the closest reachable point).",
+        "Bulk: --input IN.csv (header finger,x,y,z) --output OUT.csv adds reachable,t1,t2,t3,error_m."})
+public final class IkCommand implements Callable<Integer> {
+    static final String IN_HEADER = "finger,x,y,z";
+    static final String OUT_HEADER = IN_HEADER + ",reachable,t1,t2,t3,error_m";
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--finger", paramLabel = "K", description = "finger 1, 2 or 3")
+    Integer finger;
+
+    @Option(names = "--target", paramLabel = "x,y,z", description = "fingertip target in metres")
+    String target;
+
+    @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the target: finger base {k0} (default) or palm {P}")
+    String frame;
+
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    Path input;
+
+    @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
+    Path output;
+
+    @Override
+    public Integer call() throws IOException {
+        if (!frame.equals("base") && !frame.equals("palm")) throw CliError.usage("handsim: --frame must be base or palm, got '" + frame + "'");
+        if (input != null || output != null) return bulk();
+        int k = Args.finger(finger);
+        double[] t = Args.numbers("--target", target, 3);
+        InverseKinematics ik = InverseKinematics.of(k);
+        IkResult r = frame.equals("palm") ? ik.solveInPalm(t) : ik.solve(t);
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("reachable", r.reachable());
+        out.put("joints", r.joints());
+        out.put("fingertip", r.fingertip());
+        out.put("error_m", r.errorM());
+        spec.commandLine().getOut().println(JsonWriter.write(out));
+        return 0;
+    }
+
+    private int bulk() throws IOException {
+        if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
+        if (finger != null || target != null) throw CliError.usage("handsim: --input/--output cannot be combined with --finger or --target");
+        InverseKinematics[] iks = {InverseKinematics.of(1), InverseKinematics.of(2), InverseKinematics.of(3)};
+        int rows = 0;
+        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
+            Writer w = af.writer();
+            w.write(OUT_HEADER);
+            w.write('\n');
+            double[] t = new double[3];
+            while (in.next()) {
+                int k = in.integer(0);
+                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
+                for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
+                IkResult r = frame.equals("palm") ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
+                double[] j = r.joints();
+                w.write(k + "," + in.text(1) + "," + in.text(2) + "," + in.text(3) + "," + r.reachable() + ","
+                    + Args.csv(j[0]) + "," + Args.csv(j[1]) + "," + Args.csv(j[2]) + "," + Args.csv(r.errorM()) + "\n");
+                rows++;
+            }
+            af.commit();
+        } catch (CsvInput.CsvException e) {
+            throw CliError.usage("handsim: " + e.getMessage());
+        }
+        spec.commandLine().getErr().println("handsim ik: " + rows + " rows written to " + output);
+        return 0;
+    }
+}

@@ -1,0 +1,125 @@
+package org.handsim.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.handsim.chart.ChartExport;
+import org.handsim.chart.PaperCharts;
+import org.handsim.sim.HandModel;
+import org.handsim.sim.Home;
+import org.handsim.sim.RunSummary;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.ScenarioException;
+import org.handsim.sim.Simulation;
+import org.handsim.sim.SimulationException;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.JsonWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code handsim run}: the main job. */
+@Command(name = "run", mixinStandardHelpOptions = true,
+    description = {"Runs a scenario (default: the paper's breakaway experiment, scenarios/paper-breakaway.json)",
+        "and writes trace.csv, summary.json and the paper's Fig. 7 and Fig. 8 (PNG and SVG) into",
+        "out/<scenario name>/ (or --out DIR). Nothing is written if the run fails."})
+public final class RunCommand implements Callable<Integer> {
+    @Spec CommandSpec spec;
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENARIO", description = "scenario JSON file")
+    Path scenarioFile;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "output folder (default out/<scenario name>)")
+    Path out;
+
+    @Option(names = "--dt", paramLabel = "S", description = "override the scenario's time step, seconds")
+    Double dt;
+
+    @Option(names = "--no-charts", description = "skip the charts")
+    boolean noCharts;
+
+    @Override
+    public Integer call() throws IOException {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter stdout = spec.commandLine().getOut();
+        Path file = scenarioFile != null ? scenarioFile : Home.paperScenario();
+        Scenario scenario = loadScenario(file);
+        if (dt != null) {
+            if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
+            scenario = scenario.withDt(dt);
+        }
+        Path dir = out != null ? out : Path.of("out", scenario.name());
+        long t0 = System.nanoTime();
+        HandModel model = Simulation.model(scenario, true);
+        double setup = (System.nanoTime() - t0) / 1e9;
+        long t1 = System.nanoTime();
+        try {
+            model.run(new ProgressBar(err, "handsim run " + scenario.name()));
+        } catch (SimulationException e) {
+            throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
+        }
+        double wall = (System.nanoTime() - t1) / 1e9;
+        Map<String, Object> summary = RunSummary.of(model, wall);
+        summary.put("setup_time_s", setup);
+        List<String> written = new ArrayList<>();
+        if (scenario.writeTrace()) {
+            model.recorder().writeCsv(dir.resolve("trace.csv"));
+            written.add("trace.csv");
+        }
+        if (scenario.writeCharts() && !noCharts) {
+            for (int k = 1; k <= 3; k++) {
+                if (!moved(model, k)) continue;
+                String name = "finger " + k + ", " + scenario.name();
+                ChartExport.write(PaperCharts.figure7(model.recorder(), k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
+                    dir.resolve("fig7_finger" + k), 900, 1100);
+                ChartExport.write(PaperCharts.figure8(model.recorder(), k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
+                    dir.resolve("fig8_finger" + k), 900, 450);
+                written.add("fig7_finger" + k + ".png/.svg");
+                written.add("fig8_finger" + k + ".png/.svg");
+            }
+        }
+        AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
+        written.add("summary.json");
+        stdout.println(headline(model, wall));
+        stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
+        return 0;
+    }
+
+    static Scenario loadScenario(Path file) {
+        try {
+            return Scenario.load(file);
+        } catch (ScenarioException e) {
+            throw new CliError(CliError.LOAD, e.getMessage());
+        }
+    }
+
+    private static boolean moved(HandModel m, int k) {
+        var r = m.recorder();
+        double q0 = r.get(k, org.handsim.sim.Recorder.Q, 0);
+        for (int row = 1; row < r.rows(); row++) if (r.get(k, org.handsim.sim.Recorder.Q, row) != q0) return true;
+        return false;
+    }
+
+    static String headline(HandModel m, double wall) {
+        StringBuilder sb = new StringBuilder();
+        sb.append(String.format(Locale.ROOT, "%s: %.3f s simulated in %d steps, %.3f s wall (%.0f steps/s, %.0fx real time)",
+            m.scenario().name(), m.time(), m.stepIndex(), wall, m.stepIndex() / wall, m.time() / wall));
+        for (int k = 1; k <= 3; k++) {
+            if (!Double.isNaN(m.breakawayTime(k))) {
+                sb.append(String.format(Locale.ROOT, "%n  finger %d: breakaway at t = %.4f s, tau%d2 = %.3f N*m, contact force %.2f N",
+                    k, m.breakawayTime(k), k, m.breakawayTorque(k), m.breakawayForce(k)));
+            }
+            if (m.maxContactForce(k) > 0) {
+                sb.append(String.format(Locale.ROOT, "%n  finger %d: max contact force %.2f N, final state %s", k, m.maxContactForce(k), m.state(k)));
+            }
+        }
+        return sb.toString();
+    }
+}

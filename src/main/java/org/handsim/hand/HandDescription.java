@@ -1,0 +1,204 @@
+package org.handsim.hand;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.handsim.math.RigidTransform;
+import org.handsim.util.Json;
+import org.handsim.util.JsonObject;
+
+/**
+ * The whole hand, loaded from a description file (JSON). {@link #barrettHand()} is the
+ * BarrettHand BH8-262 from the bundled resource {@code barretthand.json}; {@link #parse} loads
+ * any file of the same form, e.g. a hand with modified parameters for a study.
+ *
+ * <p>Validation: a missing field, a non-finite number, a negative or zero mass or length, or
+ * an inertia tensor that is not positive definite is a {@link HandDescriptionException}
+ * naming the file and the field path (e.g. {@code mass_properties.links[1].inertia_kgm2}).
+ *
+ * <p>Units inside: metres, radians, kg. The file holds degrees and encoder counts (the edges,
+ * DESIGN.md "Conventions"), converted here, once.
+ *
+ * <p>Immutable and thread-safe.
+ */
+public final class HandDescription {
+    private static final String RESOURCE = "barretthand.json";
+    private static volatile HandDescription barrett;
+
+    private final String name;
+    private final FingerDescription[] fingers;
+    private final double a1, a2, a3;
+    private final double palmAw, palmDw;
+    private final double innerCountsPerDeg, outerCountsPerDeg;
+    private final int fingerCountsMax, spreadCountsMax;
+    private final double[] theta2Limits, theta3Limits, spreadLimits;
+    private final double tauBreak, kClutch;
+
+    private HandDescription(JsonObject root) {
+        name = root.string("name");
+        JsonObject links = root.object("links");
+        a1 = positiveLength(links, "A1_m");
+        a2 = positiveLength(links, "A2_m");
+        a3 = positiveLength(links, "A3_m");
+        double[] alpha = {rad(links.number("alpha1_deg")), rad(links.number("alpha2_deg")), rad(links.number("alpha3_deg"))};
+        double[] d = {links.number("d1_m"), links.number("d2_m"), links.number("d3_m")};
+        double phi2 = rad(links.number("phi2_deg"));
+        double phi3 = rad(links.number("phi3_deg"));
+        DhRow[] dh = {
+            new DhRow(a1, alpha[0], d[0], 0.0),
+            new DhRow(a2, alpha[1], d[1], phi2),
+            new DhRow(a3, alpha[2], d[2], phi3)};
+
+        JsonObject palm = root.object("palm");
+        palmAw = palm.nonNegative("Aw_m");
+        palmDw = palm.number("Dw_m");
+
+        JsonObject tr = root.object("transmission");
+        innerCountsPerDeg = tr.positive("inner_counts_per_deg");
+        outerCountsPerDeg = tr.positive("outer_counts_per_deg");
+        fingerCountsMax = tr.integer("finger_counts_max");
+        spreadCountsMax = tr.integer("spread_counts_max");
+        if (fingerCountsMax <= 0) throw new HandDescriptionException(tr.error("finger_counts_max", "must be > 0").getMessage());
+        if (spreadCountsMax <= 0) throw new HandDescriptionException(tr.error("spread_counts_max", "must be > 0").getMessage());
+
+        JsonObject lim = root.object("joint_limits_deg");
+        theta2Limits = range(lim, "theta2");
+        theta3Limits = range(lim, "theta3");
+        spreadLimits = range(lim, "spread");
+
+        JsonObject mp = root.object("mass_properties");
+        if (mp.list("links").size() != 3) throw new HandDescriptionException(mp.error("links", "must list exactly 3 links").getMessage());
+        LinkInertia[] inertias = new LinkInertia[3];
+        for (int j = 0; j < 3; j++) inertias[j] = linkInertia(mp.objectAt("links", j));
+
+        int nf = root.list("fingers").size();
+        if (nf != 3) throw new HandDescriptionException(root.error("fingers", "must list exactly 3 fingers, got " + nf).getMessage());
+        fingers = new FingerDescription[3];
+        for (int i = 0; i < 3; i++) {
+            JsonObject f = root.objectAt("fingers", i);
+            int k = f.integer("finger");
+            if (k != i + 1) throw new HandDescriptionException(f.error("finger", "must be " + (i + 1) + ", got " + k).getMessage());
+            int rTable = f.integer("r_table1");
+            if (rTable != 0 && rTable != 1) throw new HandDescriptionException(f.error("r_table1", "must be 0 or 1, got " + rTable).getMessage());
+            double rPalm = f.number("r_palm");
+            double jPalm = f.number("j_palm");
+            // BH8 manual Table 9: spread axis at x = r*Aw, height Dw, base turned by -(pi/2)*j about z.
+            RigidTransform base = RigidTransform.translation(rPalm * palmAw, 0, palmDw)
+                .compose(RigidTransform.rotZ(-Math.PI / 2 * jPalm));
+            double spreadPerCount = rad(f.number("spread_deg_per_count"));
+            if (rTable == 0 && spreadPerCount != 0) {
+                throw new HandDescriptionException(f.error("spread_deg_per_count", "must be 0 for a finger without spread (r_table1 = 0)").getMessage());
+            }
+            fingers[i] = new FingerDescription(k, dh, base, rTable == 1, spreadPerCount, inertias);
+        }
+
+        JsonObject clutch = root.object("clutch");
+        tauBreak = clutch.positive("tau_break_Nm");
+        kClutch = clutch.positive("k_clutch_Nm_per_rad");
+    }
+
+    /** The BarrettHand BH8-262 from the bundled resource (loaded once, shared). */
+    public static HandDescription barrettHand() {
+        HandDescription h = barrett;
+        if (h == null) {
+            try (InputStream in = HandDescription.class.getResourceAsStream(RESOURCE)) {
+                if (in == null) throw new IllegalStateException("resource " + RESOURCE + " is missing from the classpath");
+                h = parse(RESOURCE, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            } catch (IOException e) {
+                throw new IllegalStateException("cannot read resource " + RESOURCE, e);
+            }
+            barrett = h;
+        }
+        return h;
+    }
+
+    /** Loads a description file. */
+    public static HandDescription load(Path file) throws IOException {
+        return parse(file.toString(), Files.readString(file));
+    }
+
+    /**
+     * Parses description text; {@code source} names it in error messages.
+     *
+     * @throws HandDescriptionException naming the file, line/column or field path
+     */
+    public static HandDescription parse(String source, String text) {
+        try {
+            return new HandDescription(JsonObject.parse(source, text));
+        } catch (Json.JsonException e) {
+            throw new HandDescriptionException(e.getMessage());
+        }
+    }
+
+    private static double rad(double deg) {
+        return Math.toRadians(deg);
+    }
+
+    private static double positiveLength(JsonObject o, String field) {
+        try {
+            return o.positive(field);
+        } catch (Json.JsonException e) {
+            throw new HandDescriptionException(e.getMessage());
+        }
+    }
+
+    private static double[] range(JsonObject o, String field) {
+        double[] r = o.numbers(field, 2);
+        if (!(r[0] < r[1])) throw new HandDescriptionException(o.error(field, "lower limit must be below the upper, got " + r[0] + ", " + r[1]).getMessage());
+        return new double[] {rad(r[0]), rad(r[1])};
+    }
+
+    private static LinkInertia linkInertia(JsonObject l) {
+        double m = l.number("mass_kg");
+        if (!(m > 0)) throw new HandDescriptionException(l.error("mass_kg", "must be > 0, got " + m).getMessage());
+        double[] com = l.numbers("com_m", 3);
+        JsonObject in = l.object("inertia_kgm2");
+        double[] t = {in.number("xx"), in.number("xy"), in.number("xz"), in.number("yy"), in.number("yz"), in.number("zz")};
+        // Positive definite by Sylvester's criterion (leading principal minors > 0).
+        double m1 = t[0];
+        double m2 = t[0] * t[3] - t[1] * t[1];
+        double m3 = t[0] * (t[3] * t[5] - t[4] * t[4]) - t[1] * (t[1] * t[5] - t[4] * t[2]) + t[2] * (t[1] * t[4] - t[3] * t[2]);
+        if (!(m1 > 0 && m2 > 0 && m3 > 0)) {
+            throw new HandDescriptionException(l.error("inertia_kgm2", "is not positive definite (leading minors "
+                + m1 + ", " + m2 + ", " + m3 + ")").getMessage());
+        }
+        return new LinkInertia(m, com, t);
+    }
+
+    public String name() { return name; }
+
+    /** @param k finger number 1, 2 or 3 */
+    public FingerDescription finger(int k) {
+        if (k < 1 || k > 3) throw new IllegalArgumentException("finger must be 1, 2 or 3, got " + k);
+        return fingers[k - 1];
+    }
+
+    /** Link lengths A1, A2, A3 (metres, Table II). */
+    public double a1() { return a1; }
+    public double a2() { return a2; }
+    public double a3() { return a3; }
+    /** Palm placement (metres, BH8 manual Table 9). */
+    public double palmAw() { return palmAw; }
+    public double palmDw() { return palmDw; }
+    /** Encoder counts per degree of the inner joint (125, eq 3) and outer joint (375, eq 4). */
+    public double innerCountsPerDeg() { return innerCountsPerDeg; }
+    public double outerCountsPerDeg() { return outerCountsPerDeg; }
+    /** Count ranges: q_Mk ∈ [0, fingerCountsMax], q_M4 ∈ [0, spreadCountsMax]. */
+    public int fingerCountsMax() { return fingerCountsMax; }
+    public int spreadCountsMax() { return spreadCountsMax; }
+    /** Joint limits of θk2, θk3 and of the spread magnitude |θk1|, radians {lo, hi} (new arrays). */
+    public double[] theta2Limits() { return theta2Limits.clone(); }
+    public double[] theta3Limits() { return theta3Limits.clone(); }
+    public double[] spreadLimits() { return spreadLimits.clone(); }
+    /** Breakaway threshold τ_break in N·m (Section V). */
+    public double tauBreak() { return tauBreak; }
+    /** Clutch (Belleville spring) stiffness k_clutch in N·m/rad (DESIGN.md decision 1). */
+    public double kClutch() { return kClutch; }
+
+    @Override
+    public String toString() {
+        return "HandDescription[" + name + "]";
+    }
+}

@@ -1,0 +1,433 @@
+package org.handsim.sim;
+
+import org.handsim.contact.ContactForces;
+import org.handsim.hand.HandDescription;
+import org.handsim.kinematics.FingerKinematics;
+import org.handsim.kinematics.Transmission;
+import org.handsim.math.RigidTransform;
+import org.handsim.sim.trajectory.Trajectory;
+
+/**
+ * The HandSim model, Easy-Java-Simulations style: read it top to bottom.
+ * <ol>
+ *   <li><b>Parameters</b> — fixed for a run: the scenario, the hand, the collision and dynamics
+ *       back ends.</li>
+ *   <li><b>State variables</b> — time, per finger the clutch state, joint angles, velocities,
+ *       accelerations, torques and contacts.</li>
+ *   <li>{@link #initialise()} — puts the state at t = 0.</li>
+ *   <li>{@link #step()} — advances one time step dt. One step (DESIGN.md, "Data flow"):
+ *       motor set-points q_Mk(t) → clutch state machine → joint angles, velocities and
+ *       accelerations → forward kinematics → link meshes placed → collision with the object →
+ *       patches → point contacts → joint torques (Lagrange–Euler plus the clutch spring) →
+ *       contact forces (eq 11 as least squares) → breakaway test (eq 9) → next state.</li>
+ *   <li><b>Fixed relations</b> — the private methods {@link #placeFinger}, {@link #collide},
+ *       {@link #torquesAndForces} that the step calls.</li>
+ * </ol>
+ *
+ * <p><b>Events inside a step.</b> The first touch of a closing finger and the breakaway are
+ * located inside the step (bisection on the motor count for the touch, linear interpolation of
+ * the linearly rising torque for the breakaway), so their times do not depend on dt.
+ *
+ * <p><b>Work saved.</b> A finger whose joints and placement did not change since its last
+ * collision query reuses its contacts (held fingers in BLOCKED or STALLED, fingers at rest);
+ * its dynamics likewise. {@link #counters()} counts both.
+ *
+ * <p>Not thread-safe: one thread steps a model; views read {@link #snapshot()} copies.
+ */
+public final class HandModel {
+    // ------------------------------------------------------------------ parameters
+    private final Scenario scenario;
+    private final HandDescription hand = HandDescription.barrettHand();
+    private final Transmission tr = new Transmission(hand);
+    private final LinkContacts objectContacts;      // null: no object in the scene
+    private final TorqueModel dynamics;
+    private final FingerKinematics[] fk = new FingerKinematics[3];
+    private final double[] worldFromPalm = new double[12];
+    private final double[][] gravityK0 = new double[3][3];
+    private final double dt;
+    private final long totalSteps;
+    private final Recorder recorder;                // null: not recording
+
+    // ------------------------------------------------------------------ state variables
+    private long step;
+    private double t;
+    private final FingerClutch[] clutch = new FingerClutch[3];
+    private final double[][] q = new double[3][3], qd = new double[3][3], qdd = new double[3][3];
+    private final double[][] tau = new double[3][3], tauDyn = new double[3][3];
+    private final double[] motorPrev = new double[3];
+    private final double[] motorVel = new double[3], motorAcc = new double[3];
+    private double spread, spreadVel, spreadAcc;
+    private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
+    private final double[][] framesWorld = new double[3][48];
+    private final double[][] collidedAt = new double[3][3];   // joints of the last collision query
+    private final boolean[] collidedValid = new boolean[3];
+    private final double[][] dynAt = new double[3][9];        // q, qd, qdd of the last dynamics call
+    private final boolean[] dynValid = new boolean[3];
+    // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
+    private final double[] lastT = new double[3], lastQ = new double[3], lastTau = new double[3];
+    // results
+    private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3], contactQ = new double[3];
+    private final double[] maxForce = new double[3];
+    private final long[] counters = new long[Counter.values().length];
+
+    // scratch (no allocation in the step)
+    private final ContactForces solver = new ContactForces();
+    private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
+    private final double[] eventJoints = new double[3];
+    private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
+
+    /** Work counters, for the savings table (issue 8). */
+    public enum Counter { STEPS, FINGER_UPDATES, COLLISION_QUERIES, COLLISIONS_SKIPPED, DYNAMICS_CALLS, DYNAMICS_SKIPPED, EVENT_QUERIES }
+
+    /**
+     * @param scenario       what to simulate
+     * @param objectContacts the collision back end, or null when the scene has no object
+     * @param dynamics       the inverse dynamics ({@link TorqueModel#NONE} for kinematics only)
+     * @param record         whether to keep a trace (one row per step)
+     */
+    public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, boolean record) {
+        this.scenario = scenario;
+        this.objectContacts = objectContacts;
+        this.dynamics = dynamics;
+        this.dt = scenario.dt();
+        this.totalSteps = Math.round(Math.ceil(scenario.duration() / dt - 1e-9));
+        this.recorder = record ? new Recorder() : null;
+        scenario.worldFromPalm().copyTo(worldFromPalm, 0);
+        double[] g = scenario.gravity();
+        for (int k = 1; k <= 3; k++) {
+            fk[k - 1] = new FingerKinematics(hand.finger(k));
+            clutch[k - 1] = new FingerClutch(tr, hand.kClutch(), hand.tauBreak(), hand.theta3Limits()[1]);
+            // gravity in {k0}: (R_world<-palm · R_palm<-k0)ᵀ g
+            RigidTransform worldFromK0 = scenario.worldFromPalm().compose(hand.finger(k).baseInPalm());
+            worldFromK0.inverse().rotate(g, gravityK0[k - 1]);
+        }
+        initialise();
+    }
+
+    // ------------------------------------------------------------------ initialisation
+    /** Puts the model at t = 0: motors at their start counts, fingers FREE, nothing recorded. */
+    public void initialise() {
+        step = 0;
+        t = 0;
+        if (recorder != null) recorder.clear();
+        java.util.Arrays.fill(counters, 0);
+        sampleSpread(0);
+        for (int k = 1; k <= 3; k++) {
+            int i = k - 1;
+            Trajectory m = scenario.motor(i);
+            m.sample(0, sample);
+            clutch[i].reset(sample[0]);
+            motorPrev[i] = sample[0];
+            motorVel[i] = sample[1];
+            motorAcc[i] = sample[2];
+            collidedValid[i] = false;
+            dynValid[i] = false;
+            breakTime[i] = Double.NaN;
+            breakTorque[i] = Double.NaN;
+            breakForce[i] = Double.NaN;
+            breakQ[i] = Double.NaN;
+            contactQ[i] = Double.NaN;
+            maxForce[i] = 0;
+            updateFinger(k, false);
+        }
+        record();
+    }
+
+    // ------------------------------------------------------------------ evolution
+    /** Advances one step of dt seconds. */
+    public void step() {
+        step++;
+        t = step * dt;
+        counters[Counter.STEPS.ordinal()]++;
+        sampleSpread(t);
+        for (int k = 1; k <= 3; k++) {
+            int i = k - 1;
+            scenario.motor(i).sample(t, sample);
+            motorPrev[i] = clutch[i].motor();
+            motorVel[i] = sample[1];
+            motorAcc[i] = sample[2];
+            clutch[i].follow(sample[0]);
+            updateFinger(k, true);
+        }
+        record();
+    }
+
+    /** @return true while the scenario's duration has not been reached */
+    public boolean running() {
+        return step < totalSteps;
+    }
+
+    /** Runs to the end; {@code progress} (may be null) is told the fraction done now and then. */
+    public void run(java.util.function.DoubleConsumer progress) {
+        long every = Math.max(1, totalSteps / 200);
+        while (running()) {
+            step();
+            if (progress != null && step % every == 0) progress.accept(step / (double) totalSteps);
+        }
+        if (progress != null) progress.accept(1.0);
+    }
+
+    private void sampleSpread(double time) {
+        scenario.motor(3).sample(time, sample);
+        spread = sample[0];
+        spreadVel = sample[1];
+        spreadAcc = sample[2];
+    }
+
+    /** One finger through the whole chain of the step. */
+    private void updateFinger(int k, boolean events) {
+        int i = k - 1;
+        counters[Counter.FINGER_UPDATES.ordinal()]++;
+        placeFinger(k);
+        collide(k);
+        if (events && locateFirstTouch(k)) {
+            placeFinger(k);
+            collide(k);
+        }
+        torquesAndForces(k);
+        if (events && breakawayTest(k)) {
+            placeFinger(k);
+            collide(k);
+            torquesAndForces(k);
+        }
+        guard(k);
+    }
+
+    // ------------------------------------------------------------------ fixed relations
+    /** Joint angles, velocities and accelerations from the clutch; frames by forward kinematics. */
+    private void placeFinger(int k) {
+        int i = k - 1;
+        FingerClutch c = clutch[i];
+        double spreadRate = hand.finger(k).spreadRadPerCount();
+        q[i][0] = spreadRate * spread;
+        q[i][1] = c.theta2();
+        q[i][2] = c.theta3();
+        c.jointRates(rates);
+        qd[i][0] = spreadRate * spreadVel;
+        qdd[i][0] = spreadRate * spreadAcc;
+        boolean moving = c.state() == ClutchState.FREE || c.state() == ClutchState.BROKEN;
+        qd[i][1] = moving ? rates[0] * motorVel[i] : 0;
+        qd[i][2] = moving ? rates[1] * motorVel[i] : 0;
+        qdd[i][1] = moving ? rates[0] * motorAcc[i] : 0;
+        qdd[i][2] = moving ? rates[1] * motorAcc[i] : 0;
+        framesInWorld(k, q[i], framesWorld[i]);
+    }
+
+    private void framesInWorld(int k, double[] joints, double[] out) {
+        fk[k - 1].framesInPalm(joints, frameScratch);
+        for (int j = 0; j < 4; j++) RigidTransform.multiply(worldFromPalm, 0, frameScratch, 12 * j, out, 12 * j);
+    }
+
+    /** Point contacts of the finger's three links with the object (reused if nothing moved). */
+    private void collide(int k) {
+        int i = k - 1;
+        if (objectContacts == null) return;
+        if (collidedValid[i] && collidedAt[i][0] == q[i][0] && collidedAt[i][1] == q[i][1] && collidedAt[i][2] == q[i][2]) {
+            counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
+            return;
+        }
+        ContactSet cs = contacts[i];
+        cs.clear();
+        for (int j = 1; j <= 3; j++) {
+            System.arraycopy(framesWorld[i], 12 * j, linkScratch, 0, 12);
+            objectContacts.collide(k, j, linkScratch, cs);
+            counters[Counter.COLLISION_QUERIES.ordinal()]++;
+        }
+        System.arraycopy(q[i], 0, collidedAt[i], 0, 3);
+        collidedValid[i] = true;
+    }
+
+    /**
+     * A closing FREE finger (or a BROKEN one's outer link) that touches the object: locate the
+     * first-touch motor count by bisection between the previous and the current count, then
+     * change state (inner link → BLOCKED, outer link → STALLED). Returns true if the state changed.
+     */
+    private boolean locateFirstTouch(int k) {
+        int i = k - 1;
+        FingerClutch c = clutch[i];
+        ContactSet cs = contacts[i];
+        double qNow = c.motor(), qBefore = motorPrev[i];
+        if (objectContacts == null || qNow <= qBefore) return false;
+        boolean inner = c.state() == ClutchState.FREE && cs.touches(2);
+        boolean outer = (c.state() == ClutchState.FREE || c.state() == ClutchState.BROKEN) && cs.touches(3);
+        if (!inner && !outer) return false;
+        double lo = qBefore, hi = qNow;
+        double[] joints = eventJoints;
+        for (int it = 0; it < 40 && hi - lo > 1e-6; it++) {
+            double mid = 0.5 * (lo + hi);
+            if (touchesAt(k, mid, joints) != 0) hi = mid; else lo = mid;
+        }
+        int which = touchesAt(k, hi, joints);
+        if (which == 0) which = inner ? 2 : 3;
+        double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
+        if (which == 2 && c.state() == ClutchState.FREE) {
+            c.innerContact(hi);
+            if (Double.isNaN(contactQ[i])) contactQ[i] = hi;
+            lastT[i] = tTouch;
+            lastQ[i] = hi;
+            lastTau[i] = 0;
+        } else {
+            c.outerContact(hi);
+        }
+        return true;
+    }
+
+    /** 2 if the inner link, 3 if the outer link touches at motor count q (state unchanged), else 0. */
+    private int touchesAt(int k, double qm, double[] joints) {
+        int i = k - 1;
+        joints[0] = q[i][0];
+        joints[1] = clutch[i].theta2For(qm);
+        joints[2] = clutch[i].theta3For(qm);
+        framesInWorld(k, joints, frameScratch);
+        counters[Counter.EVENT_QUERIES.ordinal()] += 2;
+        System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
+        if (objectContacts.intersects(k, 2, linkScratch)) return 2;
+        System.arraycopy(frameScratch, 36, linkScratch, 0, 12);
+        if (objectContacts.intersects(k, 3, linkScratch)) return 3;
+        return 0;
+    }
+
+    /**
+     * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
+     * the contact forces that carry the transmitted part (eq 11 as non-negative least squares
+     * over the flexion joints k2, k3).
+     */
+    private void torquesAndForces(int k) {
+        int i = k - 1;
+        if (scenario.computeTorques()) {
+            double[] a = dynAt[i];
+            boolean same = dynValid[i];
+            for (int j = 0; j < 3 && same; j++) {
+                same = a[j] == q[i][j] && a[3 + j] == qd[i][j] && a[6 + j] == qdd[i][j];
+            }
+            if (same) {
+                counters[Counter.DYNAMICS_SKIPPED.ordinal()]++;
+            } else {
+                dynamics.inverseDynamics(k, q[i], qd[i], qdd[i], gravityK0[i], tauDyn[i]);
+                counters[Counter.DYNAMICS_CALLS.ordinal()]++;
+                for (int j = 0; j < 3; j++) { a[j] = q[i][j]; a[3 + j] = qd[i][j]; a[6 + j] = qdd[i][j]; }
+                dynValid[i] = true;
+            }
+        }
+        clutch[i].transmittedTorque(transmitted);
+        tauContact[0] = 0;
+        tauContact[1] = transmitted[0];
+        tauContact[2] = transmitted[1];
+        tau[i][0] = tauDyn[i][0];
+        tau[i][1] = tauDyn[i][1] + transmitted[0];
+        tau[i][2] = tauDyn[i][2] + transmitted[1];
+        ContactSet cs = contacts[i];
+        int n = cs.size();
+        if (n > 0) {
+            solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            for (int c = 0; c < n; c++) {
+                cs.forces[c] = solver.force(c);
+                cs.undetermined[c] = solver.undetermined(c);
+            }
+            maxForce[i] = Math.max(maxForce[i], cs.forceSum());
+        }
+    }
+
+    /**
+     * Eq (9): the torque the contacts on the inner link put on joint k2; above τ_break a BLOCKED
+     * finger breaks away. The crossing is interpolated linearly (the torque rises linearly with
+     * the motor count). Returns true if the state changed.
+     */
+    private boolean breakawayTest(int k) {
+        int i = k - 1;
+        FingerClutch c = clutch[i];
+        if (c.state() != ClutchState.BLOCKED) return false;
+        ContactSet cs = contacts[i];
+        double tauK2 = 0, forceInner = 0;
+        for (int j = 0; j < cs.size(); j++) {
+            if (cs.links[j] != 2) continue;
+            tauK2 += solver.arm(j, 1) * cs.forces[j];
+            forceInner += cs.forces[j];
+        }
+        double qm = c.motor();
+        if (tauK2 > hand.tauBreak()) {
+            double frac = (hand.tauBreak() - lastTau[i]) / (tauK2 - lastTau[i]);
+            frac = Math.max(0, Math.min(1, frac));
+            double qb = lastQ[i] + frac * (qm - lastQ[i]);
+            breakTime[i] = lastT[i] + frac * (t - lastT[i]);
+            breakTorque[i] = hand.tauBreak();
+            breakForce[i] = forceInner * hand.tauBreak() / tauK2;
+            breakQ[i] = qb;
+            c.breakAway(qb, hand.tauBreak());
+            return true;
+        }
+        lastT[i] = t;
+        lastQ[i] = qm;
+        lastTau[i] = tauK2;
+        return false;
+    }
+
+    /** Stops the run with a message naming the step, the time and the value if anything is not finite. */
+    private void guard(int k) {
+        int i = k - 1;
+        for (int j = 0; j < 3; j++) {
+            if (!Double.isFinite(q[i][j]) || !Double.isFinite(qd[i][j]) || !Double.isFinite(tau[i][j])) {
+                throw new SimulationException("step " + step + " (t = " + t + " s): finger " + k + " joint " + (j + 1)
+                    + " is not finite (angle " + q[i][j] + ", velocity " + qd[i][j] + ", torque " + tau[i][j] + ")");
+            }
+        }
+    }
+
+    private void record() {
+        if (recorder == null) return;
+        recorder.beginRow(t);
+        for (int k = 1; k <= 3; k++) {
+            int i = k - 1;
+            recorder.set(k, Recorder.Q, clutch[i].motor());
+            recorder.set(k, Recorder.TH1, q[i][0]);
+            recorder.set(k, Recorder.TH2, q[i][1]);
+            recorder.set(k, Recorder.TH3, q[i][2]);
+            recorder.set(k, Recorder.DTH2, qd[i][1]);
+            recorder.set(k, Recorder.DTH3, qd[i][2]);
+            recorder.set(k, Recorder.DDTH2, qdd[i][1]);
+            recorder.set(k, Recorder.DDTH3, qdd[i][2]);
+            recorder.set(k, Recorder.TAU2, tau[i][1]);
+            recorder.set(k, Recorder.TAU3, tau[i][2]);
+            recorder.setState(k, clutch[i].state());
+            recorder.setContacts(k, contacts[i].size(), contacts[i].forceSum());
+        }
+        recorder.setSpread(spread);
+    }
+
+    // ------------------------------------------------------------------ read-out
+    public Scenario scenario() { return scenario; }
+    public double time() { return t; }
+    public long stepIndex() { return step; }
+    public long totalSteps() { return totalSteps; }
+    public Recorder recorder() { return recorder; }
+    public ClutchState state(int k) { return clutch[k - 1].state(); }
+    /** Joint angles of finger k (a new array, radians). */
+    public double[] joints(int k) { return q[k - 1].clone(); }
+    /** Joint velocities of finger k (a new array, rad/s). */
+    public double[] velocities(int k) { return qd[k - 1].clone(); }
+    /** Joint accelerations of finger k (a new array, rad/s²). */
+    public double[] accelerations(int k) { return qdd[k - 1].clone(); }
+    /** An immutable copy of the state now, for other threads. */
+    public Snapshot snapshot() { return Snapshot.of(this); }
+    /** Joint torques of finger k (a new array, N·m). */
+    public double[] torques(int k) { return tau[k - 1].clone(); }
+    /** Motor counts of finger k now. */
+    public double motorCounts(int k) { return clutch[k - 1].motor(); }
+    public double spreadCounts() { return spread; }
+    /** The contacts of finger k (live: copy before handing to another thread). */
+    public ContactSet contacts(int k) { return contacts[k - 1]; }
+    /** Frames {k0}..{k3} of finger k in the world (a new 48-array). */
+    public double[] framesWorld(int k) { return framesWorld[k - 1].clone(); }
+    /** Breakaway time of finger k in seconds, NaN if none. */
+    public double breakawayTime(int k) { return breakTime[k - 1]; }
+    public double breakawayTorque(int k) { return breakTorque[k - 1]; }
+    public double breakawayForce(int k) { return breakForce[k - 1]; }
+    public double maxContactForce(int k) { return maxForce[k - 1]; }
+    /** Motor count of finger k's (first) breakaway, NaN if none. */
+    public double breakawayCounts(int k) { return breakQ[k - 1]; }
+    /** Motor count where finger k's inner link (first) met the object, NaN if never. */
+    public double contactCounts(int k) { return contactQ[k - 1]; }
+    /** Work counters since {@link #initialise()}. */
+    public long counter(Counter c) { return counters[c.ordinal()]; }
+    public long[] counters() { return counters.clone(); }
+}

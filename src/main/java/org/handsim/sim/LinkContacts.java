@@ -1,0 +1,22 @@
+package org.handsim.sim;
+
+/**
+ * The collision side of the model: where the links of a placed finger touch the object.
+ * Implemented by {@link SceneGeometry} on k-DOP trees; tests may supply analytic shapes.
+ */
+public interface LinkContacts {
+    /**
+     * Finds the point contacts of link {@code link} (1..3) of finger {@code finger} (1..3), placed
+     * in the world by the 12-value row-major transform {@code worldFromLink}, with the object;
+     * appends them to {@code out}.
+     *
+     * @return the number of contacts appended
+     */
+    int collide(int finger, int link, double[] worldFromLink, ContactSet out);
+
+    /** True when the link placed there intersects the object (may be cheaper than collide). */
+    default boolean intersects(int finger, int link, double[] worldFromLink) {
+        ContactSet tmp = new ContactSet();
+        return collide(finger, link, worldFromLink, tmp) > 0;
+    }
+}

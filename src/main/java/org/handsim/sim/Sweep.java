@@ -1,0 +1,132 @@
+package org.handsim.sim;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.handsim.util.Json;
+import org.handsim.util.JsonObject;
+import org.handsim.util.JsonWriter;
+
+/**
+ * A sweep file: many runs of one base scenario with fields overridden, and/or other scenario
+ * files, run in parallel by {@code handsim sweep}.
+ *
+ * <pre>{@code
+ * {
+ *   "name": "cube-positions",
+ *   "base": "paper-breakaway.json",                       // relative to the sweep file
+ *   "runs": [ {"label": "y-5mm", "set": {"object.position_m": [0, 0.005, 0.12]}},
+ *             {"label": "slow",  "set": {"motors.M3[0].v_max": 3000}} ],
+ *   "scenarios": ["../scenarios/mug-grasp.json"],         // optional
+ *   "threads": 0                                          // optional, 0 = all cores
+ * }
+ * }</pre>
+ * A {@code set} key is a path into the base scenario's JSON: field names separated by dots,
+ * array elements by {@code [i]}; the value replaces what is there (or adds the field).
+ */
+public final class Sweep {
+    /** One run: a label and the scenario it runs (built lazily so that a bad run fails alone). */
+    public record Run(String label, java.util.function.Supplier<Scenario> scenario) {}
+
+    private final String name;
+    private final List<Run> runs = new ArrayList<>();
+    private final int threads;
+
+    private Sweep(Path file, JsonObject r) {
+        r.allowOnly("name", "base", "runs", "scenarios", "threads");
+        name = r.string("name");
+        if (!name.matches("[A-Za-z0-9._-]+")) throw r.error("name", "must be letters, digits, '.', '_' or '-', got \"" + name + "\"");
+        threads = r.has("threads") ? r.integer("threads") : 0;
+        Path dir = file.toAbsolutePath().getParent();
+        if (r.has("runs")) {
+            if (!r.has("base")) throw r.error("base", "missing (the runs override fields of a base scenario)");
+            Path base = dir.resolve(r.string("base")).normalize();
+            String baseText;
+            try {
+                baseText = Files.readString(base);
+            } catch (IOException e) {
+                throw r.error("base", "cannot read " + base + ": " + e.getMessage());
+            }
+            int n = r.list("runs").size();
+            for (int i = 0; i < n; i++) {
+                JsonObject run = r.objectAt("runs", i);
+                run.allowOnly("label", "set");
+                String label = run.string("label");
+                JsonObject set = run.has("set") ? run.object("set") : null;
+                Map<String, Object> overrides = new LinkedHashMap<>();
+                if (set != null) for (String k : set.keys()) overrides.put(k, rawValue(set, k));
+                String text = baseText;
+                runs.add(new Run(label, () -> Scenario.parse(base, applyOverrides(base, text, overrides))));
+            }
+        }
+        if (r.has("scenarios")) {
+            int n = r.list("scenarios").size();
+            for (int i = 0; i < n; i++) {
+                Object v = r.list("scenarios").get(i);
+                if (!(v instanceof String)) throw r.error("scenarios[" + i + "]", "must be a file name");
+                Path f = dir.resolve((String) v).normalize();
+                runs.add(new Run(f.getFileName().toString().replaceFirst("\\.json$", ""), () -> Scenario.load(f)));
+            }
+        }
+        if (runs.isEmpty()) throw r.error("runs", "the sweep has no runs and no scenarios");
+    }
+
+    private static Object rawValue(JsonObject o, String key) {
+        return o.raw(key);
+    }
+
+    /** Applies dotted-path overrides to scenario JSON text and returns the new text. */
+    @SuppressWarnings("unchecked")
+    static String applyOverrides(Path file, String text, Map<String, Object> overrides) {
+        Object root = Json.parse(file.toString(), text);
+        for (Map.Entry<String, Object> e : overrides.entrySet()) {
+            String[] parts = e.getKey().split("\\.");
+            Object node = root;
+            for (int p = 0; p < parts.length; p++) {
+                String part = parts[p];
+                int idx = -1;
+                int b = part.indexOf('[');
+                if (b >= 0) {
+                    if (!part.endsWith("]")) throw new ScenarioException(file + ": override \"" + e.getKey() + "\": bad index in '" + part + "'");
+                    idx = Integer.parseInt(part.substring(b + 1, part.length() - 1));
+                    part = part.substring(0, b);
+                }
+                if (!(node instanceof Map)) throw new ScenarioException(file + ": override \"" + e.getKey() + "\": '" + part + "' is not inside an object");
+                Map<String, Object> m = (Map<String, Object>) node;
+                boolean last = p == parts.length - 1;
+                if (idx < 0) {
+                    if (last) m.put(part, e.getValue());
+                    else node = m.computeIfAbsent(part, x -> new LinkedHashMap<String, Object>());
+                } else {
+                    Object l = m.get(part);
+                    if (!(l instanceof List) || idx >= ((List<Object>) l).size()) {
+                        throw new ScenarioException(file + ": override \"" + e.getKey() + "\": no element " + idx + " in '" + part + "'");
+                    }
+                    if (last) ((List<Object>) l).set(idx, e.getValue());
+                    else node = ((List<Object>) l).get(idx);
+                }
+            }
+        }
+        return JsonWriter.write(root);
+    }
+
+    /** Loads a sweep file. */
+    public static Sweep load(Path file) {
+        try {
+            return new Sweep(file, JsonObject.parse(file.toString(), Files.readString(file)));
+        } catch (IOException e) {
+            throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
+        } catch (Json.JsonException e) {
+            throw new ScenarioException(e.getMessage(), e);
+        }
+    }
+
+    public String name() { return name; }
+    public List<Run> runs() { return runs; }
+    /** Worker threads: the file's value, or all cores when 0. */
+    public int threads() { return threads > 0 ? threads : Runtime.getRuntime().availableProcessors(); }
+}

@@ -1,0 +1,114 @@
+package org.handsim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class KinematicsCommandsTest {
+    /** Exit code, standard output and standard error of one command. */
+    record Run(int code, String out, String err) {}
+
+    static Run run(String... args) {
+        StringWriter o = new StringWriter(), e = new StringWriter();
+        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
+        return new Run(code, o.toString().trim(), e.toString().trim());
+    }
+
+    @Test
+    void fkPrintsTheContractJson() {
+        Run r = run("fk", "--finger", "3", "--joints", "0,1.5275,0.6981317007977318");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().startsWith("{\"finger\":3,\"frame\":\"base\",\"joints\":[0,1.5275,0.6981317007977318],\"origins\":[[0,0,0],[0.05,0,0],["), r.out());
+        assertTrue(r.out().contains("\"fingertip\":["), r.out());
+    }
+
+    @Test
+    void fkFromCountsMatchesJoints() {
+        Run a = run("fk", "--finger", "2", "--counts", "17500,3150");
+        assertEquals(0, a.code(), a.err());
+        assertTrue(a.out().contains("\"joints\":[3.14159265358979"), a.out());
+    }
+
+    @Test
+    void ikRoundTripThroughTheCommand() {
+        Run r = run("ik", "--finger", "1", "--target", "0.05,-0.09,0.08");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().matches("\\{\"reachable\":(true|false),\"joints\":\\[.*\\],\"fingertip\":\\[.*\\],\"error_m\":.*\\}"), r.out());
+    }
+
+    @Test
+    void badArgumentsExitTwoWithOneLineNamingThem() {
+        Run r = run("fk", "--finger", "4", "--joints", "0,0,0");
+        assertEquals(2, r.code());
+        assertEquals("handsim: --finger must be 1, 2 or 3, got 4", r.err());
+        r = run("ik", "--finger", "1", "--target", "0.1,abc,0");
+        assertEquals(2, r.code());
+        assertEquals("handsim: --target: 'abc' is not a number", r.err());
+        r = run("fk", "--finger", "3", "--joints", "0.2,0,0");
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("t1 must be 0"), r.err());
+        r = run("fk", "--finger", "1", "--counts", "20000");
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("20000"), r.err());
+        r = run("fk", "--bogus");
+        assertEquals(2, r.code());
+        assertTrue(r.err().startsWith("handsim: Unknown option: '--bogus'"), r.err());
+    }
+
+    @Test
+    void everySubcommandHasHelp() {
+        for (Class<?> c : HandSim.SUBCOMMANDS) {
+            String name = c.getAnnotation(picocli.CommandLine.Command.class).name();
+            Run r = run(name, "--help");
+            assertEquals(0, r.code(), name);
+            assertTrue(r.out().startsWith("Usage: handsim " + name), r.out());
+        }
+    }
+
+    @Test
+    void bulkFkAndIk() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-fk");
+        Path in = dir.resolve("in.csv"), out = dir.resolve("out.csv");
+        Files.writeString(in, "finger,t1,t2,t3\n1,0,0,0\n3,0,1,0.5\n\n2,0.3,0.2,0.1\n");
+        Run r = run("fk", "--input", in.toString(), "--output", out.toString());
+        assertEquals(0, r.code(), r.err());
+        List<String> lines = Files.readAllLines(out);
+        assertEquals(FkCommand.OUT_HEADER, lines.get(0));
+        assertEquals(4, lines.size());
+        assertTrue(lines.get(1).startsWith("1,0,0,0,0.0,0.0,0.0,0.05,"), lines.get(1));
+
+        Path ikIn = dir.resolve("ik.csv"), ikOut = dir.resolve("ik-out.csv");
+        Files.writeString(ikIn, "finger,x,y,z\n3,0.15405713827444156,0,0.04740851014402606\n3,1,0,0\n");
+        r = run("ik", "--input", ikIn.toString(), "--output", ikOut.toString());
+        assertEquals(0, r.code(), r.err());
+        lines = Files.readAllLines(ikOut);
+        assertEquals("finger,x,y,z,reachable,t1,t2,t3,error_m", lines.get(0));
+        assertTrue(lines.get(1).startsWith("3,0.15405713827444156,0,0.04740851014402606,true,0.0,"), lines.get(1));
+        assertTrue(lines.get(2).startsWith("3,1,0,0,false,"), lines.get(2));
+    }
+
+    @Test
+    void badRowStopsWithItsLineNumberAndLeavesNothing() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-fk");
+        Path in = dir.resolve("in.csv"), out = dir.resolve("out.csv");
+        Files.writeString(in, "finger,t1,t2,t3\n1,0,0,0\n2,0,x,0\n");
+        Run r = run("fk", "--input", in.toString(), "--output", out.toString());
+        assertEquals(2, r.code());
+        assertEquals("handsim: " + in + ":3: column t2 = 'x' is not a number", r.err());
+        assertFalse(Files.exists(out));
+        try (var s = Files.list(dir)) {
+            assertEquals(1, s.count(), "no temporary file left behind");
+        }
+        Files.writeString(in, "finger,a,b,c\n1,0,0,0\n");
+        r = run("fk", "--input", in.toString(), "--output", out.toString());
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains(":1: header must be exactly 'finger,t1,t2,t3'"), r.err());
+    }
+}

@@ -1,0 +1,114 @@
+package org.handsim.contact;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.handsim.kinematics.FingerKinematics;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Contact forces from joint torques (eq 11 as least squares, DESIGN.md decision 2) on cases
+ * solved by hand.
+ */
+class ContactForcesTest {
+    /** Frames of finger 3 with θ2 = 90° − Φ2 (link 2 straight up in {k0}) and θ3 = 0. */
+    private static double[] upright() {
+        double[] f = new double[48];
+        FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(90 - 2.46), 0}, f);
+        return f;
+    }
+
+    /**
+     * One contact on the inner link, 0.05 m up from the joint-2 axis (which lies along −y at
+     * (0.05, 0, 0) in {k0}), pushing the object along −x: the moment arm about joint 2 is
+     * (z1 × (p − o1))·d with z1 = (0, −1, 0), p − o1 = (0, 0, 0.05), d = (−1, 0, 0):
+     * z1 × r = (−0.05, 0, 0), so a = 0.05 m; for τ2 = 1.26 N·m the force is 1.26/0.05 = 25.2 N.
+     * Joint 3 is distal: no arm. Eq (9) gives the torque back.
+     */
+    @Test
+    void singleContactOnTheInnerLinkByHand() {
+        double[] f = upright();
+        double[] p = {0.05, 0, 0.05}, d = {-1, 0, 0};
+        ContactForces cf = new ContactForces();
+        cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, d, new int[] {2});
+        assertEquals(0.05, cf.arm(0, 1), 1e-15);
+        assertEquals(0, cf.arm(0, 2));
+        assertEquals(25.2, cf.force(0), 1e-12);
+        assertEquals(0, cf.residual(), 1e-12);
+        assertFalse(cf.undetermined(0));
+        assertEquals(1.26, ContactForces.jointTorque(f, 1, p, d, cf.force(0)), 1e-12);
+    }
+
+    /** A torque that would need the contact to pull gives f = 0 (non-negative), the residual says so. */
+    @Test
+    void contactsCannotPull() {
+        double[] f = upright();
+        ContactForces cf = new ContactForces();
+        cf.solve(f, 1, new double[] {0, -0.5, 0}, 1, new double[] {0.05, 0, 0.05}, new double[] {-1, 0, 0}, new int[] {2});
+        assertEquals(0, cf.force(0));
+        assertEquals(0.5, cf.residual(), 1e-12);
+    }
+
+    /** A force whose line passes through the joint axis: undetermined, f = 0, never a huge number. */
+    @Test
+    void zeroMomentArmIsUndetermined() {
+        double[] f = upright();
+        // at p = o1 + (0,0,0.05), a push along the link (−z) passes through the joint-2 axis
+        double[] p = {0.05, 0, 0.05}, d = {0, 0, -1};
+        ContactForces cf = new ContactForces();
+        cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, d, new int[] {2});
+        assertTrue(cf.undetermined(0));
+        assertEquals(0, cf.force(0));
+        assertTrue(Double.isFinite(cf.residual()));
+        // nearly through the axis (arm 1e-9 m): still undetermined rather than 1e9 N
+        cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, new double[] {-2e-8, 0, -1}, new int[] {2});
+        assertTrue(cf.undetermined(0));
+        assertEquals(0, cf.force(0));
+    }
+
+    /**
+     * Two contacts, one per link, torques on both flexion joints: the 2×2 system by hand.
+     * Outer link horizontal inward: with θ3 = 90° − Φ3 link 3 points along −x from o2 = (0.05,0,0.07).
+     * Contact B on link 3 at 0.03 from o2, pushing −z: arm about joint 3 = 0.03, about joint 2:
+     * (z1 × (p − o1))·d with p − o1 = (−0.03, 0, 0.07): z1 × r = (−0.07, 0, −0.03), dot (0,0,−1)
+     * → +0.03. Contact A on link 2 as above (arm 0.05 about joint 2). τ2 = 0.05 fA + 0.03 fB,
+     * τ3 = 0.03 fB; for fA = 20, fB = 10: τ2 = 1.3, τ3 = 0.3.
+     */
+    @Test
+    void twoContactsTwoJoints() {
+        double[] f = new double[48];
+        FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(90 - 2.46), Math.toRadians(90 - 50)}, f);
+        double[] p = {0.05, 0, 0.05, 0.02, 0, 0.07};
+        double[] d = {-1, 0, 0, 0, 0, -1};
+        ContactForces cf = new ContactForces();
+        cf.solve(f, 1, new double[] {0, 1.3, 0.3}, 2, p, d, new int[] {2, 3});
+        assertEquals(0.03, cf.arm(1, 1), 1e-12);
+        assertEquals(0.03, cf.arm(1, 2), 1e-12);
+        assertEquals(20, cf.force(0), 1e-9);
+        assertEquals(10, cf.force(1), 1e-9);
+        assertEquals(0, cf.residual(), 1e-12);
+    }
+
+    /** Many identical contacts: the least-squares answer carries the torque, none negative. */
+    @Test
+    void redundantContactsStayNonNegative() {
+        double[] f = upright();
+        int n = 5;
+        double[] p = new double[3 * n], d = new double[3 * n];
+        int[] links = new int[n];
+        for (int i = 0; i < n; i++) {
+            p[3 * i] = 0.05; p[3 * i + 2] = 0.02 + 0.01 * i;
+            d[3 * i] = -1;
+            links[i] = 2;
+        }
+        ContactForces cf = new ContactForces();
+        cf.solve(f, 1, new double[] {0, 1.0, 0}, n, p, d, links);
+        double tau = 0;
+        for (int i = 0; i < n; i++) {
+            assertTrue(cf.force(i) >= 0);
+            tau += cf.force(i) * cf.arm(i, 1);
+        }
+        assertEquals(1.0, tau, 1e-12);
+    }
+}
