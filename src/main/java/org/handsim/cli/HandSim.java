@@ -19,9 +19,9 @@ public final class HandSim implements Runnable {
     /** Every sub-command, in the order `handsim --help` lists them. */
     static final List<Class<?>> SUBCOMMANDS = List.of(
         FkCommand.class,
-        IkCommand.class
-        // sub-commands register here, one line each
+        IkCommand.class,
         MeshCommand.class
+        // sub-commands register here, one line each
     );
 
     @Override
