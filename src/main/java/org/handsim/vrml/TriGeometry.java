@@ -39,20 +39,45 @@ final class TriGeometry {
         }
     }
 
-    /** The Java3D geometry, or null if there are no triangles. */
+    /**
+     * The Java3D geometry, or null if there are no triangles. Java3D sizes every by-reference
+     * array by one vertex count (it computes bounds over all of them), so the shorter of the
+     * point and normal arrays is padded: points with copies of the first point (bounds
+     * unchanged), normals with +y. Indices only ever name the real entries.
+     */
     IndexedTriangleArray toJava3D() {
         int m = coordIndex.length;
         if (m == 0) return null;
         int np = pointCount();
         int nn = normals == null ? 0 : normals.length / 3;
+        int nv = Math.max(1, Math.max(np, nn));
         int format = GeometryArray.COORDINATES | GeometryArray.BY_REFERENCE;
         if (normals != null) format |= GeometryArray.NORMALS;
-        IndexedTriangleArray g = new IndexedTriangleArray(Math.max(1, Math.max(np, nn)), format, m);
+        IndexedTriangleArray g = new IndexedTriangleArray(nv, format, m);
         setReadCapabilities(g);
-        if (fpoints != null) g.setCoordRefFloat(fpoints); else g.setCoordRefDouble(dpoints);
+        if (fpoints != null) {
+            float[] p = fpoints;
+            if (np < nv) {
+                p = java.util.Arrays.copyOf(fpoints, 3 * nv);
+                for (int i = 3 * np; i < 3 * nv; i += 3) { p[i] = p[0]; p[i + 1] = p[1]; p[i + 2] = p[2]; }
+            }
+            g.setCoordRefFloat(p);
+        } else {
+            double[] p = dpoints;
+            if (np < nv) {
+                p = java.util.Arrays.copyOf(dpoints, 3 * nv);
+                for (int i = 3 * np; i < 3 * nv; i += 3) { p[i] = p[0]; p[i + 1] = p[1]; p[i + 2] = p[2]; }
+            }
+            g.setCoordRefDouble(p);
+        }
         g.setCoordinateIndices(0, coordIndex);
         if (normals != null) {
-            g.setNormalRefFloat(normals);
+            float[] n = normals;
+            if (nn < nv) {
+                n = java.util.Arrays.copyOf(normals, 3 * nv);
+                for (int i = 3 * nn + 1; i < 3 * nv; i += 3) n[i] = 1;
+            }
+            g.setNormalRefFloat(n);
             g.setNormalIndices(0, normalIndex);
         }
         return g;

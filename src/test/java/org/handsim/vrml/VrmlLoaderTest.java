@@ -343,4 +343,23 @@ class VrmlLoaderTest {
         VrmlParseException missing = assertThrows(VrmlParseException.class, () -> new VrmlLoader().load(dir.resolve("none.wrl")));
         assertEquals(dir.resolve("none.wrl") + ":1:1: cannot read the file: no such file", missing.getMessage());
     }
+
+    @Test
+    void sceneGoesLiveAndIsStillWalkable() {
+        // flat-shaded IFS (more face normals than points), a USE'd shape (SharedGroup + Link),
+        // a Switch: Java3D checks arrays and capabilities once the scene is live
+        VrmlScene s = VrmlTesting.load("DEF S Shape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0, 0 0 1 ] }"
+            + " coordIndex [ 0 2 1 -1 0 1 3 -1 0 3 2 -1 1 2 3 -1 ] } }\n"
+            + "Transform { translation 2 0 0 children USE S }\nSwitch { whichChoice 0 choice Shape { geometry Sphere { } } }\n");
+        org.jogamp.java3d.VirtualUniverse u = new org.jogamp.java3d.VirtualUniverse();
+        try {
+            new org.jogamp.java3d.Locale(u).addBranchGraph(s.getSceneGroup());
+            assertTrue(s.getSceneGroup().isLive());
+            TessellationWalk.Result r = VrmlTesting.walk(s);
+            assertEquals(3, r.shapes);
+            assertEquals(8 + 2 * 32 + 32 * (16 - 2) * 2, r.merged().triangleCount());
+        } finally {
+            u.removeAllLocales();
+        }
+    }
 }
