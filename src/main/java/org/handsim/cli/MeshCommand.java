@@ -37,8 +37,8 @@ import picocli.CommandLine.Spec;
  * scene building and tessellation walk. Warnings go to standard error, one per line.
  */
 @Command(name = "mesh", mixinStandardHelpOptions = true,
-    description = {"Load a VRML97 file and print its triangle mesh statistics as one JSON line:",
-        "{\"file\",\"shapes\",\"triangles\",\"vertices\",\"degenerate\",\"area_m2\",\"volume_m3\" (null unless closed),"
+    description = {"Load a VRML97 file (VrmlLoader, tessellation walk) and print its triangle mesh statistics.",
+        "Output, one JSON line: {\"file\",\"shapes\",\"triangles\",\"vertices\",\"degenerate\",\"area_m2\",\"volume_m3\" (null unless closed),"
             + "\"closed\",\"bounds\",\"load_ms\"}.",
         "Coincident vertices are welded before the closed-ness test. Warnings go to standard error.",
         "Exit codes: 0 ok, 2 bad arguments, 3 file cannot be loaded (FILE:LINE:COL: message)."})
