@@ -21,9 +21,11 @@ import java.util.Arrays;
  *       (cross(b−a, c−a) &gt; 0) and no other remaining vertex lies in or on triangle abc
  *       (only reflex vertices can, so only they are tested). Clipping an ear removes b and emits
  *       triangle (a, b, c), which has the face's orientation.</li>
- *   <li><b>No ear</b> (only for self-intersecting or badly non-planar input, or collinear runs):
- *       a collinear vertex is clipped first (zero-area triangle, area preserved), otherwise the
- *       most convex corner. Exactly n−2 triangles are always produced, so counts match the
+ *   <li><b>No ear</b> in a whole round: a collinear vertex is clipped (zero-area triangle, area
+ *       preserved); if there is none, the face crosses itself (or is badly non-planar) and the
+ *       rest is fan-triangulated and counted ({@link #fannedConcave}, reported as a warning).
+ *       A work budget of O(n²) per face bounds the time whatever the input. Exactly n−2
+ *       triangles are always produced, so counts match the
  *       "n-gon = n−2 triangles" convention and zero-area pieces are later dropped and counted
  *       by the tessellation walk.</li>
  * </ol>
@@ -47,7 +49,7 @@ final class FaceTriangulator {
     int count;
     /** Faces with fewer than three vertices (skipped). */
     int shortFaces;
-    /** Large concave faces that were fan-triangulated anyway. */
+    /** Faces fan-triangulated although not convex: too large to ear-clip, or self-intersecting. */
     int fannedConcave;
 
     private double[] x = new double[16], y = new double[16];
@@ -121,7 +123,10 @@ final class FaceTriangulator {
             nz += (x0 - x1) * (y0 + y1);
         }
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        if (!(len > 0)) { // all points collinear or coincident: any split has zero area
+        if (!(len > 0)) {
+            // zero area vector: all points collinear (any split has zero area) or a face that
+            // crosses itself so its parts cancel (a bow tie): fan it, and count the latter
+            if (!collinear(pts, idx, start, n, direct)) fannedConcave++;
             for (int k = 1; k + 1 < n; k++) emit(start, start + k, start + k + 1, f);
             return;
         }
@@ -149,6 +154,31 @@ final class FaceTriangulator {
             return;
         }
         earClip(start, n, f);
+    }
+
+    /** True if every point lies on the line through the first point and the farthest one. */
+    private static boolean collinear(float[] pts, int[] idx, int start, int n, double[] direct) {
+        double[] p0 = point(pts, idx, start, 0, direct), far = p0;
+        double best = 0;
+        for (int k = 1; k < n; k++) {
+            double[] q = point(pts, idx, start, k, direct);
+            double d = (q[0] - p0[0]) * (q[0] - p0[0]) + (q[1] - p0[1]) * (q[1] - p0[1]) + (q[2] - p0[2]) * (q[2] - p0[2]);
+            if (d > best) { best = d; far = q; }
+        }
+        double ux = far[0] - p0[0], uy = far[1] - p0[1], uz = far[2] - p0[2];
+        for (int k = 1; k < n; k++) {
+            double[] q = point(pts, idx, start, k, direct);
+            double wx = q[0] - p0[0], wy = q[1] - p0[1], wz = q[2] - p0[2];
+            double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
+            if (cx != 0 || cy != 0 || cz != 0) return false;
+        }
+        return true;
+    }
+
+    private static double[] point(float[] pts, int[] idx, int start, int k, double[] direct) {
+        if (direct != null) return new double[] {direct[3 * k], direct[3 * k + 1], direct[3 * k + 2]};
+        int p = 3 * idx[start + k];
+        return new double[] {pts[p], pts[p + 1], pts[p + 2]};
     }
 
     private void ensure(int n) {
@@ -184,6 +214,8 @@ final class FaceTriangulator {
         int remaining = n;
         int b = 0;
         int sinceLastClip = 0;
+        long budget = 8L * n * n + 1_000_000; // ear tests and their inner loops; O(n²) for any real face
+        work = 0;
         while (remaining > 3) {
             if (!reflex[b] && isEar(b)) {
                 b = clip(b, start, f);
@@ -192,24 +224,30 @@ final class FaceTriangulator {
                 continue;
             }
             b = next[b];
-            if (++sinceLastClip > remaining) {
-                // no ear: a collinear corner first (zero area), else the most convex corner
-                int best = -1;
-                double bestArea = Double.NEGATIVE_INFINITY;
-                int k = b;
-                for (int s = 0; s < remaining; s++) {
-                    double a2 = cross(prev[k], k, next[k]);
-                    if (a2 == 0) { best = k; break; }
-                    if (a2 > bestArea) { bestArea = a2; best = k; }
+            if (++sinceLastClip > remaining || work > budget) {
+                // no ear in a whole round: clip a collinear corner (zero area, nothing lost) if
+                // there is one; otherwise the face crosses itself: fan the rest and say so
+                int k = b, found = -1;
+                for (int s = 0; s < remaining && work <= budget; s++, work++) {
+                    if (cross(prev[k], k, next[k]) == 0) { found = k; break; }
                     k = next[k];
                 }
-                b = clip(best, start, f);
+                if (found < 0) {
+                    fannedConcave++;
+                    int a = b;
+                    for (int c = next[a]; next[c] != a; c = next[c]) emit(start + a, start + c, start + next[c], f);
+                    return;
+                }
+                b = clip(found, start, f);
                 remaining--;
                 sinceLastClip = 0;
             }
         }
         emit(start + prev[b], start + b, start + next[b], f);
     }
+
+    /** Inner-loop iterations of the current face (bounded by a budget). */
+    private long work;
 
     /** Emits ear b, unlinks it, updates the neighbours' reflex flags; returns the next vertex to try. */
     private int clip(int b, int start, int f) {
@@ -228,6 +266,7 @@ final class FaceTriangulator {
         if (!(area > 0)) return false;
         double ax = x[a], ay = y[a], bx = x[b], by = y[b], cx = x[c], cy = y[c];
         for (int k = next[c]; k != a; k = next[k]) {
+            work++;
             if (!reflex[k]) continue;
             double px = x[k], py = y[k];
             if ((px == ax && py == ay) || (px == bx && py == by) || (px == cx && py == cy)) continue;

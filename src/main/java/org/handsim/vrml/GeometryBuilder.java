@@ -84,8 +84,9 @@ final class GeometryBuilder {
                 + g.describe() + " skipped");
         }
         if (tri.fannedConcave > 0) {
-            session.warn(g.text, g.offsetOf("coordIndex"), tri.fannedConcave + " concave face(s) with more than "
-                + FaceTriangulator.MAX_EAR_CLIP + " vertices fan-triangulated (may cover area outside the face)");
+            session.warn(g.text, g.offsetOf("coordIndex"), tri.fannedConcave + " face(s) of " + g.describe()
+                + " fan-triangulated although not convex (self-intersecting, or more than " + FaceTriangulator.MAX_EAR_CLIP
+                + " vertices): the triangles may cover area outside the face");
         }
         int m = tri.count;
         if (m == 0) return null;

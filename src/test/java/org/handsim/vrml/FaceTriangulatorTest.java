@@ -175,4 +175,22 @@ class FaceTriangulatorTest {
         int[] t = assertTimeoutPreemptively(Duration.ofSeconds(1), () -> triangulate(xy));
         assertEquals(3 * (n - 2), t.length);
     }
+
+    @Test
+    void selfIntersectingFacesStillGiveNMinus2TrianglesQuickly() {
+        double[] pentagram = new double[10];
+        for (int i = 0; i < 5; i++) {
+            pentagram[2 * i] = Math.cos(4 * Math.PI * i / 5);
+            pentagram[2 * i + 1] = Math.sin(4 * Math.PI * i / 5);
+        }
+        assertEquals(9, triangulate(pentagram).length);
+        Random r = new Random(345);
+        double[] scribble = new double[2 * 5000];
+        for (int i = 0; i < scribble.length; i++) scribble[i] = r.nextDouble();
+        int[] t = assertTimeoutPreemptively(Duration.ofSeconds(1), () -> triangulate(scribble));
+        assertEquals(3 * 4998, t.length);
+        VrmlScene s = VrmlTesting.load("Shape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 1 0, 1 0 0, 0 1 0 ] }"
+            + " coordIndex [ 0 1 2 3 ] } }");
+        assertTrue(s.warnings().get(0).contains("fan-triangulated although not convex"), s.warnings().toString());
+    }
 }
