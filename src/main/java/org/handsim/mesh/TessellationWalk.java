@@ -72,7 +72,8 @@ import org.jogamp.vecmath.Point3f;
  * out. Hot loops run on primitive arrays with reused scratch; nothing is allocated per triangle.
  *
  * <p>A guard ({@link #maxTriangles}) stops scenes whose sharing multiplies geometry beyond
- * reason (a DEF/USE "billion laughs"). Not thread-safe; the walk only reads the scene graph
+ * reason (a DEF/USE "billion laughs"): a counting pass over the graph, with each SharedGroup
+ * counted once, refuses them before any triangle is produced. Not thread-safe; the walk only reads the scene graph
  * (which needs the read capabilities the VRML loader sets if the scene is live or compiled).
  */
 public final class TessellationWalk {
@@ -217,6 +218,12 @@ public final class TessellationWalk {
         parts.clear();
         shapes = skipped = shapeSerial = 0;
         degenerate = emitted = 0;
+        long expected = expandedTriangles(root);
+        if (expected > maxTriangles) {
+            throw new IllegalStateException("the scene expands to " + (expected >= HUGE ? "more than " + HUGE : String.valueOf(expected))
+                + " triangles, more than the limit of " + maxTriangles
+                + " (shared DEF/USE or Inline geometry multiplied?); raise TessellationWalk.maxTriangles to allow it");
+        }
         Part base = new Part(name);
         double[] m0 = {scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0};
         ArrayDeque<Frame> stack = new ArrayDeque<>();
@@ -278,6 +285,133 @@ public final class TessellationWalk {
         }
         if (out.isEmpty()) out.add(new TriangleMesh(name, new double[0], new int[0]));
         return new Result(out, name, shapes, degenerate, skipped);
+    }
+
+    private static final long HUGE = Long.MAX_VALUE / 4;
+
+    /** One node of the counting pass. */
+    private static final class Count {
+        final Node node;
+        Node[] kids;
+        int next;
+        long sum;
+
+        Count(Node node) {
+            this.node = node;
+        }
+    }
+
+    /**
+     * Triangles the walk would produce (before dropping degenerate ones), computed without
+     * producing them: one iterative post-order pass in which each SharedGroup is counted once
+     * and its count reused for every Link to it. So a scene whose sharing multiplies geometry
+     * exponentially (a DEF/USE "billion laughs") is refused at once, in time proportional to
+     * the scene graph, not to the triangles it would expand to. Saturates at {@link #HUGE}.
+     *
+     * @throws IllegalStateException if a SharedGroup links to itself (a cycle)
+     */
+    static long expandedTriangles(Node root) {
+        IdentityHashMap<Node, Long> memo = new IdentityHashMap<>();
+        IdentityHashMap<Node, Boolean> open = new IdentityHashMap<>();
+        ArrayDeque<Count> stack = new ArrayDeque<>();
+        stack.push(new Count(root));
+        long total = 0;
+        while (!stack.isEmpty()) {
+            Count f = stack.peek();
+            if (f.kids == null) {
+                Node n = f.node;
+                Long known = memo.get(n);
+                if (known != null) {
+                    stack.pop();
+                    total = addTo(stack, total, known);
+                    continue;
+                }
+                if (open.put(n, Boolean.TRUE) != null) {
+                    throw new IllegalStateException("the scene graph has a cycle through " + n + " (a SharedGroup that links to itself)");
+                }
+                f.kids = kids(f);
+            }
+            if (f.next < f.kids.length) {
+                stack.push(new Count(f.kids[f.next++]));
+                continue;
+            }
+            stack.pop();
+            open.remove(f.node);
+            if (f.node instanceof org.jogamp.java3d.SharedGroup) memo.put(f.node, f.sum);
+            total = addTo(stack, total, f.sum);
+        }
+        return total;
+    }
+
+    private static long addTo(ArrayDeque<Count> stack, long total, long v) {
+        Count parent = stack.peek();
+        if (parent == null) return Math.min(HUGE, total + v);
+        parent.sum = Math.min(HUGE, parent.sum + v);
+        return total;
+    }
+
+    /** The children the walk would visit (a Shape3D has none: its triangles go to its sum). */
+    private static Node[] kids(Count f) {
+        Node n = f.node;
+        if (n instanceof Shape3D) {
+            Shape3D s = (Shape3D) n;
+            for (int i = 0, k = s.numGeometries(); i < k; i++) f.sum = Math.min(HUGE, f.sum + triangles(s.getGeometry(i)));
+            return new Node[0];
+        }
+        if (n instanceof Link) {
+            Node sg = ((Link) n).getSharedGroup();
+            return sg == null ? new Node[0] : new Node[] {sg};
+        }
+        if (!(n instanceof Group)) return new Node[0];
+        Group g = (Group) n;
+        int nc = g.numChildren();
+        if (g instanceof Switch) {
+            Switch sw = (Switch) g;
+            int w = sw.getWhichChild();
+            if (w == Switch.CHILD_NONE) return new Node[0];
+            if (w == Switch.CHILD_MASK) {
+                java.util.BitSet mask = sw.getChildMask();
+                List<Node> l = new ArrayList<>();
+                for (int i = 0; i < nc; i++) if (mask.get(i) && sw.getChild(i) != null) l.add(sw.getChild(i));
+                return l.toArray(new Node[0]);
+            }
+            if (w != Switch.CHILD_ALL) return w >= 0 && w < nc && sw.getChild(w) != null ? new Node[] {sw.getChild(w)} : new Node[0];
+        }
+        List<Node> l = new ArrayList<>(nc);
+        for (int i = 0; i < nc; i++) if (g.getChild(i) != null) l.add(g.getChild(i));
+        return l.toArray(new Node[0]);
+    }
+
+    /** Triangles of one geometry as the walk would cut it (0 for non-surface geometry). */
+    private static long triangles(Geometry geom) {
+        if (!(geom instanceof GeometryArray)) return 0;
+        GeometryArray g = (GeometryArray) geom;
+        if (g instanceof IndexedGeometryArray) {
+            int c = ((IndexedGeometryArray) g).getValidIndexCount();
+            if (g instanceof IndexedTriangleArray) return c / 3;
+            if (g instanceof IndexedQuadArray) return 2L * (c / 4);
+            if (g instanceof IndexedGeometryStripArray && (g instanceof IndexedTriangleStripArray || g instanceof IndexedTriangleFanArray)) {
+                IndexedGeometryStripArray sa = (IndexedGeometryStripArray) g;
+                int[] counts = new int[sa.getNumStrips()];
+                sa.getStripIndexCounts(counts);
+                long t = 0;
+                for (int k : counts) t += Math.max(0, k - 2);
+                return t;
+            }
+            return 0;
+        }
+        int c = g.getValidVertexCount();
+        if (g instanceof TriangleArray) return c / 3;
+        if (g instanceof QuadArray) return 2L * (c / 4);
+        if (g instanceof TriangleStripArray || g instanceof TriangleFanArray) {
+            GeometryStripArray sa = (GeometryStripArray) g;
+            int[] counts = new int[sa.getNumStrips()];
+            sa.getStripVertexCounts(counts);
+            long t = 0;
+            for (int k : counts) t += Math.max(0, k - 2);
+            return t;
+        }
+        return 0;
     }
 
     private Part namedPart(Group g) {

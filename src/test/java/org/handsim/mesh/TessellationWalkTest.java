@@ -265,8 +265,10 @@ class TessellationWalkTest {
         }
         BranchGroup bg = new BranchGroup();
         bg.addChild(new Link(prev));
-        IllegalStateException e = assertThrows(IllegalStateException.class, () -> new TessellationWalk().maxTriangles(100_000).run(bg));
-        assertTrue(e.getMessage().contains("more than 100000 triangles"), e.getMessage());
+        IllegalStateException e = assertTimeoutPreemptively(Duration.ofSeconds(1),
+            () -> assertThrows(IllegalStateException.class, () -> new TessellationWalk().run(bg)));
+        assertTrue(e.getMessage().contains("expands to 2199023255552 triangles, more than the limit of 20000000"), e.getMessage());
+        assertEquals(2L << 40, TessellationWalk.expandedTriangles(bg));
     }
 
     @Test
