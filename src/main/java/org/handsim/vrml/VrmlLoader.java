@@ -204,7 +204,7 @@ public final class VrmlLoader extends LoaderBase {
     }
 
     /** Stack of the thread that parses and builds: enough for {@link #maxDepth} levels whatever the caller's stack. */
-    private static final long WORKER_STACK = 256L << 20;
+    private static final long WORKER_STACK = 64L << 20;
 
     /**
      * Runs a load on a fresh thread with a large stack and waits for it. Parsing and scene
