@@ -20,6 +20,8 @@ public final class HandSim implements Runnable {
     static final List<Class<?>> SUBCOMMANDS = List.of(
         FkCommand.class,
         IkCommand.class,
+        MeshCommand.class,
+        IdCommand.class,
         CollideCommand.class
         // sub-commands register here, one line each
     );
