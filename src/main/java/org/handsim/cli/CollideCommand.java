@@ -14,6 +14,7 @@ import org.handsim.collision.KdopTree;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
+import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
@@ -21,6 +22,9 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import org.handsim.vrml.VrmlLoader;
+import org.handsim.vrml.VrmlParseException;
+import org.handsim.vrml.VrmlScene;
 
 /**
  * {@code handsim collide A.wrl B.wrl [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}: the
@@ -78,15 +82,24 @@ public final class CollideCommand implements Callable<Integer> {
     }
 
     /**
-     * Loads a VRML97 file as one triangle mesh.
+     * Loads a VRML97 file as one triangle mesh in the file's frame (VrmlLoader, then the
+     * tessellation walk with every transform applied; vertices as in the file, not welded).
      *
-     * <p>LOADER PENDING: the VRML97 loader and tessellation walk (branch {@code vrml}) are not
-     * merged yet; until they are, every file fails to load with exit code 3. Replace the body by
-     * {@code VrmlLoader} + {@code TessellationWalk.mesh(scene)} when they land.
+     * @throws CliError exit 3 with FILE:LINE:COL: message when the file cannot be loaded
      */
     static TriangleMesh loadMesh(Path file) {
         if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
-        throw new CliError(CliError.LOAD, "handsim: " + file + ": cannot load VRML yet (the loader of branch vrml is not merged)");
+        VrmlScene scene;
+        try {
+            scene = new VrmlLoader().load(file);
+        } catch (VrmlParseException e) {
+            throw new CliError(CliError.LOAD, e.getMessage(), e);
+        }
+        try {
+            return new TessellationWalk().name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
+        } catch (IllegalStateException | IllegalArgumentException e) {
+            throw new CliError(CliError.LOAD, file + ":1:1: " + e.getMessage(), e);
+        }
     }
 
     /**

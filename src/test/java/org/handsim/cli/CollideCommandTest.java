@@ -41,6 +41,41 @@ class CollideCommandTest {
         assertTrue(json.startsWith("{\"intersecting\":false,\"pairs\":0,\"segments\":0,\"patches\":[],\"counters\":{\"node_tests\":1,\"tri_tests\":0}"), json);
     }
 
+    /**
+     * The shared bench meshes through the command: the same intersecting pairs as FCL 0.7
+     * (rotated overlap 56 / 122 / 238 / 486, sphere on box 20 / 32 / 56 / 116).
+     */
+    @Test
+    void benchMeshesGiveFclsPairCounts() {
+        org.junit.jupiter.api.Assumptions.assumeTrue(org.handsim.TestPaths.hasShared(), "../shared not present");
+        java.nio.file.Path dir = org.handsim.TestPaths.shared().resolve("bench-meshes");
+        int[] rot = {56, 122, 238, 486}, box = {20, 32, 56, 116};
+        for (int level = 2; level <= 5; level++) {
+            String s = dir.resolve("icosphere_s" + level + ".wrl").toString();
+            Run r = run("collide", s, s, "--pose-b", "1.5,0.0,0.0,0.18708286933869706,0.3741657386773941,0.5612486080160912");
+            assertEquals(0, r.code(), r.err());
+            assertTrue(r.out().startsWith("{\"intersecting\":true,\"pairs\":" + rot[level - 2] + ","), r.out());
+            r = run("collide", s, dir.resolve("box_2x2x2.wrl").toString(), "--pose-b", "1.95,0.13,0.07,0.0,0.0,0.0", "--k", "26");
+            assertEquals(0, r.code(), r.err());
+            assertTrue(r.out().startsWith("{\"intersecting\":true,\"pairs\":" + box[level - 2] + ","), r.out());
+        }
+        Run sep = run("collide", dir.resolve("icosphere_s3.wrl").toString(), dir.resolve("icosphere_s3.wrl").toString(), "--pose-b", "2.5,0,0,0,0,0");
+        assertTrue(sep.out().startsWith("{\"intersecting\":false,\"pairs\":0,"), sep.out());
+    }
+
+    @Test
+    void unreadableVrmlExitsThree() throws java.io.IOException {
+        java.nio.file.Path bad = java.nio.file.Files.createTempFile("bad", ".wrl");
+        java.nio.file.Files.writeString(bad, "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 ");
+        try {
+            Run r = run("collide", bad.toString(), bad.toString());
+            assertEquals(3, r.code());
+            assertTrue(r.err().startsWith(bad.toString()), r.err());
+        } finally {
+            java.nio.file.Files.delete(bad);
+        }
+    }
+
     @Test
     void helpWorks() {
         Run r = run("collide", "--help");

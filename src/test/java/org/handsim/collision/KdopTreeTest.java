@@ -30,9 +30,26 @@ class KdopTreeTest {
             ax / l * ang, ay / l * ang, az / l * ang);
     }
 
+    /** HandSim's own models (vrml/objects, vrml/hand), in metres. */
+    static final String[] MODELS = {"objects/cube.wrl", "objects/sphere.wrl", "objects/cylinder.wrl", "objects/cone.wrl",
+        "objects/lblock.wrl", "objects/ring.wrl", "objects/mug.wrl", "hand/finger_link1.wrl", "hand/finger_link2.wrl",
+        "hand/finger_link3.wrl", "hand/palm.wrl"};
+    /** Real-world files of ../shared/vrml-corpus (scaled to 6 cm; some have zero-area triangles). */
+    static final String[] CORPUS = {"rl-examples_puma560/unimation-puma560.wrl", "freewrl_40.wrl", "java3d-vrml97_test.wrl",
+        "openhrp3_pa10_3.wrl", "rl-examples_alpha1/alpha1.wrl", "choreonoid_hand_base.wrl", "freewrl_14.wrl"};
+    private static final java.util.Map<String, TriangleMesh> LOADED = new java.util.HashMap<>();
+
+    static synchronized TriangleMesh loaded(java.nio.file.Path file, boolean fit) {
+        return LOADED.computeIfAbsent(file.toString(), f -> fit ? TestMeshes.fit(TestMeshes.vrml(file), 0.06) : TestMeshes.vrml(file));
+    }
+
     /** One of the test shapes, a few centimetres across, chosen by {@code kind}. */
     static TriangleMesh shape(int kind, SplittableRandom r) {
         switch (kind) {
+            case 6: return loaded(org.handsim.TestPaths.root().resolve("vrml").resolve(MODELS[r.nextInt(MODELS.length)]), false);
+            case 7:
+                if (!org.handsim.TestPaths.hasShared()) return TestMeshes.box(0.02, 0.02, 0.02, 2);
+                return loaded(org.handsim.TestPaths.shared().resolve("vrml-corpus").resolve(CORPUS[r.nextInt(CORPUS.length)]), true);
             case 0: return TestMeshes.icosphere(2, 0.02);
             case 1: return TestMeshes.bumpy(2, 0.02, 0.15, r);
             case 2: return TestMeshes.box(0.02, 0.015, 0.01, 1 + r.nextInt(4));
@@ -49,12 +66,14 @@ class KdopTreeTest {
         CollisionResult expected = new CollisionResult(), got = new CollisionResult();
         TreeQuery[] queries = {new TreeQuery().placement(TreeQuery.Placement.TRANSFORM), new TreeQuery().placement(TreeQuery.Placement.REFIT)};
         int intersecting = 0, totalPairs = 0, configurations = 0;
+        long degenerate = 0;
         for (int c = 0; c < 200; c++) {
-            TriangleMesh a = shape(r.nextInt(6), r), b = shape(r.nextInt(6), r);
-            RigidTransform pose = c % 10 == 9 ? RigidTransform.IDENTITY : randomPose(r, 0.03);
+            TriangleMesh a = shape(r.nextInt(8), r), b = shape(r.nextInt(8), r);
+            RigidTransform pose = c % 10 == 9 ? RigidTransform.IDENTITY : randomPose(r, 0.04);
             brute.collide(a, b, pose, expected);
             long[] want = expected.sortedPairKeys();
             if (want.length > 0) intersecting++;
+            degenerate += expected.degenerateSkipped;
             totalPairs += want.length;
             for (int k : Kdop.SUPPORTED_K) {
                 for (KdopTree.SplitRule rule : KdopTree.SplitRule.values()) {
@@ -71,8 +90,8 @@ class KdopTreeTest {
                 }
             }
         }
-        System.out.printf(Locale.ROOT, "tree vs brute force: 200 cases (%d intersecting, %d pairs), %d tree configurations%n",
-            intersecting, totalPairs, configurations);
+        System.out.printf(Locale.ROOT, "tree vs brute force: 200 cases (%d intersecting, %d pairs, %d degenerate pairs skipped), %d tree configurations%n",
+            intersecting, totalPairs, degenerate, configurations);
         assertTrue(intersecting > 100, "too few intersecting cases: " + intersecting);
     }
 

@@ -155,11 +155,17 @@ public final class TestMeshes {
         return toMesh("grid", v, f);
     }
 
-    /** n random triangles with vertices in [−s, s]³ (not welded, not closed). */
+    /**
+     * n random triangles with vertices in [−s, s]³ (not welded, not closed); every 20th has
+     * zero area (its third vertex the exact midpoint of the first two).
+     */
     public static TriangleMesh soup(int n, double s, SplittableRandom r) {
         double[] v = new double[9 * n];
         int[] t = new int[3 * n];
         for (int i = 0; i < 9 * n; i++) v[i] = (2 * r.nextDouble() - 1) * s;
+        for (int i = 0; i < n; i += 20) {
+            for (int c = 0; c < 3; c++) v[9 * i + 6 + c] = (v[9 * i + c] + v[9 * i + 3 + c]) / 2;
+        }
         for (int i = 0; i < 3 * n; i++) t[i] = i;
         return new TriangleMesh("soup", v, t);
     }
@@ -175,6 +181,24 @@ public final class TestMeshes {
             v[i + 2] *= f;
         }
         return new TriangleMesh("bumpy", v, s.triangles());
+    }
+
+    /** Loads a VRML97 file as one mesh (VrmlLoader + tessellation walk, transforms applied). */
+    public static TriangleMesh vrml(java.nio.file.Path file) {
+        org.handsim.vrml.VrmlScene scene = new org.handsim.vrml.VrmlLoader().load(file);
+        return new org.handsim.mesh.TessellationWalk().name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
+    }
+
+    /** The mesh moved so its bounding box is centred at the origin and scaled so its largest side is {@code size}. */
+    public static TriangleMesh fit(TriangleMesh m, double size) {
+        double[][] b = m.bounds();
+        double ext = Math.max(b[1][0] - b[0][0], Math.max(b[1][1] - b[0][1], b[1][2] - b[0][2]));
+        double s = size / ext;
+        double[] v = m.vertices().clone();
+        for (int i = 0; i < v.length; i += 3) {
+            for (int c = 0; c < 3; c++) v[i + c] = (v[i + c] - 0.5 * (b[0][c] + b[1][c])) * s;
+        }
+        return new TriangleMesh(m.name(), v, m.triangles());
     }
 
     private static TriangleMesh toMesh(String name, List<double[]> v, List<int[]> f) {
