@@ -18,6 +18,7 @@ public final class BenchMain {
         SUITES.put("kinematics", new KinematicsBench());
         SUITES.put("dynamics", new DynamicsBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
+        SUITES.put("collision", new CollisionBench());
         SUITES.put("vrml", new VrmlBench());
     }
 

@@ -111,6 +111,10 @@ public final class TreeQuery {
         double[] bv = b.vertices();
         int nbv = bv.length / 3, nbt = b.tris.length / 3;
         boolean identity = isIdentity(m);
+        if (!identity && !rootBoxesMayOverlap(a, b)) {
+            out.nodeTests = out.kdopTests = 1;
+            return;
+        }
         boolean refit = !identity && placement == Placement.REFIT;
         lazy = !identity && placement == Placement.TRANSFORM;
         if (++stamp == Integer.MAX_VALUE) {
@@ -148,6 +152,26 @@ public final class TreeQuery {
         normalsPlaced = identity;
         walk(a, b, out, stopAtFirst);
         out.exactPredicates = tt.predicates().exactCalls() - exact0;
+    }
+
+    /**
+     * The cheap first test: B's root box (k-DOP slots 0..5), placed by m as an oriented box and
+     * bounded by an axis-aligned one (Arvo's |R| rule), against A's root box, widened by 1e-12
+     * of the magnitudes for rounding. False only if the roots cannot overlap: then no placement
+     * work at all (the separated case costs a few dozen flops).
+     */
+    private boolean rootBoxesMayOverlap(KdopTree a, KdopTree b) {
+        double[] ra = a.bounds, rb = b.bounds;
+        double cx = 0.5 * (rb[0] + rb[1]), cy = 0.5 * (rb[2] + rb[3]), cz = 0.5 * (rb[4] + rb[5]);
+        double ex = 0.5 * (rb[1] - rb[0]), ey = 0.5 * (rb[3] - rb[2]), ez = 0.5 * (rb[5] - rb[4]);
+        for (int i = 0; i < 3; i++) {
+            double r0 = m[4 * i], r1 = m[4 * i + 1], r2 = m[4 * i + 2], t = m[4 * i + 3];
+            double c = r0 * cx + r1 * cy + r2 * cz + t;
+            double e = Math.abs(r0) * ex + Math.abs(r1) * ey + Math.abs(r2) * ez;
+            double mg = 1e-12 * (Math.abs(r0 * cx) + Math.abs(r1 * cy) + Math.abs(r2 * cz) + Math.abs(t) + e);
+            if (c - e - mg > ra[2 * i + 1] || c + e + mg < ra[2 * i]) return false;
+        }
+        return true;
     }
 
     // per-query state of the walk
