@@ -46,10 +46,15 @@ final class CollisionBench implements BenchMain.Suite {
             return;
         }
         List<String[]> rows = scenarios(dir.resolve("scenarios.csv"));
+        // hand scale: HandSim's own object and finger-link models (DESIGN.md decision 4's case)
+        rows.add(new String[] {"hand_sphere_link2", "objects/sphere.wrl", "hand/finger_link2.wrl", "0.06,0,0.03,0,0.3,0"});
+        rows.add(new String[] {"hand_mug_link3", "objects/mug.wrl", "hand/finger_link3.wrl", "0.05,0.02,0.03,0.1,0.5,0.2"});
+        Path models = Path.of(System.getProperty("handsim.root", ".")).resolve("vrml");
         for (String[] row : rows) {
             for (int c = 1; c <= 2; c++) {
                 if (!meshes.containsKey(row[c])) {
-                    meshes.put(row[c], TessellationWalk.mesh(new VrmlLoader().load(dir.resolve(row[c])).getSceneGroup()));
+                    Path f = row[c].contains("/") ? models.resolve(row[c]) : dir.resolve(row[c]);
+                    meshes.put(row[c], TessellationWalk.mesh(new VrmlLoader().load(f).getSceneGroup()));
                 }
             }
         }
