@@ -18,7 +18,8 @@ public final class BenchMain {
         SUITES.put("kinematics", new KinematicsBench());
         SUITES.put("dynamics", new DynamicsBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
-        SUITES.put("collision", new CollisionBench());
+        SUITES.put("collision", new CollisionBench(false));
+        SUITES.put("collision-fcl", new CollisionBench(true));
         SUITES.put("vrml", new VrmlBench());
     }
 
