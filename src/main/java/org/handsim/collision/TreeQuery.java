@@ -25,9 +25,11 @@ import org.handsim.math.RigidTransform;
  *       ({@link TransformedBounds}; leaves are fitted exactly to their placed vertices); transform
  *       only the B vertices the walk touches. Internal bounds are looser than refitted ones (a
  *       k-DOP of a rotated k-DOP), so the walk tests more node pairs, but it never pays for the
- *       parts of B far from A. Measured: 1.2–1.9× faster than REFIT on the 320-triangle spheres,
- *       4–7× at 20 480 triangles, 50–170× on the near miss; REFIT wins only where B is the
- *       12-triangle box (by a microsecond or two).</li>
+ *       parts of B far from A. Measured (docs/BENCHMARKS.md, rotated sphere overlap, k = 18):
+ *       about equal at 320 triangles, 1.5× faster at 1 280, 3.7× at 5 120, 7× at 20 480;
+ *       40–160× on the near misses (a refit is O(n) even when nothing is close); at hand scale
+ *       (140-triangle finger links against the sphere and the mug) within ±30 % either way,
+ *       and REFIT is a microsecond ahead only where B is the 12-triangle box.</li>
  * </ul>
  * Both give exactly the same pairs (the bounds are conservative, and B's vertices are
  * transformed by the same formula, {@link KdopTree#transformPoints}). Before either, B's root
