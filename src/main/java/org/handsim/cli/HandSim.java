@@ -19,7 +19,8 @@ public final class HandSim implements Runnable {
     /** Every sub-command, in the order `handsim --help` lists them. */
     static final List<Class<?>> SUBCOMMANDS = List.of(
         FkCommand.class,
-        IkCommand.class
+        IkCommand.class,
+        GuiCommand.class
         // sub-commands register here, one line each
     );
 
