@@ -19,6 +19,7 @@ public final class FingerClutch {
     private ClutchState beforeStall = ClutchState.FREE;
     private double qContact = Double.NaN, qBreak = Double.NaN, qStall = Double.NaN;
     private double heldTheta2, heldTheta3;
+    private double theta3AtBreak;
     private double tauAtBreak;
     private double motor;
 
@@ -71,11 +72,15 @@ public final class FingerClutch {
                 break;
             case BROKEN:
                 motor = q;
-                if (q <= qBreak) { // re-engage where the breakaway happened
-                    state = ClutchState.FREE;
+                if (q <= qBreak) {
+                    // re-engage where the breakaway happened: the spur gear grips again with the
+                    // Belleville springs still wound by qBreak − qContact, so the held links stay
+                    // put (BLOCKED) until the motor has unwound them (FREE below qContact)
+                    state = ClutchState.BLOCKED;
+                    heldTheta3 = theta3AtBreak;
                     qBreak = Double.NaN;
-                    qContact = Double.NaN;
                     tauAtBreak = 0;
+                    if (q < qContact) state = ClutchState.FREE;
                 }
                 break;
             case STALLED:
@@ -99,13 +104,21 @@ public final class FingerClutch {
     }
 
     private double qAtOuterLimit() {
-        // eq (10) solved for q at θ3 = θ3max
-        double deg = Math.toDegrees(theta3Max);
-        return (deg * 375 + 3 * qBreak) / 4;
+        // eq (10) (continuous form, see brokenOuterAngle) solved for q at θ3 = θ3max
+        return qBreak + (theta3Max - theta3AtBreak) / tr.outerRadPerCount(true);
     }
 
     private double outerAngleRaw() {
-        return Math.toRadians((4 * motor - 3 * qBreak) / 375.0);
+        return brokenOuterAngle(motor);
+    }
+
+    /**
+     * Eq (10) in the form that keeps the outer joint continuous: θk3 = θk3,break + 4/375°·(q − q_break).
+     * The paper has no wind-up phase, so there θk3,break = q_break/375° and this is exactly
+     * 4/375·q − 3/375·q_break; here the links were held from q_contact, so θk3,break = q_contact/375°.
+     */
+    private double brokenOuterAngle(double q) {
+        return theta3AtBreak + tr.outerRadPerCount(true) * (q - qBreak);
     }
 
     /** The inner link met the object at motor count q while closing: FREE → BLOCKED. */
@@ -124,8 +137,9 @@ public final class FingerClutch {
     }
 
     private void stall(ClutchState from, double q) {
+        double t3 = Math.min(theta3Max, theta3At(from, q));
         heldTheta2 = theta2At(from, q);
-        heldTheta3 = Math.min(theta3Max, theta3At(from, q));
+        heldTheta3 = t3;
         beforeStall = from;
         qStall = q;
         motor = Math.min(motor, qStallMotorLimit());
@@ -139,6 +153,7 @@ public final class FingerClutch {
     public void breakAway(double qb, double tauAtBreak) {
         if (state != ClutchState.BLOCKED) return;
         qBreak = qb;
+        theta3AtBreak = heldTheta3;
         this.tauAtBreak = tauAtBreak;
         state = ClutchState.BROKEN;
         if (outerAngleRaw() > theta3Max) stall(ClutchState.BROKEN, qAtOuterLimit());
@@ -149,7 +164,7 @@ public final class FingerClutch {
     }
 
     private double theta3At(ClutchState s, double q) {
-        return s == ClutchState.BROKEN ? Math.toRadians((4 * q - 3 * qBreak) / 375.0) : tr.outerAngle(clampCounts(q));
+        return s == ClutchState.BROKEN ? brokenOuterAngle(q) : tr.outerAngle(clampCounts(q));
     }
 
     private double clampCounts(double q) {
@@ -165,7 +180,7 @@ public final class FingerClutch {
     public double theta3() {
         switch (state) {
             case FREE: return tr.outerAngle(clampCounts(motor));
-            case BROKEN: return Math.toRadians((4 * motor - 3 * qBreak) / 375.0);
+            case BROKEN: return brokenOuterAngle(motor);
             default: return heldTheta3;
         }
     }
@@ -179,7 +194,7 @@ public final class FingerClutch {
     public double theta3For(double q) {
         switch (state) {
             case FREE: return tr.outerAngle(clampCounts(q));
-            case BROKEN: return Math.toRadians((4 * q - 3 * qBreak) / 375.0);
+            case BROKEN: return brokenOuterAngle(q);
             default: return heldTheta3;
         }
     }

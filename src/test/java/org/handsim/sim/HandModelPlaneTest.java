@@ -97,14 +97,24 @@ class HandModelPlaneTest {
         m.run(null);
         double qb = m.breakawayCounts(3);
         assertTrue(qb > 6000 && qb < 7000, "qb " + qb);
+        double qc = m.contactCounts(3);
         Recorder r = m.recorder();
-        int reengage = -1;
+        int reengage = -1, free = -1;
         for (int row = 1; row < r.rows(); row++) {
-            if (r.state(3, row - 1) != ClutchState.FREE && r.state(3, row) == ClutchState.FREE) reengage = row;
+            if (r.state(3, row - 1) == ClutchState.BROKEN && r.state(3, row) == ClutchState.BLOCKED) reengage = row;
+            if (r.state(3, row - 1) == ClutchState.BLOCKED && r.state(3, row) == ClutchState.FREE) free = row;
         }
+        // the clutch grips again on the step that passes q_break, springs still wound ...
         assertTrue(reengage > 0);
         assertTrue(r.get(3, Recorder.Q, reengage) <= qb && r.get(3, Recorder.Q, reengage - 1) > qb,
             "re-engaged on the step that passed q_break");
+        // ... and the links follow the motor again once it has unwound them, below q_contact
+        assertTrue(free > reengage);
+        assertTrue(r.get(3, Recorder.Q, free) < qc && r.get(3, Recorder.Q, free - 1) >= qc);
+        for (int row = 1; row < r.rows(); row++) {
+            assertEquals(r.get(3, Recorder.TH3, row - 1), r.get(3, Recorder.TH3, row), 0.2 * Math.PI / 180,
+                "the outer joint never jumps (row " + row + ")");
+        }
         assertEquals(ClutchState.FREE, m.state(3));
         assertEquals(0, m.joints(3)[1], 1e-12);
     }
