@@ -48,10 +48,6 @@ public final class GuiCommand implements Callable<Integer> {
     @Override
     public Integer call() throws InterruptedException {
         PrintWriter out = spec.commandLine().getOut(), err = spec.commandLine().getErr();
-        if (GraphicsEnvironment.isHeadless()) {
-            throw CliError.usage("handsim gui: no display (DISPLAY is not set): run it under a virtual display with "
-                + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");
-        }
         Double speedFactor = null;
         if (speed != null) {
             if (speed.equalsIgnoreCase("max")) {
@@ -83,6 +79,10 @@ public final class GuiCommand implements Callable<Integer> {
             }
         }
         Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario());
+        if (GraphicsEnvironment.isHeadless()) {
+            throw CliError.usage("handsim gui: no display (DISPLAY is not set or Java runs headless): run it under a virtual display with "
+                + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");
+        }
         Path scriptDir = script != null ? script.toAbsolutePath().getParent() : null;
         return GuiLauncher.run(new GuiLauncher.Options(scenario, actions, scriptDir, screenshot, measureFps, speedFactor), out, err);
     }
