@@ -42,6 +42,9 @@ public final class GuiCommand implements Callable<Integer> {
         description = "at the end, render continuously for SECONDS and print the frames per second, then exit")
     Double measureFps;
 
+    @Option(names = "--object", paramLabel = "FILE.wrl", description = "import this VRML97 object at the start (as the Objects panel does)")
+    Path object;
+
     @Option(names = "--speed", paramLabel = "FACTOR|max", description = "simulation speed: 1 = real time (default), max = as fast as possible")
     String speed;
 
@@ -83,7 +86,8 @@ public final class GuiCommand implements Callable<Integer> {
             throw CliError.usage("handsim gui: no display (DISPLAY is not set or Java runs headless): run it under a virtual display with "
                 + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");
         }
+        if (object != null && !Files.isRegularFile(object)) throw new CliError(CliError.LOAD, "handsim: --object " + object + ": no such file");
         Path scriptDir = script != null ? script.toAbsolutePath().getParent() : null;
-        return GuiLauncher.run(new GuiLauncher.Options(scenario, actions, scriptDir, screenshot, measureFps, speedFactor), out, err);
+        return GuiLauncher.run(new GuiLauncher.Options(scenario, actions, scriptDir, screenshot, measureFps, speedFactor, object), out, err);
     }
 }

@@ -36,8 +36,9 @@ public final class GuiLauncher {
      * @param screenshot PNG to save at the end, or null
      * @param measureFps seconds of continuous rendering to measure at the end, or null
      * @param speed      simulation speed (0 = as fast as possible), or null for real time
+     * @param object     a VRML97 file to import before the script, or null
      */
-    public record Options(Scenario scenario, Script script, Path scriptDir, Path screenshot, Double measureFps, Double speed) {
+    public record Options(Scenario scenario, Script script, Path scriptDir, Path screenshot, Double measureFps, Double speed, Path object) {
         boolean scripted() { return script != null || screenshot != null || measureFps != null; }
     }
 
@@ -70,17 +71,25 @@ public final class GuiLauncher {
                 return 1;
             }
         } else {
-            out.println(String.format(Locale.ROOT, "gui: first frame after %d ms (from the JVM's start; %d ms after the command began)",
-                w.view().firstFrameMillisSinceJvmStart(), (System.nanoTime() - start) / 1_000_000));
+            out.println(String.format(Locale.ROOT, "gui: first frame after %d ms (from the JVM's start; %d ms after the command began; epoch ms %d)",
+                w.view().firstFrameMillisSinceJvmStart(), (System.nanoTime() - start) / 1_000_000, w.view().firstFrameEpochMillis()));
             out.flush();
         }
+        ScriptRunner runner = new ScriptRunner(w, out, o.scriptDir());
         if (!o.scripted()) {
+            if (o.object() != null) {
+                try {
+                    runner.importObject(o.object().toAbsolutePath());
+                } catch (Exception e) {
+                    err.println("handsim gui: --object " + o.object() + ": " + ScriptRunner.message(e));
+                }
+            }
             w.awaitClosed();
             return 0;
         }
         int code = 0;
-        ScriptRunner runner = new ScriptRunner(w, out, o.scriptDir());
         try {
+            if (o.object() != null) runner.importObject(o.object().toAbsolutePath());
             if (o.script() != null) runner.run(o.script());
             if (o.screenshot() != null) runner.screenshot(o.screenshot().toAbsolutePath());
             if (o.measureFps() != null) {

@@ -62,6 +62,8 @@ import org.handsim.sim.Scenario;
 public final class HandSimWindow {
     /** Milliseconds between view updates (~40 Hz). */
     public static final int TICK_MS = 25;
+    /** While the simulation plays the charts are redrawn every this many ticks (~8 Hz). */
+    static final int CHART_TICKS = 5;
     /** The four buttons of the paper, in order. */
     public static final List<String> TOOLS = List.of("Kinematics", "Path Planning", "Dynamics", "Objects");
 
@@ -87,6 +89,7 @@ public final class HandSimWindow {
     private Pose preview;
     private long shownPublication = -1;
     private int ticks;
+    private boolean chartsDirty;
     private String shownError, shownNote;
     private MeshSource.Model objectModel;
     private Path objectFile;
@@ -132,7 +135,7 @@ public final class HandSimWindow {
         toolPanel.add(scroll(pathPlanning.component()), TOOLS.get(1));
         toolPanel.add(scroll(dynamics.component()), TOOLS.get(2));
         toolPanel.add(scroll(objects.component()), TOOLS.get(3));
-        toolPanel.setPreferredSize(new Dimension(370, 600));
+        toolPanel.setPreferredSize(new Dimension(360, 600));
 
         JPanel content = new JPanel(new BorderLayout());
         content.add(toolbar(), BorderLayout.NORTH);
@@ -142,7 +145,7 @@ public final class HandSimWindow {
         centre.add(view.canvas(), BorderLayout.CENTER);
         centre.setMinimumSize(new Dimension(300, 300));
         content.add(centre, BorderLayout.CENTER);
-        charts.panel().setPreferredSize(new Dimension(430, 600));
+        charts.panel().setPreferredSize(new Dimension(410, 600));
         content.add(charts.panel(), BorderLayout.EAST);
         status.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
         status.setName("status");
@@ -371,6 +374,7 @@ public final class HandSimWindow {
         if (closed.getCount() == 0) return;
         timer.stop();
         runner.close();
+        charts.close();
         view.dispose();
         closed.countDown();
     }
@@ -397,9 +401,11 @@ public final class HandSimWindow {
                 if (s.note() != null) status(s.note(), true);
             }
         }
-        int rows = runner.drainTrace(charts::add);
-        if (rows > 0 || ticks % 4 == 0) {
-            if (!s.playing() || ticks % 3 == 0) charts.flush();
+        if (runner.drainTrace(charts::add) > 0) chartsDirty = true;
+        // the charts are drawn on their own thread: ask for a redraw every CHART_TICKS ticks while playing
+        if (chartsDirty && (!s.playing() || ticks % CHART_TICKS == 0)) {
+            charts.flush();
+            chartsDirty = false;
         }
     }
 

@@ -307,6 +307,9 @@ public final class SceneView {
     /** Milliseconds from the JVM's start to the first rendered frame, or -1 before it. */
     public long firstFrameMillisSinceJvmStart() { return canvas.firstFrameMs; }
 
+    /** Wall-clock time of the first rendered frame (ms since 1970), or -1 before it. */
+    public long firstFrameEpochMillis() { return canvas.firstFrameEpochMs; }
+
     /**
      * Renders continuously for {@code seconds}, turning the scene slowly about the vertical
      * axis so every frame differs, and returns the frames per second actually swapped. Blocks:
@@ -445,7 +448,7 @@ public final class SceneView {
     private static final class FrameCountingCanvas extends Canvas3D {
         private static final long serialVersionUID = 1L;
         final AtomicLong frames = new AtomicLong();
-        volatile long firstFrameMs = -1;
+        volatile long firstFrameMs = -1, firstFrameEpochMs = -1;
 
         FrameCountingCanvas(GraphicsConfiguration gc) {
             super(gc);
@@ -454,7 +457,8 @@ public final class SceneView {
         @Override
         public void postSwap() {
             if (firstFrameMs < 0) {
-                firstFrameMs = System.currentTimeMillis() - ManagementFactory.getRuntimeMXBean().getStartTime();
+                firstFrameEpochMs = System.currentTimeMillis();
+                firstFrameMs = firstFrameEpochMs - ManagementFactory.getRuntimeMXBean().getStartTime();
             }
             frames.incrementAndGet();
         }

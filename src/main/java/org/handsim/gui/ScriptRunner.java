@@ -90,7 +90,7 @@ public final class ScriptRunner {
         }
     }
 
-    private static String message(Throwable e) {
+    static String message(Throwable e) {
         Throwable c = e instanceof ExecutionException || e instanceof InvocationTargetException ? e.getCause() : e;
         return c.getMessage() != null ? c.getMessage() : c.toString();
     }
@@ -99,15 +99,9 @@ public final class ScriptRunner {
         switch (a.verb()) {
             case PRESS: edt(() -> { press(a.arg(0)); return null; }); break;
             case SET: edt(() -> { set(a.arg(0), a.arg(1)); return null; }); break;
-            case IMPORT: {
-                Path f = resolve(a.arg(0));
-                Future<?> done = edt(() -> window.objectsPanel().importFile(f));
-                done.get(5, TimeUnit.MINUTES);
-                window.runner().sync();
-                edt(() -> { window.refreshNow(); return null; });
-                say("imported " + f);
+            case IMPORT:
+                importObject(resolve(a.arg(0)));
                 break;
-            }
             case PLAY: play(a.arg(0)); break;
             case SPEED: {
                 double f = a.arg(0).equals("max") ? 0 : Double.parseDouble(a.arg(0));
@@ -152,6 +146,15 @@ public final class ScriptRunner {
             default:
                 throw new AssertionError(a.verb());
         }
+    }
+
+    /** Imports an object as the Objects panel's file chooser does, and waits until it is in the view and the model. */
+    public void importObject(Path f) throws Exception {
+        Future<?> done = edt(() -> window.objectsPanel().importFile(f));
+        done.get(5, TimeUnit.MINUTES);
+        window.runner().sync();
+        edt(() -> { window.refreshNow(); return null; });
+        say("imported " + f);
     }
 
     private void say(String line) {
@@ -245,18 +248,29 @@ public final class ScriptRunner {
         r.sync();
         double now = r.latest().time();
         double target = arg.equals("end") ? Double.POSITIVE_INFINITY : now + Double.parseDouble(arg);
+        long frames0 = window.view().framesRendered(), wall0 = System.nanoTime();
         edt(() -> { window.playUntil(target); return null; });
         r.sync();
         long deadline = System.currentTimeMillis() + PLAY_TIMEOUT_MS;
         SimulationRunner.State s = r.latest();
+        // probe the event dispatch thread: how late does a posted event run while the model plays?
+        java.util.concurrent.atomic.AtomicLong worstLatency = new java.util.concurrent.atomic.AtomicLong();
+        int probes = 0;
         while (s.playing()) {
             if (System.currentTimeMillis() > deadline) throw new ScriptFailure("still playing after " + PLAY_TIMEOUT_MS / 1000 + " s", 1);
+            long posted = System.nanoTime();
+            SwingUtilities.invokeLater(() -> worstLatency.accumulateAndGet(System.nanoTime() - posted, Math::max));
+            probes++;
             Thread.sleep(20);
             s = r.latest();
         }
         edt(() -> { window.refreshNow(); return null; });
         if (s.error() != null) throw new ScriptFailure(s.error(), 4);
-        say(String.format(Locale.ROOT, "played to t = %.4f s%s", s.time(), s.finished() ? " (end of the scenario)" : ""));
+        double wall = (System.nanoTime() - wall0) / 1e9;
+        long frames = window.view().framesRendered() - frames0;
+        say(String.format(Locale.ROOT, "played to t = %.4f s%s in %.2f s wall; the 3D view showed %d frames (%.1f per second); "
+            + "event dispatch thread latency at most %.1f ms (%d probes)",
+            s.time(), s.finished() ? " (end of the scenario)" : "", wall, frames, frames / wall, worstLatency.get() / 1e6, probes));
     }
 
     private void log(String what) throws Exception {
@@ -291,8 +305,9 @@ public final class ScriptRunner {
      */
     public void screenshot(Path file) throws Exception {
         window.runner().sync();
+        edt(() -> { window.refreshNow(); return null; });
+        window.charts().awaitDrawn();
         edt(() -> {
-            window.refreshNow();
             window.frame().toFront();
             window.frame().getRootPane().paintImmediately(window.frame().getRootPane().getBounds());
             return null;

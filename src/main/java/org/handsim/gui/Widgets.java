@@ -66,7 +66,8 @@ final class Widgets {
 
     /** Formats a number for a field (fixed decimals, '.' as the decimal point). */
     static String fmt(double v, int decimals) {
-        return String.format(Locale.ROOT, "%." + decimals + "f", v);
+        String s = String.format(Locale.ROOT, "%." + decimals + "f", v);
+        return s.matches("-0(\\.0*)?") ? s.substring(1) : s;   // no "-0.00"
     }
 
     static <T extends JComponent> T titled(T c, String title) {
