@@ -18,13 +18,15 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim gui}: the desktop program (Swing + Java3D), interactive or scripted. */
 @Command(name = "gui", mixinStandardHelpOptions = true,
-    description = {"Opens the simulator's window (paper Fig. 5): Kinematics, Path Planning, Dynamics and Objects",
-        "panels, Play/Pause/Step/Reset, the 3D view of the hand and object with contact points and normals",
-        "(mouse: left drag orbits, wheel or middle drag zooms, right drag pans) and live joint traces.",
-        "Default scenario: the paper's breakaway experiment (scenarios/paper-breakaway.json).",
-        "Needs a display; without one run it under a virtual display:",
-        "  xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ...   (or ./handsim gui, which starts Xvfb itself)",
-        "With --script, --screenshot or --measure-fps it runs unattended and exits when done."},
+    description = {"Opens the simulator's window (paper Fig. 5): the Kinematics, Path Planning,",
+        "Dynamics and Objects panels, Play/Pause/Step/Reset, the 3D view of the hand",
+        "and the object with contact points and normals (mouse: left drag orbits,",
+        "wheel or middle drag zooms, right drag pans) and live joint traces.",
+        "Default scenario: the paper's experiment, scenarios/paper-breakaway.json.",
+        "It needs a display. Without one, use a virtual display:",
+        "  xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ...",
+        "or ./handsim gui, which starts Xvfb itself. With --script, --screenshot or",
+        "--measure-fps it runs unattended and exits when done."},
     footer = {"", Script.HELP})
 public final class GuiCommand implements Callable<Integer> {
     @Spec CommandSpec spec;

@@ -59,21 +59,22 @@ public final class Script {
      * The language in brief, for {@code handsim gui --help} (a compile-time constant for
      * picocli's annotations; {@code %n} is a line break there).
      */
-    public static final String HELP = "Script actions (one per line; '#' starts a comment; output lines start with 'gui: '):%n"
-        + "  press LABEL               click a button by label or name (press Kinematics, press Run with dynamics)%n"
-        + "  set NAME VALUE            type into a field and press Enter (fk3.counts, ik.x, path.M3.end, obj.z, dyn.gx)%n"
-        + "  import FILE               import a VRML97 object, as the Objects panel's file chooser does%n"
-        + "  play SECONDS|end          play that many simulated seconds, or to the end, and wait%n"
-        + "  speed FACTOR|max          1 = real time, max = as fast as possible%n"
-        + "  wait MS                   wait MS milliseconds%n"
-        + "  screenshot FILE           save the whole window as PNG%n"
+    public static final String HELP = "Script actions (one per line, '#' starts a comment; output: 'gui: ' lines):%n"
+        + "  press LABEL          click a button by label or name (press Kinematics)%n"
+        + "  set NAME VALUE       type into a field, then Enter (fk3.counts, ik.x, obj.z)%n"
+        + "  import FILE          import a VRML97 object, as the file chooser does%n"
+        + "  play SECONDS|end     play simulated seconds (or to the end) and wait%n"
+        + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
+        + "  wait MS              wait MS milliseconds%n"
+        + "  screenshot FILE      save the whole window as PNG%n"
         + "  show hand|object|contacts on|off%n"
-        + "  assert-state FINGER S1|S2 fail unless the finger's clutch is in one of the states%n"
-        + "  assert-status TEXT        fail unless the status bar contains TEXT%n"
+        + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
+        + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  log dynamics|state|events|ik%n"
-        + "  measure-fps SECONDS       render continuously and print the frames per second%n"
-        + "Exit codes: 0 done, 2 bad script (file:line named), 1 an action failed or an exception was%n"
-        + "thrown on the event dispatch thread, 4 the simulation stopped on its numerical guard.";
+        + "  measure-fps SECONDS  render continuously and print frames per second%n"
+        + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
+        + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
+        + "numerical guard. Field and button names: the Javadoc of each panel class.";
 
     /** The verbs. */
     public enum Verb {

@@ -23,6 +23,13 @@ class GuiCommandTest {
         return new Run(code, o.toString().trim(), e.toString().trim());
     }
 
+    static void delete(Path dir) throws Exception {
+        try (var files = Files.list(dir)) {
+            for (Path f : (Iterable<Path>) files::iterator) Files.delete(f);
+        }
+        Files.delete(dir);
+    }
+
     static Path scenario(Path dir) throws Exception {
         Path f = dir.resolve("s.json");
         Files.writeString(f, "{\"name\":\"s\",\"dt_s\":0.001,\"duration_s\":1.0}");
@@ -33,6 +40,7 @@ class GuiCommandTest {
     void withoutADisplayItExits2AndSaysToUseXvfb() throws Exception {
         Path dir = Files.createTempDirectory("handsim-gui-test");
         Run r = run("gui", scenario(dir).toString());
+        delete(dir);
         assertEquals(2, r.code(), r.err());
         assertEquals(1, r.err().lines().count(), "one line: " + r.err());
         assertTrue(r.err().contains("no display") && r.err().contains("xvfb-run") && r.err().contains("./handsim gui"), r.err());
@@ -44,6 +52,7 @@ class GuiCommandTest {
         Path script = dir.resolve("bad.txt");
         Files.writeString(script, "press Kinematics\nset fk3.counts 100\nfly away\n");
         Run r = run("gui", scenario(dir).toString(), "--script", script.toString());
+        delete(dir);
         assertEquals(2, r.code(), r.err());
         assertTrue(r.err().contains("bad.txt:3: unknown action 'fly'"), r.err());
     }

@@ -120,6 +120,7 @@ class GuiWindowTest {
             "screenshot " + empty,
             ""));
         Child c = runGui(dir, "--script", script.toString());
+        System.out.println("screenshots and log in " + dir);
 
         // no exception on the event dispatch thread (or anywhere)
         assertEquals(0, c.code(), "exit code; log:\n" + c.log());
@@ -158,6 +159,7 @@ class GuiWindowTest {
         }
         System.out.println("charts " + charts + ": " + red + " pixels in finger 3's colour");
         assertTrue(red >= MIN_TRACE_PIXELS, "the charts show no traces of finger 3 (" + red + " pixels)");
+        GuiCommandTest.delete(dir);   // kept when a check fails, for a look at the screenshots
     }
 
     /** The view and chart regions the program printed for a screenshot. */
