@@ -137,7 +137,7 @@ public final class DynamicsPanel {
             lastGeneration = s.generation();
             java.util.Arrays.fill(lastState, null);
             java.util.Arrays.fill(lastBreak, Double.NaN);
-            events.append(String.format(Locale.ROOT, "t = %.3f s: model (re)started: %s%s%n", s.time(), s.scenario().name(),
+            events.append(String.format(Locale.ROOT, "model (re)started: %s%s%n", s.scenario().name(),
                 s.scenario().object() != null ? " with " + s.scenario().object().file().getFileName() : ""));
         }
         for (int k = 1; k <= 3; k++) {

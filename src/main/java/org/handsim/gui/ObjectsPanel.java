@@ -1,6 +1,5 @@
 package org.handsim.gui;
 
-import java.awt.BorderLayout;
 import java.awt.GridBagLayout;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -1,6 +1,5 @@
 package org.handsim.gui;
 
-import java.awt.BorderLayout;
 import java.awt.GridBagLayout;
 import java.util.Locale;
 import javax.swing.JComboBox;

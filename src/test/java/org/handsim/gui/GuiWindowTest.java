@@ -41,6 +41,16 @@ import org.junit.jupiter.api.Test;
  * property {@code handsim.requireDisplay} is {@code true} or the environment variable
  * {@code HANDSIM_REQUIRE_DISPLAY} is {@code 1} / {@code true} (what {@code ./test} sets when it
  * runs the suite under {@code xvfb-run}).
+ *
+ * <p>The display comes from the environment ({@code DISPLAY}, {@code XAUTHORITY}) or, where the
+ * environment does not reach the test JVM (Gradle 4.4's daemon on JDK 17 keeps the environment
+ * it was started with), from the system properties {@code handsim.display} and
+ * {@code handsim.xauthority}. Either of these runs the test under a virtual display:
+ * <pre>
+ * HANDSIM_REQUIRE_DISPLAY=1 xvfb-run -a -s '-screen 0 1280x1024x24' gradle --no-daemon test
+ * xvfb-run -a -s '-screen 0 1280x1024x24' sh -c 'gradle test -Dhandsim.requireDisplay=true \
+ *     -Dhandsim.display="$DISPLAY" -Dhandsim.xauthority="$XAUTHORITY"'   # build.gradle forwards them
+ * </pre>
  */
 class GuiWindowTest {
     /** Share of the 3D view's pixels that must show something other than the background. */
@@ -54,9 +64,19 @@ class GuiWindowTest {
         return Boolean.getBoolean("handsim.requireDisplay") || "1".equals(env) || "true".equalsIgnoreCase(env);
     }
 
+    /**
+     * The X display: the environment's DISPLAY, else the system property {@code handsim.display}
+     * (Gradle 4.4's daemon on JDK 17 keeps the environment it started with, so a build run under
+     * {@code xvfb-run} may have to pass the display as a property; see the class comment).
+     */
+    static String display() {
+        String d = System.getenv("DISPLAY");
+        if (d == null || d.isEmpty()) d = System.getProperty("handsim.display");
+        return d == null || d.isEmpty() ? null : d;
+    }
+
     static void needDisplay() {
-        String display = System.getenv("DISPLAY");
-        if (display != null && !display.isEmpty()) return;
+        if (display() != null) return;
         String why = "no DISPLAY: the window test needs a display; run the tests under a virtual display, e.g. "
             + "xvfb-run -a -s '-screen 0 1280x1024x24' gradle test (./test does this)";
         if (requireDisplay()) fail(why + " [handsim.requireDisplay is set, so this is a failure]");
@@ -79,6 +99,10 @@ class GuiWindowTest {
         cmd.add("gui");
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).directory(dir.toFile());
+        pb.environment().put("DISPLAY", display());
+        String xauth = System.getenv("XAUTHORITY");
+        if (xauth == null || xauth.isEmpty()) xauth = System.getProperty("handsim.xauthority");
+        if (xauth != null && !xauth.isEmpty()) pb.environment().put("XAUTHORITY", xauth);
         Path logFile = dir.resolve("gui.log");
         pb.redirectOutput(logFile.toFile());
         Process p = pb.start();
