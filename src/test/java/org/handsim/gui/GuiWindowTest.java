@@ -125,6 +125,9 @@ class GuiWindowTest {
         Files.writeString(script, String.join("\n",
             "press Kinematics",
             "set fk3.counts 5000",
+            "set ik.z 0.5",
+            "press Solve",
+            "assert-status UNREACHABLE",
             "press Path Planning",
             "press Dynamics",
             "press Objects",
@@ -151,6 +154,7 @@ class GuiWindowTest {
         assertTrue(c.log().contains("gui: done, 0 uncaught exceptions"), c.log());
         assertFalse(c.log().contains("uncaught exception"), c.log());
         assertFalse(c.log().contains("\tat org.handsim."), "a stack trace from HandSim code:\n" + c.log());
+        assertTrue(c.log().contains("gui: status: inverse kinematics: target UNREACHABLE"), "unreachable IK target in the status bar:\n" + c.log());
 
         // the breakaway in the Dynamics panel
         Matcher row = Pattern.compile("gui: dynamics: finger=3 .*clutch=(\\w+).*breakaway s=([0-9.]+)").matcher(c.log());
@@ -184,6 +188,23 @@ class GuiWindowTest {
         System.out.println("charts " + charts + ": " + red + " pixels in finger 3's colour");
         assertTrue(red >= MIN_TRACE_PIXELS, "the charts show no traces of finger 3 (" + red + " pixels)");
         GuiCommandTest.delete(dir);   // kept when a check fails, for a look at the screenshots
+    }
+
+    @Test
+    void aVrmlFileThatFailsToLoadIsReportedInTheWindow() throws Exception {
+        needDisplay();
+        Path dir = Files.createTempDirectory("handsim-gui-test");
+        Path broken = dir.resolve("broken.wrl");
+        Files.writeString(broken, "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 1 0 0] }"
+            + " coordIndex [0, 1, 9, -1] } }\n");
+        Path script = dir.resolve("broken.txt");
+        Files.writeString(script, "press Objects\nimport " + broken + "\n");
+        Child c = runGui(dir, "--script", script.toString());
+        assertEquals(1, c.code(), "the failed import fails the script; log:\n" + c.log());
+        assertTrue(c.log().contains("cannot load " + broken + ": " + broken + ": coordIndex 9 outside [0, 2)"), c.log());
+        assertTrue(c.log().contains("broken.txt:2: import " + broken), "the script line is named:\n" + c.log());
+        assertTrue(c.log().contains("gui: failed (exit code 1), 0 uncaught exceptions"), c.log());
+        GuiCommandTest.delete(dir);
     }
 
     /** The view and chart regions the program printed for a screenshot. */
