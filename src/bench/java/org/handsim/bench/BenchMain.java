@@ -17,6 +17,7 @@ public final class BenchMain {
     static {
         SUITES.put("kinematics", new KinematicsBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
+        SUITES.put("vrml", new VrmlBench());
     }
 
     public static void main(String[] args) throws Exception {

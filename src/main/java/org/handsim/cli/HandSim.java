@@ -20,6 +20,7 @@ public final class HandSim implements Runnable {
     static final List<Class<?>> SUBCOMMANDS = List.of(
         FkCommand.class,
         IkCommand.class,
+        MeshCommand.class,
         GuiCommand.class
         // sub-commands register here, one line each
     );
