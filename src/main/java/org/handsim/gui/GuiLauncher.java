@@ -48,8 +48,9 @@ public final class GuiLauncher {
         ErrorLog errors = new ErrorLog().install();
         AtomicReference<HandSimWindow> ref = new AtomicReference<>();
         try {
+            MeshSource.Model[] hand = HandSimWindow.loadHand();   // off the EDT (MeshSource)
             ScriptRunner.edt(() -> {
-                HandSimWindow w = new HandSimWindow(o.scenario(), errors, !o.scripted());
+                HandSimWindow w = new HandSimWindow(o.scenario(), hand, errors, !o.scripted());
                 if (o.speed() != null) w.setSpeed(o.speed());
                 errors.onError(m -> SwingUtilities.invokeLater(() -> w.status(m, true)));
                 w.show();

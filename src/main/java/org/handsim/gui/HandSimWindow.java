@@ -97,10 +97,11 @@ public final class HandSimWindow {
      * Builds the window (not yet visible). Event dispatch thread.
      *
      * @param scenario    the scenario to open
+     * @param hand        the palm and link meshes ({@link #loadHand()}, read beforehand off this thread)
      * @param errors      where uncaught exceptions are recorded
      * @param interactive false in scripted mode: no modal dialogs
      */
-    public HandSimWindow(Scenario scenario, ErrorLog errors, boolean interactive) throws IOException {
+    public HandSimWindow(Scenario scenario, MeshSource.Model[] hand, ErrorLog errors, boolean interactive) {
         this.original = scenario;
         this.scenario = scenario;
         this.errors = errors;
@@ -109,11 +110,7 @@ public final class HandSimWindow {
         JPopupMenu.setDefaultLightWeightPopupEnabled(false);
         ToolTipManager.sharedInstance().setLightWeightPopupEnabled(false);
 
-        Path hand = Home.handModels();
-        MeshSource.Model palm = MeshSource.load(hand.resolve("palm.wrl"));
-        MeshSource.Model[] links = new MeshSource.Model[3];
-        for (int j = 0; j < 3; j++) links[j] = MeshSource.load(hand.resolve("finger_link" + (j + 1) + ".wrl"));
-        view = new SceneView(palm, links);
+        view = new SceneView(hand[0], new MeshSource.Model[] {hand[1], hand[2], hand[3]});
         view.lookAt(scenario.worldFromPalm());
         runner = new SimulationRunner();
 
@@ -156,6 +153,18 @@ public final class HandSimWindow {
         timer.setCoalesce(true);
         load(scenario);
         timer.start();
+    }
+
+    /**
+     * Reads the hand's meshes, {@code vrml/hand/palm.wrl} and {@code finger_link1..3.wrl}
+     * (palm, links 1–3). Not on the event dispatch thread ({@link MeshSource}).
+     */
+    public static MeshSource.Model[] loadHand() throws IOException {
+        Path dir = Home.handModels();
+        MeshSource.Model[] m = new MeshSource.Model[4];
+        m[0] = MeshSource.load(dir.resolve("palm.wrl"));
+        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(dir.resolve("finger_link" + j + ".wrl"));
+        return m;
     }
 
     private static JScrollPane scroll(JComponent c) {
@@ -272,7 +281,9 @@ public final class HandSimWindow {
                     objectModel = m;
                     Scenario.ObjectPlacement p = scenario.object();
                     view.setObject(m, p != null ? p.worldFromObject() : RigidTransform.IDENTITY, p != null ? p.scale() : 1);
-                    status(file.getFileName() + ": " + m.mesh().triangleCount() + " triangles", false);
+                    status(file.getFileName() + ": " + m.mesh().triangleCount() + " triangles" + (m.warnings().isEmpty() ? ""
+                        : "; " + m.warnings().size() + " loader warning(s), the first: " + m.warnings().get(0)), !m.warnings().isEmpty());
+                    for (String w : m.warnings()) System.err.println("handsim gui: " + file + ": warning: " + w);
                     objects.showMesh(file, m);
                     done.complete(m);
                 });

@@ -106,7 +106,7 @@ public final class ObjectsPanel {
         CompletableFuture<MeshSource.Model> loaded = window.loadObjectMesh(abs);
         return loaded.thenAccept(m -> {
             window.load(window.scenario().withObject(np));
-            window.status("imported " + abs.getFileName() + " (" + m.mesh().triangleCount() + " triangles)", false);
+            if (m.warnings().isEmpty()) window.status("imported " + abs.getFileName() + " (" + m.mesh().triangleCount() + " triangles)", false);
         });
     }
 
