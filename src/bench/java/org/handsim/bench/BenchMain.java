@@ -16,6 +16,7 @@ public final class BenchMain {
     static final Map<String, Suite> SUITES = new LinkedHashMap<>();
     static {
         SUITES.put("kinematics", new KinematicsBench());
+        SUITES.put("dynamics", new DynamicsBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
         SUITES.put("vrml", new VrmlBench());
     }

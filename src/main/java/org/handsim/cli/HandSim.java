@@ -21,6 +21,7 @@ public final class HandSim implements Runnable {
         FkCommand.class,
         IkCommand.class,
         MeshCommand.class,
+        IdCommand.class,
         GuiCommand.class
         // sub-commands register here, one line each
     );

@@ -1,5 +1,7 @@
 package org.handsim.sim;
 
+import org.handsim.dynamics.HandDynamics;
+
 /** Builds a ready-to-run {@link HandModel} for a scenario: collision back end and dynamics. */
 public final class Simulation {
     private Simulation() {}
@@ -12,6 +14,6 @@ public final class Simulation {
         if (scenario.object() != null) {
             throw new ScenarioException(scenario.file() + ": field object: objects need the collision back end, not built in yet");
         }
-        return new HandModel(scenario, null, TorqueModel.NONE, record);
+        return new HandModel(scenario, null, HandDynamics.barrettHand()::inverseDynamics, record);
     }
 }

@@ -1,0 +1,178 @@
+package org.handsim.cli;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.handsim.dynamics.ChainDynamics;
+import org.handsim.dynamics.HandDynamics;
+import org.handsim.dynamics.LinkChain;
+import org.handsim.hand.HandDescription;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.CsvInput;
+import org.handsim.util.JsonWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code handsim id}: inverse dynamics of one finger, paper eq (8), for one state or for every
+ * row of a CSV file. Units: rad, rad/s, rad/s², m/s² (gravity in the finger base frame {k0}),
+ * N·m, kg·m².
+ */
+@Command(name = "id", mixinStandardHelpOptions = true,
+    description = {"Inverse dynamics of a finger, paper eq (8): tau = D(q)*qdd + H(q,qd) + C(q).",
+        "Prints {\"finger\":K,\"tau\":[..],\"D\":[[..]],\"H\":[..],\"C\":[..]}",
+        "in N*m and kg*m^2. Finger 3 has no spread: give q1 = qd1 = qdd1 = 0;",
+        "it prints its two active joints (2-vectors, a 2x2 D).",
+        "Bulk: --input IN.csv with the header",
+        "  " + IdCommand.IN_HEADER,
+        "and --output OUT.csv, which repeats the input columns and adds",
+        "tau1,tau2,tau3 (finger 3: tau1 empty). A bad row stops the run",
+        "(exit 2, naming its line) and leaves no output file."})
+public final class IdCommand implements Callable<Integer> {
+    static final String IN_HEADER = "finger,q1,q2,q3,qd1,qd2,qd3,qdd1,qdd2,qdd3,gx,gy,gz";
+    static final String OUT_HEADER = IN_HEADER + ",tau1,tau2,tau3";
+    private static final String[] COLUMNS = IN_HEADER.split(",");
+
+    @Spec CommandSpec spec;
+
+    @Option(names = "--finger", paramLabel = "K", description = "finger 1, 2 or 3")
+    Integer finger;
+
+    @Option(names = "--q", paramLabel = "q1,q2,q3", description = "joint angles, rad")
+    String q;
+
+    @Option(names = "--qd", paramLabel = "qd1,qd2,qd3", description = "joint velocities, rad/s")
+    String qd;
+
+    @Option(names = "--qdd", paramLabel = "qdd1,qdd2,qdd3", description = "joint accelerations, rad/s^2")
+    String qdd;
+
+    @Option(names = "--gravity", paramLabel = "gx,gy,gz", description = "gravity in the finger base frame {k0}, m/s^2, e.g. 0,0,-9.81")
+    String gravity;
+
+    @Option(names = "--method", paramLabel = "le|ne", defaultValue = "le",
+        description = "le: Lagrange-Euler (default, the paper's algorithm); ne: recursive Newton-Euler")
+    String method;
+
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    Path input;
+
+    @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
+    Path output;
+
+    @Override
+    public Integer call() throws IOException {
+        HandDynamics.Method m;
+        if (method.equals("le")) m = HandDynamics.Method.LAGRANGE_EULER;
+        else if (method.equals("ne")) m = HandDynamics.Method.NEWTON_EULER;
+        else throw CliError.usage("handsim: --method must be le or ne, got '" + method + "'");
+        HandDynamics hand = HandDynamics.of(HandDescription.barrettHand(), m);
+        if (input != null || output != null) return bulk(hand);
+        Args.finger(finger);
+        double[][] v = {
+            Args.numbers("--q", q, 3), Args.numbers("--qd", qd, 3), Args.numbers("--qdd", qdd, 3), Args.numbers("--gravity", gravity, 3)};
+        String[] names = {"q%d (value %d of --q)", "qd%d (value %d of --qd)", "qdd%d (value %d of --qdd)"};
+        ChainDynamics d = hand.finger(finger);
+        String bad = fixedJointViolation(finger, d.chain(), v[0], v[1], v[2], names);
+        if (bad != null) throw CliError.usage("handsim: " + bad);
+        int n = d.dof();
+        double[] qa = active(d.chain(), v[0]), qda = active(d.chain(), v[1]), qdda = active(d.chain(), v[2]);
+        double[] dm = new double[n * n], h = new double[n], c = new double[n], tau = new double[n];
+        d.terms(qa, qda, v[3], dm, h, c);
+        d.inverseDynamics(qa, qda, qdda, v[3], tau);
+        double[][] rows = new double[n][n];
+        for (int i = 0; i < n; i++) System.arraycopy(dm, i * n, rows[i], 0, n);
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("finger", finger);
+        out.put("tau", tau);
+        out.put("D", rows);
+        out.put("H", h);
+        out.put("C", c);
+        spec.commandLine().getOut().println(JsonWriter.write(out));
+        return 0;
+    }
+
+    private int bulk(HandDynamics hand) throws IOException {
+        if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
+        if (finger != null || q != null || qd != null || qdd != null || gravity != null) {
+            throw CliError.usage("handsim: --input/--output cannot be combined with --finger, --q, --qd, --qdd or --gravity");
+        }
+        double[] qf = new double[3], qdf = new double[3], qddf = new double[3], g = new double[3], tau = new double[3];
+        String[] names = {"column q%d", "column qd%d", "column qdd%d"};
+        if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
+        int rows = 0;
+        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
+            Writer w = af.writer();
+            w.write(OUT_HEADER);
+            w.write('\n');
+            while (in.next()) {
+                int k = in.integer(0);
+                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
+                for (int j = 0; j < 3; j++) {
+                    qf[j] = in.number(1 + j);
+                    qdf[j] = in.number(4 + j);
+                    qddf[j] = in.number(7 + j);
+                    g[j] = in.number(10 + j);
+                }
+                LinkChain chain = hand.finger(k).chain();
+                String bad = fixedJointViolation(k, chain, qf, qdf, qddf, names);
+                if (bad != null) throw in.error(bad);
+                hand.inverseDynamics(k, qf, qdf, qddf, g, tau);
+                StringBuilder sb = new StringBuilder(160);
+                for (int i = 0; i < COLUMNS.length; i++) sb.append(i == 0 ? "" : ",").append(in.text(i));
+                for (int j = 0; j < 3; j++) {
+                    sb.append(',');
+                    if (!chain.isActive(j)) continue;
+                    if (!Double.isFinite(tau[j])) throw in.error("torque tau" + (j + 1) + " is not finite (" + tau[j] + ")");
+                    sb.append(Args.csv(tau[j]));
+                }
+                w.write(sb.append('\n').toString());
+                rows++;
+            }
+            af.commit();
+        } catch (CsvInput.CsvException e) {
+            throw CliError.usage("handsim: " + e.getMessage());
+        }
+        spec.commandLine().getErr().println("handsim id: " + rows + " rows written to " + output);
+        return 0;
+    }
+
+    /**
+     * Null, or what is wrong with a fixed joint given another angle or a motion; {@code names}
+     * are format strings for q, qd, qdd taking the joint number (twice).
+     */
+    private static String fixedJointViolation(int k, LinkChain chain, double[] q, double[] qd, double[] qdd, String[] names) {
+        for (int j = 0; j < 3; j++) {
+            if (chain.isActive(j)) continue;
+            double[][] v = {q, qd, qdd};
+            double[] want = {chain.fixedValue(j), 0, 0};
+            for (int i = 0; i < 3; i++) {
+                if (v[i][j] != want[i]) {
+                    String name = String.format(names[i], j + 1, j + 1);
+                    return "finger " + k + "'s joint " + (j + 1) + " is fixed at " + fmt(chain.fixedValue(j)) + " rad (no spread): "
+                        + name + " must be " + fmt(want[i]) + ", got " + fmt(v[i][j]);
+                }
+            }
+        }
+        return null;
+    }
+
+    private static String fmt(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    private static double[] active(LinkChain chain, double[] all) {
+        double[] a = new double[chain.dof()];
+        for (int j = 0; j < 3; j++) {
+            int p = chain.dofOfLink(j);
+            if (p >= 0) a[p] = all[j];
+        }
+        return a;
+    }
+}
