@@ -22,6 +22,7 @@ public final class HandSim implements Runnable {
         IkCommand.class,
         MeshCommand.class,
         IdCommand.class,
+        CollideCommand.class,
         GuiCommand.class
         // sub-commands register here, one line each
     );

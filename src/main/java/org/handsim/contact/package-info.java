@@ -1,0 +1,22 @@
+/**
+ * Contact (paper Section IV): from intersection segments to point contacts, and from joint
+ * torques to contact forces.
+ *
+ * <ul>
+ *   <li>{@link org.handsim.contact.ContactPatches}: chains the segments of a
+ *       {@link org.handsim.collision.CollisionResult} into patches and makes one
+ *       {@link org.handsim.contact.PointContact} per patch (centre of the patch's bounding box,
+ *       weighted normal of the object's triangles, area estimate, triangles touched; DESIGN.md
+ *       decision 3);</li>
+ *   <li>{@link org.handsim.contact.ContactForces}: contact force magnitudes from joint torques
+ *       (eq 11 made well-posed, DESIGN.md decision 2) and eq (9).</li>
+ * </ul>
+ *
+ * <p>Typical use after a collision query {@code q.collide(treeA, treeB, pose, result)}:
+ * <pre>
+ * ContactPatches cp = new ContactPatches();          // object = mesh B by default
+ * int n = cp.build(result, meshA, meshB, pose);      // A's frame; normals point out of B
+ * cp.center(i, p); cp.normal(i, d); cp.area(i);
+ * </pre>
+ */
+package org.handsim.contact;
