@@ -23,6 +23,8 @@ public final class HandSim implements Runnable {
         MeshCommand.class,
         IdCommand.class,
         CollideCommand.class,
+        RunCommand.class,
+        SweepCommand.class,
         GuiCommand.class
         // sub-commands register here, one line each
     );

@@ -74,6 +74,7 @@ public final class HandModel {
     private final ContactForces solver = new ContactForces();
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
+    private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
 
     /** Work counters, for the savings table (issue 8). */
@@ -251,16 +252,18 @@ public final class HandModel {
         boolean inner = c.state() == ClutchState.FREE && cs.touches(2);
         boolean outer = (c.state() == ClutchState.FREE || c.state() == ClutchState.BROKEN) && cs.touches(3);
         if (!inner && !outer) return false;
+        // in BROKEN the inner link is held against the object already: only the outer link counts
+        boolean innerCounts = c.state() == ClutchState.FREE;
         double lo = qBefore, hi = qNow;
         double[] joints = eventJoints;
-        for (int it = 0; it < 40 && hi - lo > 1e-6; it++) {
+        for (int it = 0; it < 60 && hi - lo > 1e-6; it++) {
             double mid = 0.5 * (lo + hi);
-            if (touchesAt(k, mid, joints) != 0) hi = mid; else lo = mid;
+            if (touchesAt(k, mid, joints, innerCounts) != 0) hi = mid; else lo = mid;
         }
-        int which = touchesAt(k, hi, joints);
+        int which = touchesAt(k, hi, joints, innerCounts);
         if (which == 0) which = inner ? 2 : 3;
         double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
-        if (which == 2 && c.state() == ClutchState.FREE) {
+        if (which == 2) {
             c.innerContact(hi);
             if (Double.isNaN(contactQ[i])) contactQ[i] = hi;
             lastT[i] = tTouch;
@@ -272,18 +275,25 @@ public final class HandModel {
         return true;
     }
 
-    /** 2 if the inner link, 3 if the outer link touches at motor count q (state unchanged), else 0. */
-    private int touchesAt(int k, double qm, double[] joints) {
+    /**
+     * 2 if the inner link (when {@code innerCounts}), 3 if the outer link has a contact at motor
+     * count q (state unchanged), else 0. Uses the full contact query, so that the held pose the
+     * bisection ends on is one where the contact exists.
+     */
+    private int touchesAt(int k, double qm, double[] joints, boolean innerCounts) {
         int i = k - 1;
         joints[0] = q[i][0];
         joints[1] = clutch[i].theta2For(qm);
         joints[2] = clutch[i].theta3For(qm);
         framesInWorld(k, joints, frameScratch);
         counters[Counter.EVENT_QUERIES.ordinal()] += 2;
-        System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
-        if (objectContacts.intersects(k, 2, linkScratch)) return 2;
+        eventContacts.clear();
+        if (innerCounts) {
+            System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
+            if (objectContacts.collide(k, 2, linkScratch, eventContacts) > 0) return 2;
+        }
         System.arraycopy(frameScratch, 36, linkScratch, 0, 12);
-        if (objectContacts.intersects(k, 3, linkScratch)) return 3;
+        if (objectContacts.collide(k, 3, linkScratch, eventContacts) > 0) return 3;
         return 0;
     }
 
