@@ -15,7 +15,6 @@ import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.table.AbstractTableModel;
-import org.handsim.sim.ClutchState;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.Snapshot;
 
@@ -35,7 +34,9 @@ import org.handsim.sim.Snapshot;
 public final class DynamicsPanel {
     private static final String[] GRAVITY = {"-z (palm up)", "-x (paper, Fig. 6)", "+z (palm down)", "-y", "+y", "+x", "none", "custom"};
     private static final double[][] GRAVITY_VECTORS = {{0, 0, -9.81}, {-9.81, 0, 0}, {0, 0, 9.81}, {0, -9.81, 0}, {0, 9.81, 0}, {9.81, 0, 0}, {0, 0, 0}};
-    private static final String[] COLUMNS = {"finger", "clutch", "τk1 N·m", "τk2 N·m", "τk3 N·m", "contacts", "force N", "breakaway s"};
+    private static final String[] COLUMNS = {"k", "clutch", "τk1", "τk2", "τk3", "cont.", "force", "break"};
+    /** Column names in {@link #tableLines()} (the script's log). */
+    private static final String[] KEYS = {"finger", "clutch", "tau1_Nm", "tau2_Nm", "tau3_Nm", "contacts", "force_N", "breakaway_s"};
 
     private final HandSimWindow window;
     private final JPanel panel = Widgets.column();
@@ -43,7 +44,6 @@ public final class DynamicsPanel {
     private final JTextArea events = new JTextArea(8, 28);
     private final JComboBox<String> gravity = new JComboBox<>(GRAVITY);
     private final JTextField gx, gy, gz;
-    private final ClutchState[] lastState = new ClutchState[3];
     private final double[] lastBreak = {Double.NaN, Double.NaN, Double.NaN};
     private long lastGeneration = -1;
 
@@ -82,11 +82,11 @@ public final class DynamicsPanel {
         t.setFont(Widgets.small());
         t.getTableHeader().setFont(Widgets.small());
         t.setRowHeight(18);
-        t.getColumnModel().getColumn(0).setPreferredWidth(30);
-        t.getColumnModel().getColumn(1).setPreferredWidth(62);
+        int[] widths = {18, 64, 42, 42, 42, 50, 42, 62};
+        for (int c = 0; c < widths.length; c++) t.getColumnModel().getColumn(c).setPreferredWidth(widths[c]);
         JScrollPane sp = new JScrollPane(t);
         sp.setPreferredSize(new Dimension(340, 80));
-        JPanel tp = Widgets.titled(new JPanel(new BorderLayout()), "Per finger (live)");
+        JPanel tp = Widgets.titled(new JPanel(new BorderLayout()), "Per finger (live): τ N·m, force N, breakaway s");
         tp.add(sp, BorderLayout.CENTER);
         panel.add(tp);
 
@@ -135,17 +135,11 @@ public final class DynamicsPanel {
         if (s.snapshot() == null) return;
         if (s.generation() != lastGeneration) {
             lastGeneration = s.generation();
-            java.util.Arrays.fill(lastState, null);
             java.util.Arrays.fill(lastBreak, Double.NaN);
             events.append(String.format(Locale.ROOT, "model (re)started: %s%s%n", s.scenario().name(),
                 s.scenario().object() != null ? " with " + s.scenario().object().file().getFileName() : ""));
         }
         for (int k = 1; k <= 3; k++) {
-            ClutchState c = s.clutch(k);
-            if (lastState[k - 1] != null && lastState[k - 1] != c) {
-                events.append(String.format(Locale.ROOT, "t = %.3f s: finger %d %s → %s%n", s.time(), k, lastState[k - 1], c));
-            }
-            lastState[k - 1] = c;
             double b = s.breakaway()[k - 1];
             if (!Double.isNaN(b) && Double.isNaN(lastBreak[k - 1])) {
                 events.append(String.format(Locale.ROOT, "t = %.4f s: finger %d BREAKAWAY (τ%d2 reached τ_break)%n", b, k, k));
@@ -155,6 +149,12 @@ public final class DynamicsPanel {
         table.set(s);
     }
 
+    /** Lists a clutch state change (called by the window's view update, in order). */
+    void event(SimulationRunner.Event e) {
+        if (e.generation() != lastGeneration) return;   // from a model no longer shown
+        events.append(String.format(Locale.ROOT, "t = %.3f s: finger %d %s → %s%n", e.time(), e.finger(), e.from(), e.to()));
+    }
+
     /** The table as text, one line per finger (the script's {@code log dynamics}). */
     public List<String> tableLines() {
         List<String> out = new ArrayList<>();
@@ -162,7 +162,7 @@ public final class DynamicsPanel {
             StringBuilder sb = new StringBuilder();
             for (int c = 0; c < COLUMNS.length; c++) {
                 if (c > 0) sb.append("  ");
-                sb.append(COLUMNS[c]).append('=').append(table.getValueAt(r, c));
+                sb.append(KEYS[c]).append('=').append(table.getValueAt(r, c));
             }
             out.add(sb.toString());
         }

@@ -398,6 +398,7 @@ public final class HandSimWindow {
             shownPublication = s.publication();
             if (s.snapshot() != null && preview == null) view.show(Pose.of(s.snapshot(), s.scenario().worldFromPalm()));
             dynamics.update(s);
+            runner.drainEvents(dynamics::event);
             kinematics.follow(s);
             time.setText(String.format(Locale.ROOT, "t = %.3f s / %.3f s  %s", s.time(),
                 s.scenario() == null ? 0 : s.scenario().duration(),

@@ -22,10 +22,12 @@ import org.jogamp.java3d.LineAttributes;
 import org.jogamp.java3d.Material;
 import org.jogamp.java3d.Node;
 import org.jogamp.java3d.PolygonAttributes;
+import org.jogamp.java3d.RenderingAttributes;
 import org.jogamp.java3d.Shape3D;
 import org.jogamp.java3d.Switch;
 import org.jogamp.java3d.Transform3D;
 import org.jogamp.java3d.TransformGroup;
+import org.jogamp.java3d.TransparencyAttributes;
 import org.jogamp.java3d.TriangleArray;
 import org.jogamp.java3d.View;
 import org.jogamp.java3d.WakeupOnElapsedFrames;
@@ -53,7 +55,7 @@ import org.jogamp.vecmath.Vector3f;
  *          │   └─ TransformGroup link[k][j]  ← frame {kj} in the world (link j mesh)
  *          ├─ Switch object  └─ TransformGroup object ← world ← object · scale
  *          ├─ Switch contacts (per-child mask)  spheres at the contact points, one LineArray
- *          │                                   of normals (outward, 25 mm)
+ *          │                                   of normals (outward, 35 mm), drawn over the scene
  *          └─ Switch markers  the inverse-kinematics target and its closest reachable point
  * </pre>
  * One mesh per link type serves all three fingers: the nine link {@link Shape3D}s share three
@@ -71,7 +73,7 @@ public final class SceneView {
     /** Background colour, 0xRRGGBB (a compile-time constant: tests compare screenshot pixels with it). */
     public static final int BACKGROUND_RGB = 0x2A313B;
     static final int MAX_CONTACTS = 64;
-    static final double NORMAL_LENGTH_M = 0.025;
+    static final double NORMAL_LENGTH_M = 0.035;
     private static final BoundingSphere EVERYWHERE = new BoundingSphere(new Point3d(), 1000);
 
     private final FrameCountingCanvas canvas;
@@ -163,11 +165,14 @@ public final class SceneView {
         spinTg.addChild(objectSwitch);
 
         // contacts: spheres and normals
+        // contact points lie inside both bodies (the centre of the intersection patch): drawn
+        // in the transparent pass, after the opaque scene, without the depth test, so they show
         Appearance dot = appearance(new float[] {1f, 0.85f, 0.1f}, null);
-        dot.getMaterial().setEmissiveColor(0.5f, 0.4f, 0f);
+        dot.getMaterial().setEmissiveColor(0.6f, 0.5f, 0f);
+        onTop(dot);
         for (int i = 0; i < MAX_CONTACTS; i++) {
             contactTg[i] = writable(new TransformGroup());
-            contactTg[i].addChild(new Sphere(0.0035f, Sphere.GENERATE_NORMALS, 10, dot));
+            contactTg[i].addChild(new Sphere(0.0045f, Sphere.GENERATE_NORMALS, 12, dot));
             contactSwitch.addChild(contactTg[i]);
         }
         normals.setCapability(GeometryArray.ALLOW_COORDINATE_WRITE);
@@ -175,7 +180,8 @@ public final class SceneView {
         normals.setValidVertexCount(2);
         Appearance lineLook = new Appearance();
         lineLook.setColoringAttributes(new ColoringAttributes(new Color3f(0.2f, 1f, 0.4f), ColoringAttributes.FASTEST));
-        lineLook.setLineAttributes(new LineAttributes(2.5f, LineAttributes.PATTERN_SOLID, true));
+        lineLook.setLineAttributes(new LineAttributes(3f, LineAttributes.PATTERN_SOLID, true));
+        onTop(lineLook);
         contactSwitch.addChild(new Shape3D(normals, lineLook));
         contactSwitch.setWhichChild(Switch.CHILD_MASK);
         contactSwitch.setChildMask(new BitSet());
@@ -212,12 +218,13 @@ public final class SceneView {
     public Canvas3D canvas() { return canvas; }
 
     /**
-     * Points the camera at the hand (three-quarter view from the side of fingers 1 and 2,
-     * looking across finger 3's closing plane) and makes that the orbit's home.
+     * Points the camera at the hand and makes that the orbit's home: from the palm's +x side
+     * and above, so finger 3's closing plane (the paper's experiment, Fig. 6) is seen nearly
+     * face-on, with fingers 1 and 2 beside it.
      */
     public void lookAt(RigidTransform worldFromPalm) {
-        double[] c = worldFromPalm.apply(new double[] {0, 0, 0.10});
-        double[] eye = {c[0] + 0.34, c[1] - 0.30, c[2] + 0.20};
+        double[] c = worldFromPalm.apply(new double[] {0, 0.01, 0.10});
+        double[] eye = worldFromPalm.apply(new double[] {0.42, 0.16, 0.22});
         // world (x, y, z) -> vworld (x, z, -y)
         Point3d center = new Point3d(c[0], c[2], -c[1]);
         Point3d eyeV = new Point3d(eye[0], eye[2], -eye[1]);
@@ -346,6 +353,15 @@ public final class SceneView {
         scratch.setIdentity();
         scratch.setTranslation(new Vector3d(p[0], p[1], p[2]));
         tg.setTransform(scratch);
+    }
+
+    /** Draws with this appearance after the opaque scene and over it (markers inside bodies). */
+    private static void onTop(Appearance a) {
+        a.setTransparencyAttributes(new TransparencyAttributes(TransparencyAttributes.BLENDED, 0.05f));
+        RenderingAttributes r = new RenderingAttributes();
+        r.setDepthBufferEnable(false);
+        r.setDepthBufferWriteEnable(false);
+        a.setRenderingAttributes(r);
     }
 
     private static TransformGroup writable(TransformGroup tg) {

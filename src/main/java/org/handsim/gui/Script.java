@@ -25,8 +25,8 @@ import org.handsim.sim.ClutchState;
  *                           or starting with it; a slider: the number
  * import FILE               import a VRML97 object (what the Objects panel's file chooser does)
  *                           and wait until it is in the view and the model
- * play SECONDS | end        play that many simulated seconds (or to the scenario's end) and
- *                           wait until reached
+ * play SECONDS | end        play until the simulated time reaches SECONDS (or the scenario's
+ *                           end) and wait; if it is there already, pause there
  * speed FACTOR | max        simulation speed: 1 = real time, max = as fast as possible
  * wait MS                   wait MS milliseconds of wall time
  * screenshot FILE           save the whole window as PNG
@@ -48,10 +48,11 @@ import org.handsim.sim.ClutchState;
  * import vrml/objects/cube.wrl
  * press Dynamics
  * speed max
- * play end
- * log dynamics
+ * play 2.5
  * assert-state 3 BROKEN|STALLED
  * screenshot out/gui.png
+ * play end
+ * log dynamics
  * </pre>
  */
 public final class Script {
@@ -63,7 +64,7 @@ public final class Script {
         + "  press LABEL          click a button by label or name (press Kinematics)%n"
         + "  set NAME VALUE       type into a field, then Enter (fk3.counts, ik.x, obj.z)%n"
         + "  import FILE          import a VRML97 object, as the file chooser does%n"
-        + "  play SECONDS|end     play simulated seconds (or to the end) and wait%n"
+        + "  play T|end           play until simulated time T s (or the end), and wait%n"
         + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
         + "  wait MS              wait MS milliseconds%n"
         + "  screenshot FILE      save the whole window as PNG%n"

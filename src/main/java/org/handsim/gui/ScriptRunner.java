@@ -244,8 +244,7 @@ public final class ScriptRunner {
     private void play(String arg) throws Exception {
         SimulationRunner r = window.runner();
         r.sync();
-        double now = r.latest().time();
-        double target = arg.equals("end") ? Double.POSITIVE_INFINITY : now + Double.parseDouble(arg);
+        double target = arg.equals("end") ? Double.POSITIVE_INFINITY : Double.parseDouble(arg);
         long frames0 = window.view().framesRendered(), wall0 = System.nanoTime();
         edt(() -> { window.playUntil(target); return null; });
         r.sync();

@@ -25,7 +25,9 @@ import org.handsim.sim.Snapshot;
  *   <li>{@link #drainTrace}: trace rows ({@link #ROW_LENGTH} doubles: generation, t, then per
  *       finger θk2, θk3 in degrees, θ̇k2, θ̇k3 in deg/s, τk2, τk3 in N·m, the contact force
  *       in N), one every {@link #TRACE_INTERVAL_S} simulated seconds, so the charts get every
- *       sample however fast the model runs and however seldom the window looks.</li>
+ *       sample however fast the model runs and however seldom the window looks;</li>
+ *   <li>{@link #drainEvents}: every change of a finger's clutch state, with the time of the
+ *       step it happened in, for the same reason.</li>
  * </ul>
  * Commands ({@link #load}, {@link #play}, {@link #pause}, {@link #step}, {@link #reset},
  * {@link #setSpeed}) may be called from any thread; they are queued and run in order on the
@@ -67,7 +69,18 @@ public final class SimulationRunner implements AutoCloseable {
         public ClutchState clutch(int k) { return snapshot.fingers()[k - 1].state(); }
     }
 
+    /**
+     * A change of a finger's clutch state, seen at the end of the step it happened in.
+     *
+     * @param generation the model's generation
+     * @param time       simulated time at the end of that step, s
+     * @param finger     1..3
+     */
+    public record Event(long generation, double time, int finger, ClutchState from, ClutchState to) {}
+
     private final Function<Scenario, HandModel> factory;
+    private final ConcurrentLinkedQueue<Event> events = new ConcurrentLinkedQueue<>();
+    private final ClutchState[] lastClutch = new ClutchState[3];
     private final Thread thread;
     private final BlockingQueue<Runnable> commands = new LinkedBlockingQueue<>();
     private final ConcurrentLinkedQueue<double[]> trace = new ConcurrentLinkedQueue<>();
@@ -131,6 +144,7 @@ public final class SimulationRunner implements AutoCloseable {
                 generation++;
                 nextTraceTime = 0;
                 traceRow();
+                rememberClutch();
             }
             publish();
         });
@@ -152,6 +166,14 @@ public final class SimulationRunner implements AutoCloseable {
     public int drainTrace(java.util.function.Consumer<double[]> sink) {
         int n = 0;
         for (double[] row; (row = trace.poll()) != null; n++) sink.accept(row);
+        return n;
+    }
+
+
+    /** Moves every clutch event published so far into {@code sink}; returns how many. */
+    public int drainEvents(java.util.function.Consumer<Event> sink) {
+        int n = 0;
+        for (Event e; (e = events.poll()) != null; n++) sink.accept(e);
         return n;
     }
 
@@ -207,8 +229,15 @@ public final class SimulationRunner implements AutoCloseable {
         }
         generation++;
         nextTraceTime = 0;
-        if (model != null) traceRow();
+        if (model != null) {
+            traceRow();
+            rememberClutch();
+        }
         publish();
+    }
+
+    private void rememberClutch() {
+        for (int k = 1; k <= 3; k++) lastClutch[k - 1] = model.state(k);
     }
 
     private void startPlaying(double until) {
@@ -246,6 +275,13 @@ public final class SimulationRunner implements AutoCloseable {
             for (int i = 0; i < n; i++) {
                 model.step();
                 if (model.time() >= nextTraceTime - 1e-12) traceRow();
+                for (int k = 1; k <= 3; k++) {
+                    ClutchState c = model.state(k);
+                    if (c != lastClutch[k - 1]) {
+                        events.add(new Event(generation, model.time(), k, lastClutch[k - 1], c));
+                        lastClutch[k - 1] = c;
+                    }
+                }
             }
             return true;
         } catch (SimulationException e) {

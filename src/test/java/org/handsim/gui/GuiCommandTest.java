@@ -67,7 +67,7 @@ class GuiCommandTest {
     void helpDocumentsTheScriptLanguage() {
         Run r = run("gui", "--help");
         assertEquals(0, r.code(), r.err());
-        for (String verb : new String[] {"press LABEL", "set NAME VALUE", "import FILE", "play SECONDS|end", "screenshot FILE",
+        for (String verb : new String[] {"press LABEL", "set NAME VALUE", "import FILE", "play T|end", "screenshot FILE",
             "assert-state", "measure-fps"}) {
             assertTrue(r.out().contains(verb), verb + " missing from --help:\n" + r.out());
         }
