@@ -203,7 +203,7 @@ public final class SceneView {
         root.compile();
         universe.addBranchGraph(root);
 
-        orbit = new OrbitBehavior(canvas, OrbitBehavior.REVERSE_ALL);
+        orbit = new OrbitBehavior(canvas, OrbitBehavior.REVERSE_ROTATE | OrbitBehavior.REVERSE_TRANSLATE);
         orbit.setSchedulingBounds(EVERYWHERE);
         orbit.setZoomFactor(0.15);
         orbit.setTransFactors(0.15, 0.15);
