@@ -33,7 +33,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.ToolTipManager;
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.Home;
+import org.handsim.sim.SceneGeometry;
 import org.handsim.sim.Scenario;
 
 /**
@@ -63,6 +63,8 @@ public final class HandSimWindow {
     public static final int TICK_MS = 25;
     /** While the simulation plays the charts are redrawn every this many ticks (~8 Hz). */
     static final int CHART_TICKS = 5;
+    /** Curve segments for the hand's files (as {@code SceneGeometry} loads the links). */
+    static final int HAND_DIVISIONS = 32;
     /** The four buttons of the paper, in order. */
     public static final List<String> TOOLS = List.of("Kinematics", "Path Planning", "Dynamics", "Objects");
 
@@ -160,10 +162,9 @@ public final class HandSimWindow {
      * (palm, links 1–3). Not on the event dispatch thread ({@link MeshSource}).
      */
     public static MeshSource.Model[] loadHand() throws IOException {
-        Path dir = Home.handModels();
         MeshSource.Model[] m = new MeshSource.Model[4];
-        m[0] = MeshSource.load(dir.resolve("palm.wrl"));
-        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(dir.resolve("finger_link" + j + ".wrl"));
+        m[0] = MeshSource.load(SceneGeometry.palmFile(), HAND_DIVISIONS);
+        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(SceneGeometry.linkFile(j), HAND_DIVISIONS);
         return m;
     }
 
@@ -253,7 +254,7 @@ public final class HandSimWindow {
             objectFile = null;
             view.setObject(null, null, 1);
         } else if (objectModel == null || !after.file().equals(objectFile)) {
-            loadObjectMesh(after.file());
+            loadObjectMesh(after.file(), after.divisions());
         } else if (before == null || !samePlacement(before, after)) {
             view.placeObject(after.worldFromObject(), after.scale());
         }
@@ -269,21 +270,19 @@ public final class HandSimWindow {
      * scenario's placement when done. The future completes (on the EDT) after the view has it,
      * or exceptionally with the load error, which is also shown in the window.
      */
-    CompletableFuture<MeshSource.Model> loadObjectMesh(Path file) {
+    CompletableFuture<MeshSource.Model> loadObjectMesh(Path file, int divisions) {
         objectFile = file;
         status("loading " + file.getFileName() + " ...", false);
         CompletableFuture<MeshSource.Model> done = new CompletableFuture<>();
         Thread t = new Thread(() -> {
             try {
-                MeshSource.Model m = MeshSource.load(file);
+                MeshSource.Model m = MeshSource.load(file, divisions);
                 SwingUtilities.invokeLater(() -> {
                     if (!file.equals(objectFile)) { done.complete(m); return; }   // superseded
                     objectModel = m;
                     Scenario.ObjectPlacement p = scenario.object();
                     view.setObject(m, p != null ? p.worldFromObject() : RigidTransform.IDENTITY, p != null ? p.scale() : 1);
-                    status(file.getFileName() + ": " + m.mesh().triangleCount() + " triangles" + (m.warnings().isEmpty() ? ""
-                        : "; " + m.warnings().size() + " loader warning(s), the first: " + m.warnings().get(0)), !m.warnings().isEmpty());
-                    for (String w : m.warnings()) System.err.println("handsim gui: " + file + ": warning: " + w);
+                    status(file.getFileName() + ": " + m.mesh().triangleCount() + " triangles", false);
                     objects.showMesh(file, m);
                     done.complete(m);
                 });

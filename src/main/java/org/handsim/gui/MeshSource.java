@@ -1,88 +1,73 @@
 package org.handsim.gui;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayDeque;
-import java.util.Deque;
-import java.util.List;
-import org.handsim.mesh.TessellationWalk;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlParseException;
-import org.handsim.vrml.VrmlScene;
-import org.jogamp.java3d.Appearance;
-import org.jogamp.java3d.Group;
-import org.jogamp.java3d.Link;
-import org.jogamp.java3d.Material;
-import org.jogamp.java3d.Node;
-import org.jogamp.java3d.Shape3D;
-import org.jogamp.vecmath.Color3f;
+import org.handsim.sim.ScenarioException;
+import org.handsim.sim.SceneGeometry;
 
 /**
- * Where the view gets its triangle meshes: the project's pipeline (DESIGN.md, "VRML file ⇒
- * VrmlLoader ⇒ Java3D BranchGroup ⇒ tessellation walk ⇒ TriangleMesh"), so the view shows the
- * very triangles the collision back end works on. The one place to change if the view should
+ * Where the view gets its triangle meshes: {@link SceneGeometry#mesh}, the meshes the model
+ * collides (VRML file ⇒ VrmlLoader ⇒ BranchGroup ⇒ tessellation walk ⇒ TriangleMesh, DESIGN.md),
+ * from the same cache — so the view shows exactly the triangles of the simulation, and a file
+ * imported in the window is read once for both. The one place to change if the view should
  * show something else (e.g. the loader's BranchGroup with its own appearances).
  *
- * <p>Thread-safe (a new loader per call) and <b>never on the event dispatch thread</b>: the
- * loader works on a worker thread and waits for it, and the first Java3D use initialises JOGL,
- * which itself waits for the event dispatch thread — a deadlock if that thread is the one
- * waiting. {@link #load} fails fast there instead.
+ * <p>Colour, for display only: the first {@code diffuseColor} written in the file (plain text
+ * files; none for gzip), else the caller's default.
+ *
+ * <p>Thread-safe, and <b>never on the event dispatch thread</b>: the loader works on a worker
+ * thread and waits for it, and the first Java3D use initialises JOGL, which itself waits for
+ * the event dispatch thread — a deadlock if that thread is the one waiting. {@link #load}
+ * fails fast there instead.
  */
 public final class MeshSource {
     private MeshSource() {}
 
+    private static final Pattern DIFFUSE = Pattern.compile("diffuseColor\\s+([-+0-9.eE]+)[\\s,]+([-+0-9.eE]+)[\\s,]+([-+0-9.eE]+)");
+
     /**
-     * A mesh, its display colour and the loader's warnings.
+     * A mesh and its display colour.
      *
-     * @param mesh     the whole file as one mesh, transforms applied, metres
-     * @param colour   the first Material's diffuse colour (RGB in [0, 1]), or null when none
-     * @param warnings what the loader found sloppy but usable
+     * @param mesh   the whole file as one mesh, transforms applied, metres, unscaled
+     * @param colour RGB in [0, 1], or null when the file names none
      */
-    public record Model(TriangleMesh mesh, float[] colour, List<String> warnings) {}
+    public record Model(TriangleMesh mesh, float[] colour) {}
 
     /**
      * Reads a VRML97 file into one triangle mesh (metres, the file's own frame).
      *
-     * @throws IOException {@code FILE:LINE:COL: message} when the file cannot be loaded, or
-     *                     naming the file when it holds no triangles
+     * @param divisions segments round Sphere, Cylinder and Cone nodes (the scenario's value)
+     * @throws IOException {@code FILE:LINE:COL: message} when the file cannot be loaded
      */
-    public static Model load(Path file) throws IOException {
+    public static Model load(Path file, int divisions) throws IOException {
         if (javax.swing.SwingUtilities.isEventDispatchThread()) {
             throw new IllegalStateException("MeshSource.load(" + file + ") called on the event dispatch thread (it would deadlock)");
         }
-        VrmlScene scene;
+        TriangleMesh mesh;
         try {
-            scene = new VrmlLoader().load(file);
-        } catch (VrmlParseException e) {
+            mesh = SceneGeometry.mesh(file, divisions, 1.0);
+        } catch (ScenarioException e) {
             throw new IOException(e.getMessage(), e);
         }
-        TriangleMesh mesh = new TessellationWalk().name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
-        if (mesh.triangleCount() == 0) throw new IOException(file + ": no triangles (no surface geometry in the file)");
-        return new Model(mesh, colour(scene.getSceneGroup()), List.copyOf(scene.warnings()));
+        return new Model(mesh, colour(file));
     }
 
-    /** The diffuse colour of the first Shape3D with a Material, depth first. */
-    private static float[] colour(Node root) {
-        Deque<Node> todo = new ArrayDeque<>();
-        todo.push(root);
-        while (!todo.isEmpty()) {
-            Node n = todo.pop();
-            if (n instanceof Shape3D) {
-                Appearance a = ((Shape3D) n).getAppearance();
-                Material m = a == null ? null : a.getMaterial();
-                if (m != null) {
-                    Color3f c = new Color3f();
-                    m.getDiffuseColor(c);
-                    return new float[] {c.x, c.y, c.z};
-                }
-            } else if (n instanceof Group) {
-                Group g = (Group) n;
-                for (int i = g.numChildren() - 1; i >= 0; i--) todo.push(g.getChild(i));
-            } else if (n instanceof Link && ((Link) n).getSharedGroup() != null) {
-                todo.push(((Link) n).getSharedGroup());
-            }
+    /** The first diffuseColor in a plain-text file, or null. */
+    static float[] colour(Path file) {
+        try {
+            byte[] head = Files.readAllBytes(file);
+            if (head.length > 1 && (head[0] & 0xff) == 0x1f && (head[1] & 0xff) == 0x8b) return null;   // gzip
+            Matcher m = DIFFUSE.matcher(new String(head, java.nio.charset.StandardCharsets.ISO_8859_1));
+            if (!m.find()) return null;
+            float[] c = new float[3];
+            for (int i = 0; i < 3; i++) c[i] = Math.max(0f, Math.min(1f, Float.parseFloat(m.group(i + 1))));
+            return c;
+        } catch (IOException | NumberFormatException e) {
+            return null;
         }
-        return null;
     }
 }

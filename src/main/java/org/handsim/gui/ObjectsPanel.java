@@ -103,10 +103,10 @@ public final class ObjectsPanel {
         RigidTransform pose = p != null ? p.worldFromObject()
             : s.worldFromPalm().compose(RigidTransform.translation(DEFAULT_POSITION[0], DEFAULT_POSITION[1], DEFAULT_POSITION[2]));
         Scenario.ObjectPlacement np = new Scenario.ObjectPlacement(abs, pose, p != null ? p.scale() : 1.0, p != null ? p.divisions() : 24);
-        CompletableFuture<MeshSource.Model> loaded = window.loadObjectMesh(abs);
+        CompletableFuture<MeshSource.Model> loaded = window.loadObjectMesh(abs, np.divisions());
         return loaded.thenAccept(m -> {
             window.load(window.scenario().withObject(np));
-            if (m.warnings().isEmpty()) window.status("imported " + abs.getFileName() + " (" + m.mesh().triangleCount() + " triangles)", false);
+            window.status("imported " + abs.getFileName() + " (" + m.mesh().triangleCount() + " triangles)", false);
         });
     }
 

@@ -17,14 +17,14 @@ class MeshSourceTest {
     @Test
     void readsTheCommittedModelsWithTheirCountsAndColours() throws IOException {
         Path v = TestPaths.root().resolve("vrml");
-        MeshSource.Model cube = MeshSource.load(v.resolve("objects/cube.wrl"));
+        MeshSource.Model cube = MeshSource.load(v.resolve("objects/cube.wrl"), 24);
         assertEquals(12, cube.mesh().triangleCount());
         assertEquals(2.16e-4, cube.mesh().signedVolume(), 1e-10);   // the loader stores float coordinates
         assertArrayEquals(new float[] {0.85f, 0.25f, 0.2f}, cube.colour());
         String[][] expect = {{"hand/palm.wrl", "216"}, {"hand/finger_link1.wrl", "80"}, {"hand/finger_link2.wrl", "140"},
             {"hand/finger_link3.wrl", "140"}, {"objects/mug.wrl", "720"}, {"objects/sphere.wrl", "960"}};
         for (String[] e : expect) {
-            MeshSource.Model m = MeshSource.load(v.resolve(e[0]));
+            MeshSource.Model m = MeshSource.load(v.resolve(e[0]), 24);
             assertEquals(Integer.parseInt(e[1]), m.mesh().triangleCount(), e[0]);
             assertTrue(m.mesh().isClosed(), e[0]);
         }
@@ -36,18 +36,18 @@ class MeshSourceTest {
         try {
             Path notVrml = dir.resolve("a.wrl");
             Files.writeString(notVrml, "solid cube\n");
-            IOException e = assertThrows(IOException.class, () -> MeshSource.load(notVrml));
+            IOException e = assertThrows(IOException.class, () -> MeshSource.load(notVrml, 24));
             assertTrue(e.getMessage().startsWith(notVrml + ":1:1: "), e.getMessage());
             Path badIndex = dir.resolve("b.wrl");
             Files.writeString(badIndex, "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 1 0 0, 0 1 0] }"
                 + " coordIndex [0, 1, 7, -1] } }\n");
-            e = assertThrows(IOException.class, () -> MeshSource.load(badIndex));
+            e = assertThrows(IOException.class, () -> MeshSource.load(badIndex, 24));
             assertTrue(e.getMessage().startsWith(badIndex.toString()), e.getMessage());
             assertTrue(e.getMessage().contains("7"), e.getMessage());
             Path empty = dir.resolve("c.wrl");
             Files.writeString(empty, "#VRML V2.0 utf8\nGroup { }\n");
-            e = assertThrows(IOException.class, () -> MeshSource.load(empty));
-            assertTrue(e.getMessage().contains("c.wrl: no triangles"), e.getMessage());
+            e = assertThrows(IOException.class, () -> MeshSource.load(empty, 24));
+            assertTrue(e.getMessage().contains("c.wrl:1:1: the file has no triangles"), e.getMessage());
         } finally {
             for (String f : new String[] {"a.wrl", "b.wrl", "c.wrl"}) Files.deleteIfExists(dir.resolve(f));
             Files.delete(dir);
