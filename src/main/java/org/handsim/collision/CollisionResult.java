@@ -26,9 +26,12 @@ public final class CollisionResult {
     private int segs;
     private double[] seg = new double[6 * 64];
 
-    /** Node pairs taken from the walk's stack (each one k-DOP test). */
+    /**
+     * Node pairs visited: every pair of nodes (one of A, one of B) whose k-DOPs the walk
+     * compared, the roots included (the CLI's {@code node_tests}).
+     */
     public long nodeTests;
-    /** k-DOP overlap tests. */
+    /** k-DOP overlap tests: in {@link TreeQuery}'s walk one per visited node pair, so equal to {@link #nodeTests}. */
     public long kdopTests;
     /** Triangle–triangle tests. */
     public long triangleTests;

@@ -59,9 +59,9 @@ public final class KdopTree {
     }
 
     /** The split rule {@link #build(TriangleMesh, int)} uses (chosen by benchmark). */
-    public static final SplitRule DEFAULT_SPLIT = SplitRule.MEDIAN;
+    public static final SplitRule DEFAULT_SPLIT = SplitRule.SAH;
     /** The leaf size {@link #build(TriangleMesh, int)} uses (chosen by benchmark). */
-    public static final int DEFAULT_LEAF_SIZE = 1;
+    public static final int DEFAULT_LEAF_SIZE = 2;
     private static final int SAH_BINS = 16;
 
     private final TriangleMesh mesh;

@@ -23,6 +23,8 @@ package org.handsim.collision;
  * largest |coordinate| of the node in B's frame (from its axis slots); mP_i contains three
  * times the computed residual |u − Σ cⱼeⱼ|₁ plus 64ε per unit of |dᵢ|₁ and Σ|cⱼ||eⱼ|₁, mT_i
  * 64ε·|dᵢ|₁·|t|∞: a few times the error bound, about 1e-14 relative — invisible in culling.
+ * The bound assumes a rigid transform (rotation entries of magnitude at most 1), as every
+ * placement in HandSim is.
  *
  * <p>Not thread-safe: one instance per {@link TreeQuery}.
  */

@@ -20,17 +20,19 @@ import org.handsim.math.RigidTransform;
  * <ul>
  *   <li>{@link Placement#REFIT}: transform all of B's vertices into A's frame and refit every
  *       k-DOP of B bottom-up into this query's scratch (O(n) per query, exact-fit bounds);</li>
- *   <li>{@link Placement#TRANSFORM} (the default, faster on every benchmark case): walk in A's
- *       frame and map B's stored k-DOPs on demand, only for the nodes the walk visits, by a
- *       conservative linear map ({@link TransformedBounds}); transform only the B vertices the
- *       triangle tests touch. The bounds are looser than refitted ones (a k-DOP of a rotated
- *       k-DOP), so the walk visits more nodes, but it never pays for the parts of B that are
- *       far from A.</li>
+ *   <li>{@link Placement#TRANSFORM}, the default: walk in A's frame and map B's stored k-DOPs
+ *       on demand, only for the nodes the walk visits, by a conservative linear map
+ *       ({@link TransformedBounds}; leaves are fitted exactly to their placed vertices); transform
+ *       only the B vertices the walk touches. Internal bounds are looser than refitted ones (a
+ *       k-DOP of a rotated k-DOP), so the walk tests more node pairs, but it never pays for the
+ *       parts of B far from A. Measured: 1.2–1.9× faster than REFIT on the 320-triangle spheres,
+ *       4–7× at 20 480 triangles, 50–170× on the near miss; REFIT wins only where B is the
+ *       12-triangle box (by a microsecond or two).</li>
  * </ul>
  * Both give exactly the same pairs (the bounds are conservative, and B's vertices are
- * transformed by the same formula, {@link KdopTree#transformPoints}). For an exactly identity
- * transform neither does any work.
- *
+ * transformed by the same formula, {@link KdopTree#transformPoints}). Before either, B's root
+ * box is placed as an oriented box and tested against A's root box: separated meshes cost a
+ * few dozen flops. For an exactly identity transform no placement work is done at all.
  * <p><b>Allocation.</b> None per query once the scratch (stack, caches, result buffers) has
  * grown to the sizes the trees need.
  *
@@ -111,6 +113,10 @@ public final class TreeQuery {
         double[] bv = b.vertices();
         int nbv = bv.length / 3, nbt = b.tris.length / 3;
         boolean identity = isIdentity(m);
+        if (!identity && !rootBoxesMayOverlap(a, b)) {
+            out.nodeTests = out.kdopTests = 1;
+            return;
+        }
         boolean refit = !identity && placement == Placement.REFIT;
         lazy = !identity && placement == Placement.TRANSFORM;
         if (++stamp == Integer.MAX_VALUE) {
@@ -148,6 +154,26 @@ public final class TreeQuery {
         normalsPlaced = identity;
         walk(a, b, out, stopAtFirst);
         out.exactPredicates = tt.predicates().exactCalls() - exact0;
+    }
+
+    /**
+     * The cheap first test: B's root box (k-DOP slots 0..5), placed by m as an oriented box and
+     * bounded by an axis-aligned one (Arvo's |R| rule), against A's root box, widened by 1e-12
+     * of the magnitudes for rounding. False only if the roots cannot overlap: then no placement
+     * work at all (the separated case costs a few dozen flops).
+     */
+    private boolean rootBoxesMayOverlap(KdopTree a, KdopTree b) {
+        double[] ra = a.bounds, rb = b.bounds;
+        double cx = 0.5 * (rb[0] + rb[1]), cy = 0.5 * (rb[2] + rb[3]), cz = 0.5 * (rb[4] + rb[5]);
+        double ex = 0.5 * (rb[1] - rb[0]), ey = 0.5 * (rb[3] - rb[2]), ez = 0.5 * (rb[5] - rb[4]);
+        for (int i = 0; i < 3; i++) {
+            double r0 = m[4 * i], r1 = m[4 * i + 1], r2 = m[4 * i + 2], t = m[4 * i + 3];
+            double c = r0 * cx + r1 * cy + r2 * cz + t;
+            double e = Math.abs(r0) * ex + Math.abs(r1) * ey + Math.abs(r2) * ez;
+            double mg = 1e-12 * (Math.abs(r0 * cx) + Math.abs(r1 * cy) + Math.abs(r2 * cz) + Math.abs(t) + e);
+            if (c - e - mg > ra[2 * i + 1] || c + e + mg < ra[2 * i]) return false;
+        }
+        return true;
     }
 
     // per-query state of the walk

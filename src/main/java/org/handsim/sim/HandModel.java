@@ -45,8 +45,8 @@ public final class HandModel {
     private final LinkContacts objectContacts;      // null: no object in the scene
     private final TorqueModel dynamics;
     private final FingerKinematics[] fk = new FingerKinematics[3];
-    private final double[] worldFromPalm = new double[12];
     private final double[][] gravityK0 = new double[3][3];
+    private final double[][] worldFromK0 = new double[3][12];
     private final double dt;
     private final long totalSteps;
     private final double reach2, reach3;           // metres: how far links 2-3 reach beyond joints k2, k3
@@ -63,8 +63,9 @@ public final class HandModel {
     private double spread, spreadVel, spreadAcc;
     private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
     private final double[][] framesWorld = new double[3][48];
-    private final double[][] collidedAt = new double[3][3];   // joints of the last collision query
-    private final boolean[] collidedValid = new boolean[3];
+    private final ContactSet[][] linkContacts = new ContactSet[3][3];   // per finger and link
+    private final double[][][] linkCollidedAt = new double[3][3][3];    // joints of each link's last query
+    private final boolean[][] linkValid = new boolean[3][3];
     private final double[][] dynAt = new double[3][9];        // q, qd, qdd of the last dynamics call
     private final boolean[] dynValid = new boolean[3];
     // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
@@ -105,14 +106,14 @@ public final class HandModel {
         this.recorder = record ? new Recorder() : null;
         this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
         this.reach3 = hand.a3() + LINK_MARGIN_M;
-        scenario.worldFromPalm().copyTo(worldFromPalm, 0);
         double[] g = scenario.gravity();
         for (int k = 1; k <= 3; k++) {
             fk[k - 1] = new FingerKinematics(hand.finger(k));
             clutch[k - 1] = new FingerClutch(tr, hand.kClutch(), hand.tauBreak(), hand.theta3Limits()[1]);
             // gravity in {k0}: (R_world<-palm · R_palm<-k0)ᵀ g
-            RigidTransform worldFromK0 = scenario.worldFromPalm().compose(hand.finger(k).baseInPalm());
-            worldFromK0.inverse().rotate(g, gravityK0[k - 1]);
+            RigidTransform base = scenario.worldFromPalm().compose(hand.finger(k).baseInPalm());
+            base.copyTo(worldFromK0[k - 1], 0);
+            base.inverse().rotate(g, gravityK0[k - 1]);
         }
         initialise();
     }
@@ -133,7 +134,12 @@ public final class HandModel {
             motorPrev[i] = sample[0];
             motorVel[i] = sample[1];
             motorAcc[i] = sample[2];
-            collidedValid[i] = false;
+            for (int j = 0; j < 3; j++) {
+                linkValid[i][j] = false;
+                if (linkContacts[i][j] == null) linkContacts[i][j] = new ContactSet();
+                linkContacts[i][j].clear();
+            }
+            contacts[i].clear();
             dynValid[i] = false;
             inputValid[i] = false;
             breakTime[i] = Double.NaN;
@@ -249,27 +255,40 @@ public final class HandModel {
     }
 
     private void framesInWorld(int k, double[] joints, double[] out) {
-        fk[k - 1].framesInPalm(joints, frameScratch);
-        for (int j = 0; j < 4; j++) RigidTransform.multiply(worldFromPalm, 0, frameScratch, 12 * j, out, 12 * j);
+        fk[k - 1].framesFrom(worldFromK0[k - 1], joints, out);
     }
 
-    /** Point contacts of the finger's three links with the object (reused if nothing moved). */
+    /**
+     * Point contacts of the finger's three links with the object. Link j's pose depends on joints
+     * 1..j only, so a link whose joints did not change keeps its contacts (in BROKEN the held
+     * inner link is not collided again while the outer link closes).
+     */
     private void collide(int k) {
         int i = k - 1;
         if (objectContacts == null) return;
-        if (lazy && collidedValid[i] && collidedAt[i][0] == q[i][0] && collidedAt[i][1] == q[i][1] && collidedAt[i][2] == q[i][2]) {
-            counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
-            return;
-        }
         ContactSet cs = contacts[i];
-        cs.clear();
+        boolean changed = false;
         for (int j = 1; j <= 3; j++) {
+            double[] at = linkCollidedAt[i][j - 1];
+            boolean same = lazy && linkValid[i][j - 1];
+            for (int m = 0; m < j && same; m++) same = at[m] == q[i][m];
+            if (same) {
+                counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
+                continue;
+            }
+            ContactSet lc = linkContacts[i][j - 1];
+            lc.clear();
             System.arraycopy(framesWorld[i], 12 * j, linkScratch, 0, 12);
-            objectContacts.collide(k, j, linkScratch, cs);
+            objectContacts.collide(k, j, linkScratch, lc);
             counters[Counter.COLLISION_QUERIES.ordinal()]++;
+            System.arraycopy(q[i], 0, at, 0, 3);
+            linkValid[i][j - 1] = true;
+            changed = true;
         }
-        System.arraycopy(q[i], 0, collidedAt[i], 0, 3);
-        collidedValid[i] = true;
+        if (changed || cs.size() == 0 && (linkContacts[i][0].size() + linkContacts[i][1].size() + linkContacts[i][2].size()) > 0) {
+            cs.clear();
+            for (int j = 0; j < 3; j++) cs.append(linkContacts[i][j]);
+        }
     }
 
     /**

@@ -43,6 +43,9 @@ public final class SceneGeometry implements LinkContacts {
     private final KdopTree[] linkTrees = new KdopTree[3];
     private final double[] worldFromObject = new double[12];
     private final TreeQuery query = new TreeQuery();
+    private final double[][] linkSpheres = new double[3][];
+    private final double[] objectCentreWorld;
+    private final double objectRadius;
     private final CollisionResult result = new CollisionResult();
     private final ContactPatches patches = new ContactPatches();
     private final double tolerance;
@@ -62,6 +65,10 @@ public final class SceneGeometry implements LinkContacts {
             linkTrees[j - 1] = tree(f, 32, 1.0, k, linkMeshes[j - 1]);
         }
         object.worldFromObject().copyTo(worldFromObject, 0);
+        double[] os = sphere(objectMesh);
+        objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
+        objectRadius = os[3];
+        for (int j = 0; j < 3; j++) linkSpheres[j] = sphere(linkMeshes[j]);
         double diag = 0;
         for (TriangleMesh m : new TriangleMesh[] {objectMesh, linkMeshes[0], linkMeshes[1], linkMeshes[2]}) {
             double[][] b = m.bounds();
@@ -182,8 +189,35 @@ public final class SceneGeometry implements LinkContacts {
         RigidTransform.multiply(linkFromWorld, 0, worldFromObject, 0, pose, 0);
     }
 
+    /** Bounding sphere {cx, cy, cz, r} of a mesh in its own frame (centre of its bounding box). */
+    private static double[] sphere(TriangleMesh m) {
+        double[][] b = m.bounds();
+        double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]), cz = 0.5 * (b[0][2] + b[1][2]);
+        double r = 0;
+        double[] v = m.vertices();
+        for (int i = 0; i < v.length; i += 3) r = Math.max(r, sq(v[i] - cx) + sq(v[i + 1] - cy) + sq(v[i + 2] - cz));
+        return new double[] {cx, cy, cz, Math.sqrt(r)};
+    }
+
+    /**
+     * The one test a far link costs: its bounding sphere against the object's (both placed in
+     * the world). True when they are apart, so the tree query can be skipped.
+     */
+    private boolean apart(int link, double[] w) {
+        double[] s = linkSpheres[link - 1];
+        double x = w[0] * s[0] + w[1] * s[1] + w[2] * s[2] + w[3] - objectCentreWorld[0];
+        double y = w[4] * s[0] + w[5] * s[1] + w[6] * s[2] + w[7] - objectCentreWorld[1];
+        double z = w[8] * s[0] + w[9] * s[1] + w[10] * s[2] + w[11] - objectCentreWorld[2];
+        double reach = s[3] + objectRadius;
+        return x * x + y * y + z * z > reach * reach;
+    }
+
     @Override
     public int collide(int finger, int link, double[] worldFromLink, ContactSet out) {
+        if (apart(link, worldFromLink)) {
+            result.clear();
+            return 0;
+        }
         poseOfObjectInLink(worldFromLink);
         query.collide(linkTrees[link - 1], objectTree, pose, 0, result);
         if (!result.intersecting()) return 0;
@@ -206,6 +240,7 @@ public final class SceneGeometry implements LinkContacts {
 
     @Override
     public boolean intersects(int finger, int link, double[] worldFromLink) {
+        if (apart(link, worldFromLink)) return false;
         poseOfObjectInLink(worldFromLink);
         RigidTransform p = RigidTransform.of(pose);
         return query.intersects(linkTrees[link - 1], objectTree, p, result);

@@ -213,6 +213,44 @@ class KdopTreeTest {
         return all;
     }
 
+    /**
+     * No allocation per query once the buffers have grown (DESIGN.md: hot loops allocate
+     * nothing), measured with the JVM's per-thread allocation counter, for both placements.
+     */
+    @Test
+    void queriesAllocateNothingOnceWarm() {
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        org.junit.jupiter.api.Assumptions.assumeTrue(mx instanceof com.sun.management.ThreadMXBean);
+        com.sun.management.ThreadMXBean tmx = (com.sun.management.ThreadMXBean) mx;
+        TriangleMesh m = TestMeshes.icosphere(3, 1);
+        KdopTree ta = KdopTree.build(m, 18), tb = KdopTree.build(m, 18);
+        double[] pose = new double[12];
+        RigidTransform.fromPose(1.5, 0, 0, 0.187, 0.374, 0.561).copyTo(pose, 0);
+        for (TreeQuery.Placement pl : TreeQuery.Placement.values()) {
+            TreeQuery q = new TreeQuery().placement(pl);
+            CollisionResult r = new CollisionResult();
+            for (int i = 0; i < 2000; i++) q.collide(ta, tb, pose, 0, r);   // warm-up (and JIT)
+            long id = Thread.currentThread().getId();
+            long before = tmx.getThreadAllocatedBytes(id);
+            for (int i = 0; i < 100; i++) q.collide(ta, tb, pose, 0, r);
+            long bytes = tmx.getThreadAllocatedBytes(id) - before;
+            assertTrue(r.pairCount() == 122, "pairs " + r.pairCount());
+            assertTrue(bytes < 1000, pl + ": " + bytes + " bytes in 100 queries");
+        }
+    }
+
+    @Test
+    void intersectsStopsAtTheFirstPair() {
+        TriangleMesh m = TestMeshes.icosphere(3, 1);
+        KdopTree t = KdopTree.build(m, 18);
+        CollisionResult r = new CollisionResult();
+        TreeQuery q = new TreeQuery();
+        assertTrue(q.intersects(t, t, RigidTransform.translation(1.5, 0, 0), r));
+        assertEquals(1, r.pairCount());
+        assertFalse(q.intersects(t, t, RigidTransform.translation(2.5, 0, 0), r));
+        assertEquals(1, r.nodeTests);
+    }
+
     @Test
     void kdopOperationsByHand() {
         Kdop k18 = Kdop.of(18);
