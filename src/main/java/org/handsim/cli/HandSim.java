@@ -24,7 +24,8 @@ public final class HandSim implements Runnable {
         IdCommand.class,
         CollideCommand.class,
         RunCommand.class,
-        SweepCommand.class
+        SweepCommand.class,
+        GuiCommand.class
         // sub-commands register here, one line each
     );
 
