@@ -32,7 +32,7 @@ import org.handsim.sim.Snapshot;
  * ("Apply gravity"). Event dispatch thread only.
  */
 public final class DynamicsPanel {
-    private static final String[] GRAVITY = {"-z (palm up)", "-x (paper, Fig. 6)", "+z (palm down)", "-y", "+y", "+x", "none", "custom"};
+    private static final String[] GRAVITY = {"-z (palm up)", "-x (hand on its side)", "+z (palm down)", "-y", "+y", "+x", "none", "custom"};
     private static final double[][] GRAVITY_VECTORS = {{0, 0, -9.81}, {-9.81, 0, 0}, {0, 0, 9.81}, {0, -9.81, 0}, {0, 9.81, 0}, {9.81, 0, 0}, {0, 0, 0}};
     private static final String[] COLUMNS = {"k", "clutch", "τk1", "τk2", "τk3", "cont.", "force", "break"};
     /** Column names in {@link #tableLines()} (the script's log). */
