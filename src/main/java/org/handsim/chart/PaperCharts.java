@@ -22,7 +22,7 @@ import org.jfree.data.xy.XYSeriesCollection;
  * {@value #MAX_POINTS} points (every n-th row, keeping the last).
  */
 public final class PaperCharts {
-    static final int MAX_POINTS = 4000;
+    static final int MAX_POINTS = 1500;
     static final Color J2 = new Color(0x1f77b4), J3 = new Color(0xd62728), BREAK = new Color(0x2ca02c);
 
     private PaperCharts() {}
@@ -32,24 +32,26 @@ public final class PaperCharts {
         NumberAxis time = new NumberAxis("time t (s)");
         CombinedDomainXYPlot plot = new CombinedDomainXYPlot(time);
         plot.setGap(8);
-        plot.add(panel(r, k, Recorder.TH2, Recorder.TH3, "angle (deg)", Math.toDegrees(1), breakawayTime), 1);
-        plot.add(panel(r, k, Recorder.DTH2, Recorder.DTH3, "velocity (deg/s)", Math.toDegrees(1), breakawayTime), 1);
-        plot.add(panel(r, k, Recorder.DDTH2, Recorder.DDTH3, "acceleration (deg/s²)", Math.toDegrees(1), breakawayTime), 1);
-        plot.add(panel(r, k, Recorder.TAU2, Recorder.TAU3, "torque (N·m)", 1, breakawayTime), 1);
+        plot.add(panel(r, k, Recorder.TH2, Recorder.TH3, "angle (deg)", Math.toDegrees(1), breakawayTime, true), 1);
+        plot.add(panel(r, k, Recorder.DTH2, Recorder.DTH3, "velocity (deg/s)", Math.toDegrees(1), breakawayTime, false), 1);
+        plot.add(panel(r, k, Recorder.DDTH2, Recorder.DDTH3, "acceleration (deg/s²)", Math.toDegrees(1), breakawayTime, false), 1);
+        plot.add(panel(r, k, Recorder.TAU2, Recorder.TAU3, "torque (N·m)", 1, breakawayTime, false), 1);
         JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), plot, true);
         chart.setBackgroundPaint(Color.WHITE);
         return chart;
     }
 
-    private static XYPlot panel(Recorder r, int k, int c2, int c3, String label, double scale, double tb) {
+    private static XYPlot panel(Recorder r, int k, int c2, int c3, String label, double scale, double tb, boolean legend) {
         XYSeriesCollection data = new XYSeriesCollection();
         data.addSeries(series(r, k, c2, "joint " + k + "2", scale));
         data.addSeries(series(r, k, c3, "joint " + k + "3", scale));
         NumberAxis y = new NumberAxis(label);
         y.setAutoRangeIncludesZero(true);
-        XYPlot p = new XYPlot(data, null, y, renderer());
+        XYLineAndShapeRenderer rr = renderer();
+        rr.setDefaultSeriesVisibleInLegend(legend);
+        XYPlot p = new XYPlot(data, null, y, rr);
         style(p);
-        mark(p, tb);
+        mark(p, legend ? tb : Double.NaN, tb);
         return p;
     }
 
@@ -65,7 +67,7 @@ public final class PaperCharts {
         NumberAxis y = new NumberAxis("contact force (N)");
         XYPlot p = new XYPlot(data, x, y, renderer());
         style(p);
-        mark(p, breakawayTime);
+        mark(p, breakawayTime, breakawayTime);
         JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), p, true);
         chart.setBackgroundPaint(Color.WHITE);
         return chart;
@@ -81,6 +83,7 @@ public final class PaperCharts {
 
     static XYLineAndShapeRenderer renderer() {
         XYLineAndShapeRenderer rr = new XYLineAndShapeRenderer(true, false);
+        rr.setDrawSeriesLineAsPath(true); // one SVG path per series, not one element per segment
         rr.setSeriesPaint(0, J2);
         rr.setSeriesPaint(1, J3);
         rr.setSeriesStroke(0, new BasicStroke(2f));
@@ -95,10 +98,11 @@ public final class PaperCharts {
         p.getRangeAxis().setLabelFont(new Font("SansSerif", Font.PLAIN, 13));
     }
 
-    private static void mark(XYPlot p, double tb) {
+    /** A dashed line at the breakaway; labelled only where {@code labelAt} is not NaN. */
+    private static void mark(XYPlot p, double labelAt, double tb) {
         if (Double.isNaN(tb)) return;
         ValueMarker m = new ValueMarker(tb, BREAK, new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
-        m.setLabel(String.format("breakaway %.3f s", tb));
+        if (!Double.isNaN(labelAt)) m.setLabel(String.format(java.util.Locale.ROOT, "breakaway %.3f s", tb));
         m.setLabelFont(new Font("SansSerif", Font.PLAIN, 11));
         m.setLabelAnchor(RectangleAnchor.TOP_RIGHT);
         m.setLabelTextAnchor(TextAnchor.TOP_LEFT);

@@ -1,15 +1,12 @@
 package org.handsim.cli;
 
 import java.io.IOException;
-import java.io.Writer;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.CsvInput;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -24,7 +21,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "adds o0x,o0y,o0z,...,o3z in the base frame."})
 public final class FkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,t1,t2,t3";
-    static final String OUT_HEADER = IN_HEADER + ",o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
+    static final String ADDED_HEADER = "o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
+    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 
@@ -85,38 +83,21 @@ public final class FkCommand implements Callable<Integer> {
     }
 
     private int bulk() throws IOException {
-        if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
-        if (finger != null || joints != null || counts != null) throw CliError.usage("handsim: --input/--output cannot be combined with --finger, --joints or --counts");
         FingerKinematics[] fks = {FingerKinematics.of(1), FingerKinematics.of(2), FingerKinematics.of(3)};
         double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
         double[] j = new double[3];
-        int rows = 0;
-        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
-            Writer w = af.writer();
-            w.write(OUT_HEADER);
-            w.write('\n');
-            while (in.next()) {
-                int k = in.integer(0);
-                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
+        return BulkCsv.run(spec, "fk", input, output, finger != null || joints != null || counts != null,
+            "--finger, --joints or --counts", IN_HEADER, ADDED_HEADER, (in, sb) -> {
+                int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) j[i] = in.number(i + 1);
                 try {
                     if (frame.equals("palm")) fks[k - 1].framesInPalm(j, frames); else fks[k - 1].frames(j, frames);
                 } catch (IllegalArgumentException e) {
                     throw in.error(e.getMessage());
                 }
-                StringBuilder sb = new StringBuilder();
-                sb.append(k).append(',').append(in.text(1)).append(',').append(in.text(2)).append(',').append(in.text(3));
                 for (int f = 0; f < 4; f++) {
                     for (int c = 0; c < 3; c++) sb.append(',').append(Args.csv(frames[12 * f + 4 * c + 3]));
                 }
-                w.write(sb.append('\n').toString());
-                rows++;
-            }
-            af.commit();
-        } catch (CsvInput.CsvException e) {
-            throw CliError.usage("handsim: " + e.getMessage());
-        }
-        spec.commandLine().getErr().println("handsim fk: " + rows + " rows written to " + output);
-        return 0;
+            });
     }
 }

@@ -22,7 +22,10 @@ public final class HandSim implements Runnable {
         IkCommand.class,
         MeshCommand.class,
         IdCommand.class,
-        CollideCommand.class
+        CollideCommand.class,
+        RunCommand.class,
+        SweepCommand.class,
+        GuiCommand.class
         // sub-commands register here, one line each
     );
 

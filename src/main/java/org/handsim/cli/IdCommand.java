@@ -1,8 +1,6 @@
 package org.handsim.cli;
 
 import java.io.IOException;
-import java.io.Writer;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -11,8 +9,6 @@ import org.handsim.dynamics.ChainDynamics;
 import org.handsim.dynamics.HandDynamics;
 import org.handsim.dynamics.LinkChain;
 import org.handsim.hand.HandDescription;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.CsvInput;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -36,8 +32,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "(exit 2, naming its line) and leaves no output file."})
 public final class IdCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,q1,q2,q3,qd1,qd2,qd3,qdd1,qdd2,qdd3,gx,gy,gz";
-    static final String OUT_HEADER = IN_HEADER + ",tau1,tau2,tau3";
-    private static final String[] COLUMNS = IN_HEADER.split(",");
+    static final String ADDED_HEADER = "tau1,tau2,tau3";
+    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 
@@ -99,21 +95,11 @@ public final class IdCommand implements Callable<Integer> {
     }
 
     private int bulk(HandDynamics hand) throws IOException {
-        if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
-        if (finger != null || q != null || qd != null || qdd != null || gravity != null) {
-            throw CliError.usage("handsim: --input/--output cannot be combined with --finger, --q, --qd, --qdd or --gravity");
-        }
         double[] qf = new double[3], qdf = new double[3], qddf = new double[3], g = new double[3], tau = new double[3];
         String[] names = {"column q%d", "column qd%d", "column qdd%d"};
-        if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
-        int rows = 0;
-        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
-            Writer w = af.writer();
-            w.write(OUT_HEADER);
-            w.write('\n');
-            while (in.next()) {
-                int k = in.integer(0);
-                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
+        return BulkCsv.run(spec, "id", input, output, finger != null || q != null || qd != null || qdd != null || gravity != null,
+            "--finger, --q, --qd, --qdd or --gravity", IN_HEADER, ADDED_HEADER, (in, sb) -> {
+                int k = BulkCsv.finger(in);
                 for (int j = 0; j < 3; j++) {
                     qf[j] = in.number(1 + j);
                     qdf[j] = in.number(4 + j);
@@ -124,23 +110,13 @@ public final class IdCommand implements Callable<Integer> {
                 String bad = fixedJointViolation(k, chain, qf, qdf, qddf, names);
                 if (bad != null) throw in.error(bad);
                 hand.inverseDynamics(k, qf, qdf, qddf, g, tau);
-                StringBuilder sb = new StringBuilder(160);
-                for (int i = 0; i < COLUMNS.length; i++) sb.append(i == 0 ? "" : ",").append(in.text(i));
                 for (int j = 0; j < 3; j++) {
                     sb.append(',');
                     if (!chain.isActive(j)) continue;
                     if (!Double.isFinite(tau[j])) throw in.error("torque tau" + (j + 1) + " is not finite (" + tau[j] + ")");
                     sb.append(Args.csv(tau[j]));
                 }
-                w.write(sb.append('\n').toString());
-                rows++;
-            }
-            af.commit();
-        } catch (CsvInput.CsvException e) {
-            throw CliError.usage("handsim: " + e.getMessage());
-        }
-        spec.commandLine().getErr().println("handsim id: " + rows + " rows written to " + output);
-        return 0;
+            });
     }
 
     /**

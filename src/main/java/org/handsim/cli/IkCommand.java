@@ -1,15 +1,12 @@
 package org.handsim.cli;
 
 import java.io.IOException;
-import java.io.Writer;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.kinematics.IkResult;
 import org.handsim.kinematics.InverseKinematics;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.CsvInput;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -24,7 +21,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "Bulk: --input IN.csv (header finger,x,y,z) --output OUT.csv adds reachable,t1,t2,t3,error_m."})
 public final class IkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,x,y,z";
-    static final String OUT_HEADER = IN_HEADER + ",reachable,t1,t2,t3,error_m";
+    static final String ADDED_HEADER = "reachable,t1,t2,t3,error_m";
+    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 
@@ -61,30 +59,16 @@ public final class IkCommand implements Callable<Integer> {
     }
 
     private int bulk() throws IOException {
-        if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
-        if (finger != null || target != null) throw CliError.usage("handsim: --input/--output cannot be combined with --finger or --target");
         InverseKinematics[] iks = {InverseKinematics.of(1), InverseKinematics.of(2), InverseKinematics.of(3)};
-        int rows = 0;
-        try (CsvInput in = new CsvInput(input, IN_HEADER); AtomicFile af = new AtomicFile(output)) {
-            Writer w = af.writer();
-            w.write(OUT_HEADER);
-            w.write('\n');
-            double[] t = new double[3];
-            while (in.next()) {
-                int k = in.integer(0);
-                if (k < 1 || k > 3) throw in.error("finger must be 1, 2 or 3, got " + in.text(0));
+        double[] t = new double[3];
+        return BulkCsv.run(spec, "ik", input, output, finger != null || target != null, "--finger or --target",
+            IN_HEADER, ADDED_HEADER, (in, sb) -> {
+                int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
                 IkResult r = frame.equals("palm") ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
                 double[] j = r.joints();
-                w.write(k + "," + in.text(1) + "," + in.text(2) + "," + in.text(3) + "," + r.reachable() + ","
-                    + Args.csv(j[0]) + "," + Args.csv(j[1]) + "," + Args.csv(j[2]) + "," + Args.csv(r.errorM()) + "\n");
-                rows++;
-            }
-            af.commit();
-        } catch (CsvInput.CsvException e) {
-            throw CliError.usage("handsim: " + e.getMessage());
-        }
-        spec.commandLine().getErr().println("handsim ik: " + rows + " rows written to " + output);
-        return 0;
+                sb.append(',').append(r.reachable()).append(',').append(Args.csv(j[0])).append(',').append(Args.csv(j[1]))
+                    .append(',').append(Args.csv(j[2])).append(',').append(Args.csv(r.errorM()));
+            });
     }
 }

@@ -69,10 +69,12 @@ public final class RunCommand implements Callable<Integer> {
         Map<String, Object> summary = RunSummary.of(model, wall);
         summary.put("setup_time_s", setup);
         List<String> written = new ArrayList<>();
+        long t2 = System.nanoTime();
         if (scenario.writeTrace()) {
             model.recorder().writeCsv(dir.resolve("trace.csv"));
             written.add("trace.csv");
         }
+        long t3 = System.nanoTime();
         if (scenario.writeCharts() && !noCharts) {
             for (int k = 1; k <= 3; k++) {
                 if (!moved(model, k)) continue;
@@ -85,6 +87,13 @@ public final class RunCommand implements Callable<Integer> {
                 written.add("fig8_finger" + k + ".png/.svg");
             }
         }
+        long t4 = System.nanoTime();
+        Map<String, Object> phases = new java.util.LinkedHashMap<>();
+        phases.put("load_s", setup);
+        phases.put("run_s", wall);
+        phases.put("trace_s", (t3 - t2) / 1e9);
+        phases.put("charts_s", (t4 - t3) / 1e9);
+        summary.put("phase_times", phases);
         AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
         written.add("summary.json");
         stdout.println(headline(model, wall));

@@ -31,7 +31,9 @@ public final class ContactForces {
     private boolean[] undetermined = new boolean[0];
     private boolean[] passive = new boolean[0];
     private double[] z = new double[0];
-    private double[] w = new double[0];
+    private int[] idxScratch = new int[0];
+    private double[] gScratch = new double[0], bScratch = new double[0], yScratch = new double[0];
+    private boolean[] deadScratch = new boolean[0];
     private int count;
     private double residual;
 
@@ -139,9 +141,9 @@ public final class ContactForces {
      */
     private boolean leastSquaresOnPassive(int r0, double[] tau, int n) {
         int p = 0;
-        int[] idx = new int[n];
+        int[] idx = idxScratch;
         for (int i = 0; i < n; i++) if (passive[i]) idx[p++] = i;
-        double[] g = new double[p * p], b = new double[p];
+        double[] g = gScratch, b = bScratch;
         for (int a = 0; a < p; a++) {
             for (int c = 0; c < p; c++) {
                 double s = 0;
@@ -155,7 +157,8 @@ public final class ContactForces {
         // Cholesky with pivot check: a column dependent on earlier ones gets zero weight
         double scale = 0;
         for (int a = 0; a < p; a++) scale = Math.max(scale, g[a * p + a]);
-        boolean[] dead = new boolean[p];
+        boolean[] dead = deadScratch;
+        java.util.Arrays.fill(dead, 0, p, false);
         for (int j = 0; j < p; j++) {
             double d = g[j * p + j];
             for (int k = 0; k < j; k++) if (!dead[k]) d -= g[j * p + k] * g[j * p + k];
@@ -168,7 +171,7 @@ public final class ContactForces {
                 g[i * p + j] = s / l;
             }
         }
-        double[] y = new double[p];
+        double[] y = yScratch;
         for (int i = 0; i < p; i++) {
             if (dead[i]) { y[i] = 0; continue; }
             double s = b[i];
@@ -194,7 +197,11 @@ public final class ContactForces {
             undetermined = new boolean[c];
             passive = new boolean[c];
             z = new double[c];
-            w = new double[c];
+            idxScratch = new int[c];
+            gScratch = new double[c * c];
+            bScratch = new double[c];
+            yScratch = new double[c];
+            deadScratch = new boolean[c];
         }
     }
 

@@ -72,6 +72,18 @@ public final class FingerKinematics {
         RigidTransform.multiplyDh(out, 24, joints[2] + r3.thetaOffset(), r3.d(), r3.a(), r3.alpha(), out, 36);
     }
 
+    /**
+     * As {@link #framesInPalm}, with {k0} placed by the given 12-value transform {@code base}
+     * (e.g. world ← k0) instead of the palm placement (allocation-free; out must not overlap base).
+     */
+    public void framesFrom(double[] base, double[] joints, double[] out) {
+        checkJoints(joints);
+        System.arraycopy(base, 0, out, 0, 12);
+        RigidTransform.multiplyDh(out, 0, joints[0] + r1.thetaOffset(), r1.d(), r1.a(), r1.alpha(), out, 12);
+        RigidTransform.multiplyDh(out, 12, joints[1] + r2.thetaOffset(), r2.d(), r2.a(), r2.alpha(), out, 24);
+        RigidTransform.multiplyDh(out, 24, joints[2] + r3.thetaOffset(), r3.d(), r3.a(), r3.alpha(), out, 36);
+    }
+
     /** The fingertip (origin of {k3}) in {k0}, metres (closed form, allocation-free). */
     public void fingertip(double[] joints, double[] out) {
         checkJoints(joints);

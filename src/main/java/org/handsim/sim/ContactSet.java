@@ -43,6 +43,14 @@ public final class ContactSet {
         return n++;
     }
 
+    /** Appends the contacts of another set (geometry only; forces start at 0). */
+    public void append(ContactSet o) {
+        for (int i = 0; i < o.n; i++) {
+            add(o.links[i], o.points[3 * i], o.points[3 * i + 1], o.points[3 * i + 2],
+                o.normals[3 * i], o.normals[3 * i + 1], o.normals[3 * i + 2], o.areas[i]);
+        }
+    }
+
     /** Copies another set into this one. */
     public void copyFrom(ContactSet o) {
         clear();

@@ -35,6 +35,9 @@ import org.handsim.sim.trajectory.Trajectory;
  * <p>Not thread-safe: one thread steps a model; views read {@link #snapshot()} copies.
  */
 public final class HandModel {
+    /** Bound on how far a link's surface reaches beyond its DH segment (link half-thickness, rounded ends), m. */
+    static final double LINK_MARGIN_M = 0.02;
+
     // ------------------------------------------------------------------ parameters
     private final Scenario scenario;
     private final HandDescription hand = HandDescription.barrettHand();
@@ -42,10 +45,11 @@ public final class HandModel {
     private final LinkContacts objectContacts;      // null: no object in the scene
     private final TorqueModel dynamics;
     private final FingerKinematics[] fk = new FingerKinematics[3];
-    private final double[] worldFromPalm = new double[12];
     private final double[][] gravityK0 = new double[3][3];
+    private final double[][] worldFromK0 = new double[3][12];
     private final double dt;
     private final long totalSteps;
+    private final double reach2, reach3;           // metres: how far links 2-3 reach beyond joints k2, k3
     private final Recorder recorder;                // null: not recording
 
     // ------------------------------------------------------------------ state variables
@@ -59,8 +63,9 @@ public final class HandModel {
     private double spread, spreadVel, spreadAcc;
     private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
     private final double[][] framesWorld = new double[3][48];
-    private final double[][] collidedAt = new double[3][3];   // joints of the last collision query
-    private final boolean[] collidedValid = new boolean[3];
+    private final ContactSet[][] linkContacts = new ContactSet[3][3];   // per finger and link
+    private final double[][][] linkCollidedAt = new double[3][3][3];    // joints of each link's last query
+    private final boolean[][] linkValid = new boolean[3][3];
     private final double[][] dynAt = new double[3][9];        // q, qd, qdd of the last dynamics call
     private final boolean[] dynValid = new boolean[3];
     // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
@@ -74,10 +79,17 @@ public final class HandModel {
     private final ContactForces solver = new ContactForces();
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
+    private final double[][] lastInput = new double[3][7];
+    private final boolean[] inputValid = new boolean[3];
+    private boolean lazy = true;
+    private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
 
     /** Work counters, for the savings table (issue 8). */
-    public enum Counter { STEPS, FINGER_UPDATES, COLLISION_QUERIES, COLLISIONS_SKIPPED, DYNAMICS_CALLS, DYNAMICS_SKIPPED, EVENT_QUERIES }
+    public enum Counter {
+        STEPS, FINGER_UPDATES, FINGERS_IDLE, COLLISION_QUERIES, COLLISIONS_SKIPPED, DYNAMICS_CALLS, DYNAMICS_SKIPPED,
+        EVENT_QUERIES, SWEPT_SUBSTEPS, TUNNELLING_CAUGHT
+    }
 
     /**
      * @param scenario       what to simulate
@@ -92,14 +104,16 @@ public final class HandModel {
         this.dt = scenario.dt();
         this.totalSteps = Math.round(Math.ceil(scenario.duration() / dt - 1e-9));
         this.recorder = record ? new Recorder() : null;
-        scenario.worldFromPalm().copyTo(worldFromPalm, 0);
+        this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
+        this.reach3 = hand.a3() + LINK_MARGIN_M;
         double[] g = scenario.gravity();
         for (int k = 1; k <= 3; k++) {
             fk[k - 1] = new FingerKinematics(hand.finger(k));
             clutch[k - 1] = new FingerClutch(tr, hand.kClutch(), hand.tauBreak(), hand.theta3Limits()[1]);
             // gravity in {k0}: (R_world<-palm · R_palm<-k0)ᵀ g
-            RigidTransform worldFromK0 = scenario.worldFromPalm().compose(hand.finger(k).baseInPalm());
-            worldFromK0.inverse().rotate(g, gravityK0[k - 1]);
+            RigidTransform base = scenario.worldFromPalm().compose(hand.finger(k).baseInPalm());
+            base.copyTo(worldFromK0[k - 1], 0);
+            base.inverse().rotate(g, gravityK0[k - 1]);
         }
         initialise();
     }
@@ -120,8 +134,14 @@ public final class HandModel {
             motorPrev[i] = sample[0];
             motorVel[i] = sample[1];
             motorAcc[i] = sample[2];
-            collidedValid[i] = false;
+            for (int j = 0; j < 3; j++) {
+                linkValid[i][j] = false;
+                if (linkContacts[i][j] == null) linkContacts[i][j] = new ContactSet();
+                linkContacts[i][j].clear();
+            }
+            contacts[i].clear();
             dynValid[i] = false;
+            inputValid[i] = false;
             breakTime[i] = Double.NaN;
             breakTorque[i] = Double.NaN;
             breakForce[i] = Double.NaN;
@@ -177,10 +197,14 @@ public final class HandModel {
     /** One finger through the whole chain of the step. */
     private void updateFinger(int k, boolean events) {
         int i = k - 1;
+        if (events && lazy && idle(k)) {
+            counters[Counter.FINGERS_IDLE.ordinal()]++;
+            return;
+        }
         counters[Counter.FINGER_UPDATES.ordinal()]++;
         placeFinger(k);
         collide(k);
-        if (events && locateFirstTouch(k)) {
+        if (events && (locateFirstTouch(k) || sweptTouch(k))) {
             placeFinger(k);
             collide(k);
         }
@@ -191,6 +215,23 @@ public final class HandModel {
             torquesAndForces(k);
         }
         guard(k);
+    }
+
+    /**
+     * True when nothing that drives finger k changed since its last update (motor position,
+     * velocity and acceleration, spread, clutch state): its joints, contacts and torques are
+     * what they were, so the step leaves it alone (no kinematics, collision or dynamics).
+     */
+    private boolean idle(int k) {
+        int i = k - 1;
+        double[] in = lastInput[i];
+        double sr = hand.finger(k).spreadRadPerCount();
+        double s0 = clutch[i].motor(), s1 = motorVel[i], s2 = motorAcc[i];
+        double s3 = sr * spread, s4 = sr * spreadVel, s5 = sr * spreadAcc, s6 = clutch[i].state().ordinal();
+        boolean same = inputValid[i] && in[0] == s0 && in[1] == s1 && in[2] == s2 && in[3] == s3 && in[4] == s4 && in[5] == s5 && in[6] == s6;
+        in[0] = s0; in[1] = s1; in[2] = s2; in[3] = s3; in[4] = s4; in[5] = s5; in[6] = s6;
+        inputValid[i] = true;
+        return same;
     }
 
     // ------------------------------------------------------------------ fixed relations
@@ -214,27 +255,40 @@ public final class HandModel {
     }
 
     private void framesInWorld(int k, double[] joints, double[] out) {
-        fk[k - 1].framesInPalm(joints, frameScratch);
-        for (int j = 0; j < 4; j++) RigidTransform.multiply(worldFromPalm, 0, frameScratch, 12 * j, out, 12 * j);
+        fk[k - 1].framesFrom(worldFromK0[k - 1], joints, out);
     }
 
-    /** Point contacts of the finger's three links with the object (reused if nothing moved). */
+    /**
+     * Point contacts of the finger's three links with the object. Link j's pose depends on joints
+     * 1..j only, so a link whose joints did not change keeps its contacts (in BROKEN the held
+     * inner link is not collided again while the outer link closes).
+     */
     private void collide(int k) {
         int i = k - 1;
         if (objectContacts == null) return;
-        if (collidedValid[i] && collidedAt[i][0] == q[i][0] && collidedAt[i][1] == q[i][1] && collidedAt[i][2] == q[i][2]) {
-            counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
-            return;
-        }
         ContactSet cs = contacts[i];
-        cs.clear();
+        boolean changed = false;
         for (int j = 1; j <= 3; j++) {
+            double[] at = linkCollidedAt[i][j - 1];
+            boolean same = lazy && linkValid[i][j - 1];
+            for (int m = 0; m < j && same; m++) same = at[m] == q[i][m];
+            if (same) {
+                counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
+                continue;
+            }
+            ContactSet lc = linkContacts[i][j - 1];
+            lc.clear();
             System.arraycopy(framesWorld[i], 12 * j, linkScratch, 0, 12);
-            objectContacts.collide(k, j, linkScratch, cs);
+            objectContacts.collide(k, j, linkScratch, lc);
             counters[Counter.COLLISION_QUERIES.ordinal()]++;
+            System.arraycopy(q[i], 0, at, 0, 3);
+            linkValid[i][j - 1] = true;
+            changed = true;
         }
-        System.arraycopy(q[i], 0, collidedAt[i], 0, 3);
-        collidedValid[i] = true;
+        if (changed || cs.size() == 0 && (linkContacts[i][0].size() + linkContacts[i][1].size() + linkContacts[i][2].size()) > 0) {
+            cs.clear();
+            for (int j = 0; j < 3; j++) cs.append(linkContacts[i][j]);
+        }
     }
 
     /**
@@ -251,16 +305,61 @@ public final class HandModel {
         boolean inner = c.state() == ClutchState.FREE && cs.touches(2);
         boolean outer = (c.state() == ClutchState.FREE || c.state() == ClutchState.BROKEN) && cs.touches(3);
         if (!inner && !outer) return false;
-        double lo = qBefore, hi = qNow;
-        double[] joints = eventJoints;
-        for (int it = 0; it < 40 && hi - lo > 1e-6; it++) {
-            double mid = 0.5 * (lo + hi);
-            if (touchesAt(k, mid, joints) != 0) hi = mid; else lo = mid;
+        locate(k, qBefore, qNow, inner);
+        return true;
+    }
+
+    /**
+     * Tunnelling guard: a closing link may pass through a thin object between two steps. If the
+     * motion since the last step moves some point of links 2–3 by more than half the object's
+     * thinnest width (a bound: |Δθk2|·R2 + |Δθk3|·R3, R the reach of the links beyond each
+     * joint), the step is re-checked at intermediate motor counts spaced to move at most that
+     * much; a contact found there is located and handled as usual, and counted
+     * ({@link Counter#TUNNELLING_CAUGHT}). So a large dt costs substeps, never a silent miss.
+     * Returns true if the state changed.
+     */
+    private boolean sweptTouch(int k) {
+        int i = k - 1;
+        FingerClutch c = clutch[i];
+        if (objectContacts == null) return false;
+        ClutchState st = c.state();
+        double qNow = c.motor(), qBefore = motorPrev[i];
+        if (qNow <= qBefore || (st != ClutchState.FREE && st != ClutchState.BROKEN)) return false;
+        double half = 0.5 * objectContacts.minThickness();
+        double disp = Math.abs(c.theta2For(qNow) - c.theta2For(qBefore)) * reach2
+            + Math.abs(c.theta3For(qNow) - c.theta3For(qBefore)) * reach3;
+        if (!(disp > half)) return false;
+        int n = (int) Math.min(100_000, Math.ceil(disp / half));
+        boolean innerCounts = st == ClutchState.FREE;
+        for (int s = 1; s < n; s++) {
+            double qs = qBefore + (qNow - qBefore) * s / n;
+            counters[Counter.SWEPT_SUBSTEPS.ordinal()]++;
+            if (touchesAt(k, qs, eventJoints, innerCounts) != 0) {
+                counters[Counter.TUNNELLING_CAUGHT.ordinal()]++;
+                locate(k, qBefore + (qNow - qBefore) * (s - 1) / n, qs, innerCounts);
+                return true;
+            }
         }
-        int which = touchesAt(k, hi, joints);
-        if (which == 0) which = inner ? 2 : 3;
+        return false;
+    }
+
+    /**
+     * Bisection for the first-touch motor count in (lo, hi] (a contact exists at hi), then the
+     * state change: inner link → BLOCKED, outer link → STALLED.
+     */
+    private void locate(int k, double lo, double hi, boolean innerCounts) {
+        int i = k - 1;
+        FingerClutch c = clutch[i];
+        double qNow = c.motor(), qBefore = motorPrev[i];
+        double[] joints = eventJoints;
+        for (int it = 0; it < 60 && hi - lo > 1e-6; it++) {
+            double mid = 0.5 * (lo + hi);
+            if (touchesAt(k, mid, joints, innerCounts) != 0) hi = mid; else lo = mid;
+        }
+        int which = touchesAt(k, hi, joints, innerCounts);
+        if (which == 0) which = innerCounts ? 2 : 3;
         double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
-        if (which == 2 && c.state() == ClutchState.FREE) {
+        if (which == 2) {
             c.innerContact(hi);
             if (Double.isNaN(contactQ[i])) contactQ[i] = hi;
             lastT[i] = tTouch;
@@ -269,21 +368,27 @@ public final class HandModel {
         } else {
             c.outerContact(hi);
         }
-        return true;
     }
 
-    /** 2 if the inner link, 3 if the outer link touches at motor count q (state unchanged), else 0. */
-    private int touchesAt(int k, double qm, double[] joints) {
+    /**
+     * 2 if the inner link (when {@code innerCounts}), 3 if the outer link has a contact at motor
+     * count q (state unchanged), else 0. Uses the full contact query, so that the held pose the
+     * bisection ends on is one where the contact exists.
+     */
+    private int touchesAt(int k, double qm, double[] joints, boolean innerCounts) {
         int i = k - 1;
         joints[0] = q[i][0];
         joints[1] = clutch[i].theta2For(qm);
         joints[2] = clutch[i].theta3For(qm);
         framesInWorld(k, joints, frameScratch);
         counters[Counter.EVENT_QUERIES.ordinal()] += 2;
-        System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
-        if (objectContacts.intersects(k, 2, linkScratch)) return 2;
+        eventContacts.clear();
+        if (innerCounts) {
+            System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
+            if (objectContacts.collide(k, 2, linkScratch, eventContacts) > 0) return 2;
+        }
         System.arraycopy(frameScratch, 36, linkScratch, 0, 12);
-        if (objectContacts.intersects(k, 3, linkScratch)) return 3;
+        if (objectContacts.collide(k, 3, linkScratch, eventContacts) > 0) return 3;
         return 0;
     }
 
@@ -296,7 +401,7 @@ public final class HandModel {
         int i = k - 1;
         if (scenario.computeTorques()) {
             double[] a = dynAt[i];
-            boolean same = dynValid[i];
+            boolean same = lazy && dynValid[i];
             for (int j = 0; j < 3 && same; j++) {
                 same = a[j] == q[i][j] && a[3 + j] == qd[i][j] && a[6 + j] == qdd[i][j];
             }
@@ -392,6 +497,16 @@ public final class HandModel {
             recorder.setContacts(k, contacts[i].size(), contacts[i].forceSum());
         }
         recorder.setSpread(spread);
+    }
+
+    /**
+     * Whether the model saves work it does not need (default true): idle fingers are not
+     * updated, unchanged poses are not collided again, unchanged states not re-run through the
+     * dynamics. Off, every finger is fully computed every step (for the savings table).
+     */
+    public HandModel lazy(boolean on) {
+        lazy = on;
+        return this;
     }
 
     // ------------------------------------------------------------------ read-out

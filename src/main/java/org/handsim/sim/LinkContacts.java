@@ -14,6 +14,14 @@ public interface LinkContacts {
      */
     int collide(int finger, int link, double[] worldFromLink, ContactSet out);
 
+    /**
+     * The object's thinnest width in metres (an estimate from above is fine; the tunnelling
+     * guard substeps so that no link point moves more than half of it per check).
+     */
+    default double minThickness() {
+        return Double.POSITIVE_INFINITY;
+    }
+
     /** True when the link placed there intersects the object (may be cheaper than collide). */
     default boolean intersects(int finger, int link, double[] worldFromLink) {
         ContactSet tmp = new ContactSet();

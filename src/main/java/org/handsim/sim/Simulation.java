@@ -9,11 +9,15 @@ public final class Simulation {
     /**
      * @param scenario what to run
      * @param record   keep a trace (one row per step)
+     * @throws ScenarioException if the object cannot be loaded (the message names file, line, column)
      */
     public static HandModel model(Scenario scenario, boolean record) {
-        if (scenario.object() != null) {
-            throw new ScenarioException(scenario.file() + ": field object: objects need the collision back end, not built in yet");
-        }
-        return new HandModel(scenario, null, HandDynamics.barrettHand()::inverseDynamics, record);
+        return model(scenario, record, SceneGeometry.DEFAULT_K);
+    }
+
+    /** As {@link #model(Scenario, boolean)} with k-DOPs of the given k (6, 14, 18, 26). */
+    public static HandModel model(Scenario scenario, boolean record, int k) {
+        LinkContacts contacts = scenario.object() == null ? null : new SceneGeometry(scenario.object(), k);
+        return new HandModel(scenario, contacts, HandDynamics.barrettHand()::inverseDynamics, record);
     }
 }

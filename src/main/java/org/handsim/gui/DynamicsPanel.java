@@ -1,0 +1,208 @@
+package org.handsim.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.GridBagLayout;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import javax.swing.JComboBox;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JTable;
+import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import javax.swing.table.AbstractTableModel;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.Snapshot;
+
+/**
+ * The <b>Dynamics</b> panel: run the simulation with dynamics (Lagrange–Euler joint torques,
+ * eq 8, plus the clutch's transmitted torque) and watch, live, per finger: the clutch state
+ * (FREE / BLOCKED / BROKEN / STALLED, DESIGN.md decision 1), the joint torques τk1..τk3, the
+ * number of contacts, the total contact force, and the breakaway time once τk2 passed
+ * τ_break (eq 9). State changes and breakaways are listed below the table with their times.
+ * Gravity is a world-frame vector (m/s²), chosen from a list of directions or typed in;
+ * applying it rebuilds the model (the simulation restarts at t = 0).
+ *
+ * <p>Script names: button {@code dyn.run} ("Run with dynamics"), {@code dyn.gravity} (the
+ * list), {@code dyn.gx}, {@code dyn.gy}, {@code dyn.gz}, button {@code dyn.applyGravity}
+ * ("Apply gravity"). Event dispatch thread only.
+ */
+public final class DynamicsPanel {
+    private static final String[] GRAVITY = {"-z (palm up)", "-x (hand on its side)", "+z (palm down)", "-y", "+y", "+x", "none", "custom"};
+    private static final double[][] GRAVITY_VECTORS = {{0, 0, -9.81}, {-9.81, 0, 0}, {0, 0, 9.81}, {0, -9.81, 0}, {0, 9.81, 0}, {9.81, 0, 0}, {0, 0, 0}};
+    private static final String[] COLUMNS = {"k", "clutch", "τk1", "τk2", "τk3", "cont.", "force", "break"};
+    /** Column names in {@link #tableLines()} (the script's log). */
+    private static final String[] KEYS = {"finger", "clutch", "tau1_Nm", "tau2_Nm", "tau3_Nm", "contacts", "force_N", "breakaway_s"};
+
+    private final HandSimWindow window;
+    private final JPanel panel = Widgets.column();
+    private final Table table = new Table();
+    private final JTextArea events = new JTextArea(8, 28);
+    private final JComboBox<String> gravity = new JComboBox<>(GRAVITY);
+    private final JTextField gx, gy, gz;
+    private final double[] lastBreak = {Double.NaN, Double.NaN, Double.NaN};
+    private long lastGeneration = -1;
+
+    DynamicsPanel(HandSimWindow window) {
+        this.window = window;
+        JPanel run = Widgets.titled(new JPanel(new GridBagLayout()), "Dynamics");
+        run.add(Widgets.button("dyn.run", "Run with dynamics", this::runWithDynamics), Widgets.at(0, 0, 3));
+        JLabel note = Widgets.note("Restarts the scenario with joint torques on and plays it.");
+        run.add(note, Widgets.at(0, 1, 3));
+        panel.add(run);
+
+        JPanel g = Widgets.titled(new JPanel(new GridBagLayout()), "Gravity (world frame, m/s²)");
+        gravity.setName("dyn.gravity");
+        double[] now = window.scenario().gravity();
+        gx = Widgets.field("dyn.gx", Widgets.fmt(now[0], 2), 5, null);
+        gy = Widgets.field("dyn.gy", Widgets.fmt(now[1], 2), 5, null);
+        gz = Widgets.field("dyn.gz", Widgets.fmt(now[2], 2), 5, null);
+        gravity.setSelectedIndex(presetOf(now));
+        gravity.addActionListener(e -> {
+            int i = gravity.getSelectedIndex();
+            if (i < GRAVITY_VECTORS.length) {
+                gx.setText(Widgets.fmt(GRAVITY_VECTORS[i][0], 2));
+                gy.setText(Widgets.fmt(GRAVITY_VECTORS[i][1], 2));
+                gz.setText(Widgets.fmt(GRAVITY_VECTORS[i][2], 2));
+            }
+        });
+        g.add(gravity, Widgets.at(0, 0, 3));
+        g.add(gx, Widgets.at(0, 1));
+        g.add(gy, Widgets.at(1, 1));
+        g.add(gz, Widgets.at(2, 1));
+        g.add(Widgets.button("dyn.applyGravity", "Apply gravity", this::applyGravity), Widgets.at(0, 2, 3));
+        panel.add(g);
+
+        JTable t = new JTable(table);
+        t.setName("dyn.table");
+        t.setFont(Widgets.small());
+        t.getTableHeader().setFont(Widgets.small());
+        t.setRowHeight(18);
+        int[] widths = {18, 64, 42, 42, 42, 50, 42, 62};
+        for (int c = 0; c < widths.length; c++) t.getColumnModel().getColumn(c).setPreferredWidth(widths[c]);
+        JScrollPane sp = new JScrollPane(t);
+        sp.setPreferredSize(new Dimension(340, 80));
+        JPanel tp = Widgets.titled(new JPanel(new BorderLayout()), "Per finger (live): τ N·m, force N, breakaway s");
+        tp.add(sp, BorderLayout.CENTER);
+        panel.add(tp);
+
+        events.setName("dyn.events");
+        events.setEditable(false);
+        events.setFont(Widgets.small());
+        JPanel ep = Widgets.titled(new JPanel(new BorderLayout()), "Events");
+        ep.add(new JScrollPane(events), BorderLayout.CENTER);
+        panel.add(ep);
+    }
+
+    private static int presetOf(double[] g) {
+        for (int i = 0; i < GRAVITY_VECTORS.length; i++) {
+            if (java.util.Arrays.equals(g, GRAVITY_VECTORS[i])) return i;
+        }
+        return GRAVITY.length - 1;
+    }
+
+    JComponent component() {
+        return Widgets.top(panel);
+    }
+
+    private void runWithDynamics() {
+        Scenario s = window.scenario();
+        if (!s.computeTorques()) {
+            window.load(s.withTorques(true));
+        } else {
+            window.reset();
+        }
+        window.play();
+        window.status("running with dynamics", false);
+    }
+
+    private void applyGravity() {
+        try {
+            double[] g = {Widgets.number(gx, "gravity x"), Widgets.number(gy, "gravity y"), Widgets.number(gz, "gravity z")};
+            window.load(window.scenario().withGravity(g));
+            window.status(String.format(Locale.ROOT, "gravity (%.2f, %.2f, %.2f) m/s² applied: the model restarts at t = 0", g[0], g[1], g[2]), false);
+        } catch (IllegalArgumentException e) {
+            window.status(e.getMessage(), true);
+        }
+    }
+
+    /** Shows a published state (called by the window's view update). */
+    void update(SimulationRunner.State s) {
+        if (s.snapshot() == null) return;
+        if (s.generation() != lastGeneration) {
+            lastGeneration = s.generation();
+            java.util.Arrays.fill(lastBreak, Double.NaN);
+            events.append(String.format(Locale.ROOT, "model (re)started: %s%s%n", s.scenario().name(),
+                s.scenario().object() != null ? " with " + s.scenario().object().file().getFileName() : ""));
+        }
+        for (int k = 1; k <= 3; k++) {
+            double b = s.breakaway()[k - 1];
+            if (!Double.isNaN(b) && Double.isNaN(lastBreak[k - 1])) {
+                events.append(String.format(Locale.ROOT, "t = %.4f s: finger %d BREAKAWAY (τ%d2 reached τ_break)%n", b, k, k));
+            }
+            lastBreak[k - 1] = b;
+        }
+        table.set(s);
+    }
+
+    /** Lists a clutch state change (called by the window's view update, in order). */
+    void event(SimulationRunner.Event e) {
+        if (e.generation() != lastGeneration) return;   // from a model no longer shown
+        events.append(String.format(Locale.ROOT, "t = %.3f s: finger %d %s → %s%n", e.time(), e.finger(), e.from(), e.to()));
+    }
+
+    /** The table as text, one line per finger (the script's {@code log dynamics}). */
+    public List<String> tableLines() {
+        List<String> out = new ArrayList<>();
+        for (int r = 0; r < 3; r++) {
+            StringBuilder sb = new StringBuilder();
+            for (int c = 0; c < COLUMNS.length; c++) {
+                if (c > 0) sb.append("  ");
+                sb.append(KEYS[c]).append('=').append(table.getValueAt(r, c));
+            }
+            out.add(sb.toString());
+        }
+        return out;
+    }
+
+    /** The events list as shown. */
+    public String eventsText() { return events.getText(); }
+
+    private static final class Table extends AbstractTableModel {
+        private static final long serialVersionUID = 1L;
+        private final Object[][] cells = new Object[3][COLUMNS.length];
+
+        Table() {
+            for (int r = 0; r < 3; r++) {
+                cells[r][0] = r + 1;
+                for (int c = 1; c < COLUMNS.length; c++) cells[r][c] = "–";
+            }
+        }
+
+        void set(SimulationRunner.State s) {
+            for (int k = 0; k < 3; k++) {
+                Snapshot.FingerSnapshot f = s.snapshot().fingers()[k];
+                Object[] row = cells[k];
+                row[1] = f.state();
+                double[] tau = f.torques();
+                row[2] = Widgets.fmt(tau[0], 3);
+                row[3] = Widgets.fmt(tau[1], 3);
+                row[4] = Widgets.fmt(tau[2], 3);
+                row[5] = f.contactCount();
+                row[6] = Widgets.fmt(f.forceSum(), 2);
+                double b = s.breakaway()[k];
+                row[7] = Double.isNaN(b) ? "–" : Widgets.fmt(b, 4);
+            }
+            fireTableRowsUpdated(0, 2);
+        }
+
+        @Override public int getRowCount() { return 3; }
+        @Override public int getColumnCount() { return COLUMNS.length; }
+        @Override public String getColumnName(int c) { return COLUMNS[c]; }
+        @Override public Object getValueAt(int r, int c) { return cells[r][c]; }
+    }
+}

@@ -1,0 +1,134 @@
+package org.handsim.gui;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.SwingUtilities;
+import org.handsim.sim.Scenario;
+
+/**
+ * Opens the window and, in scripted mode, drives it and closes it: the part of
+ * {@code handsim gui} below the command line.
+ *
+ * <p>Interactive: the window stays until the user closes it (exit code 0). Scripted (a script,
+ * {@code --screenshot} or {@code --measure-fps}): waits for the first rendered frame, runs the
+ * script, takes the screenshot, measures, closes the window and returns the exit code: 0 when
+ * everything worked and no exception reached the event dispatch thread or any other thread's
+ * top (they are recorded by an {@link ErrorLog}); otherwise the code of the failure.
+ *
+ * <p>Both modes print {@code gui: first frame after N ms} — the time from the JVM's start
+ * (i.e. from typing {@code handsim gui}, launcher excluded) to the first frame Java3D swapped.
+ */
+public final class GuiLauncher {
+    private GuiLauncher() {}
+
+    /** How long to wait for the first rendered frame. */
+    static final long FIRST_FRAME_TIMEOUT_MS = 120_000;
+
+    /**
+     * What to do.
+     *
+     * @param scenario   the scenario to open
+     * @param script     actions to run, or null
+     * @param scriptDir  folder for the script's relative file names, or null
+     * @param screenshot PNG to save at the end, or null
+     * @param measureFps seconds of continuous rendering to measure at the end, or null
+     * @param speed      simulation speed (0 = as fast as possible), or null for real time
+     * @param object     a VRML97 file to import before the script, or null
+     */
+    public record Options(Scenario scenario, Script script, Path scriptDir, Path screenshot, Double measureFps, Double speed, Path object) {
+        boolean scripted() { return script != null || screenshot != null || measureFps != null; }
+    }
+
+    /** Runs the window; returns the exit code. Not on the event dispatch thread. */
+    public static int run(Options o, PrintWriter out, PrintWriter err) throws InterruptedException {
+        long start = System.nanoTime();
+        ErrorLog errors = new ErrorLog().install();
+        AtomicReference<HandSimWindow> ref = new AtomicReference<>();
+        try {
+            MeshSource.Model[] hand = HandSimWindow.loadHand();   // off the EDT (MeshSource)
+            ScriptRunner.edt(() -> {
+                HandSimWindow w = new HandSimWindow(o.scenario(), hand, errors, !o.scripted());
+                if (o.speed() != null) w.setSpeed(o.speed());
+                errors.onError(m -> SwingUtilities.invokeLater(() -> w.status(m, true)));
+                w.show();
+                ref.set(w);
+                return null;
+            });
+        } catch (Exception e) {
+            err.println("handsim gui: cannot open the window: " + e);
+            e.printStackTrace(err);
+            return 1;
+        }
+        HandSimWindow w = ref.get();
+        long deadline = System.currentTimeMillis() + FIRST_FRAME_TIMEOUT_MS;
+        while (w.view().framesRendered() == 0 && System.currentTimeMillis() < deadline) Thread.sleep(5);
+        if (w.view().framesRendered() == 0) {
+            err.println("handsim gui: no frame was rendered within " + FIRST_FRAME_TIMEOUT_MS / 1000 + " s (OpenGL not working?)");
+            if (o.scripted()) {
+                dispose(w);
+                return 1;
+            }
+        } else {
+            out.println(String.format(Locale.ROOT, "gui: first frame after %d ms (from the JVM's start; %d ms after the command began; epoch ms %d)",
+                w.view().firstFrameMillisSinceJvmStart(), (System.nanoTime() - start) / 1_000_000, w.view().firstFrameEpochMillis()));
+            out.flush();
+        }
+        ScriptRunner runner = new ScriptRunner(w, out, o.scriptDir());
+        if (!o.scripted()) {
+            if (o.object() != null) {
+                try {
+                    runner.importObject(o.object().toAbsolutePath());
+                } catch (Exception e) {
+                    err.println("handsim gui: --object " + o.object() + ": " + ScriptRunner.message(e));
+                }
+            }
+            w.awaitClosed();
+            return 0;
+        }
+        int code = 0;
+        try {
+            if (o.object() != null) runner.importObject(o.object().toAbsolutePath());
+            if (o.script() != null) runner.run(o.script());
+            if (o.screenshot() != null) runner.screenshot(o.screenshot().toAbsolutePath());
+            if (o.measureFps() != null) {
+                double fps = w.view().measureFps(o.measureFps());
+                int[] info = ScriptRunner.edt(() -> new int[] {w.view().canvas().getWidth(), w.view().canvas().getHeight(), w.triangleCount()});
+                out.println(String.format(Locale.ROOT, "gui: fps %.1f (view %dx%d, %d triangles, %.1f s of continuous rendering)",
+                    fps, info[0], info[1], info[2], o.measureFps()));
+            }
+        } catch (ScriptRunner.ScriptFailure f) {
+            err.println("handsim gui: " + f.getMessage());
+            code = f.exitCode();
+        } catch (Exception e) {
+            err.println("handsim gui: " + e);
+            e.printStackTrace(err);
+            code = 1;
+        }
+        // let queued events run so that their exceptions are counted
+        try {
+            ScriptRunner.edt(() -> null);
+        } catch (Exception ignored) {
+            // nothing queued can fail here
+        }
+        List<String> uncaught = errors.entries();
+        if (!uncaught.isEmpty()) {
+            for (String e : uncaught) err.println("handsim gui: " + e);
+            if (code == 0) code = 1;
+        }
+        out.println("gui: " + (code == 0 ? "done" : "failed (exit code " + code + ")") + ", " + uncaught.size() + " uncaught exceptions");
+        out.flush();
+        dispose(w);
+        return code;
+    }
+
+    private static void dispose(HandSimWindow w) {
+        try {
+            ScriptRunner.edt(() -> { w.dispose(); return null; });
+        } catch (Exception ignored) {
+            // closing anyway
+        }
+    }
+}

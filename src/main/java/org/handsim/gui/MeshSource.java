@@ -1,0 +1,73 @@
+package org.handsim.gui;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.handsim.mesh.TriangleMesh;
+import org.handsim.sim.ScenarioException;
+import org.handsim.sim.SceneGeometry;
+
+/**
+ * Where the view gets its triangle meshes: {@link SceneGeometry#mesh}, the meshes the model
+ * collides (VRML file ⇒ VrmlLoader ⇒ BranchGroup ⇒ tessellation walk ⇒ TriangleMesh, DESIGN.md),
+ * from the same cache — so the view shows exactly the triangles of the simulation, and a file
+ * imported in the window is read once for both. The one place to change if the view should
+ * show something else (e.g. the loader's BranchGroup with its own appearances).
+ *
+ * <p>Colour, for display only: the first {@code diffuseColor} written in the file (plain text
+ * files; none for gzip), else the caller's default.
+ *
+ * <p>Thread-safe, and <b>never on the event dispatch thread</b>: the loader works on a worker
+ * thread and waits for it, and the first Java3D use initialises JOGL, which itself waits for
+ * the event dispatch thread — a deadlock if that thread is the one waiting. {@link #load}
+ * fails fast there instead.
+ */
+public final class MeshSource {
+    private MeshSource() {}
+
+    private static final Pattern DIFFUSE = Pattern.compile("diffuseColor\\s+([-+0-9.eE]+)[\\s,]+([-+0-9.eE]+)[\\s,]+([-+0-9.eE]+)");
+
+    /**
+     * A mesh and its display colour.
+     *
+     * @param mesh   the whole file as one mesh, transforms applied, metres, unscaled
+     * @param colour RGB in [0, 1], or null when the file names none
+     */
+    public record Model(TriangleMesh mesh, float[] colour) {}
+
+    /**
+     * Reads a VRML97 file into one triangle mesh (metres, the file's own frame).
+     *
+     * @param divisions segments round Sphere, Cylinder and Cone nodes (the scenario's value)
+     * @throws IOException {@code FILE:LINE:COL: message} when the file cannot be loaded
+     */
+    public static Model load(Path file, int divisions) throws IOException {
+        if (javax.swing.SwingUtilities.isEventDispatchThread()) {
+            throw new IllegalStateException("MeshSource.load(" + file + ") called on the event dispatch thread (it would deadlock)");
+        }
+        TriangleMesh mesh;
+        try {
+            mesh = SceneGeometry.mesh(file, divisions, 1.0);
+        } catch (ScenarioException e) {
+            throw new IOException(e.getMessage(), e);
+        }
+        return new Model(mesh, colour(file));
+    }
+
+    /** The first diffuseColor in a plain-text file, or null. */
+    static float[] colour(Path file) {
+        try {
+            byte[] head = Files.readAllBytes(file);
+            if (head.length > 1 && (head[0] & 0xff) == 0x1f && (head[1] & 0xff) == 0x8b) return null;   // gzip
+            Matcher m = DIFFUSE.matcher(new String(head, java.nio.charset.StandardCharsets.ISO_8859_1));
+            if (!m.find()) return null;
+            float[] c = new float[3];
+            for (int i = 0; i < 3; i++) c[i] = Math.max(0f, Math.min(1f, Float.parseFloat(m.group(i + 1))));
+            return c;
+        } catch (IOException | NumberFormatException e) {
+            return null;
+        }
+    }
+}

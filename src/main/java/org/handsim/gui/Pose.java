@@ -1,0 +1,68 @@
+package org.handsim.gui;
+
+import org.handsim.kinematics.FingerKinematics;
+import org.handsim.math.RigidTransform;
+import org.handsim.sim.Snapshot;
+
+/**
+ * What the 3D view draws at one instant, immutable: where the palm and the nine links are,
+ * the contacts, and optional markers (an inverse-kinematics target and the closest reachable
+ * point). Built on the simulation thread from a {@link Snapshot} or on the event dispatch
+ * thread from joint values (the Kinematics panel's preview); read by {@link SceneView}.
+ *
+ * @param worldFromPalm  12 row-major values, world ← palm
+ * @param framesWorld    per finger (index 0..2) the frames {k0}..{k3} in the world, 4 × 12
+ * @param contactPoints  3 per contact, world frame, m
+ * @param contactNormals 3 per contact, outward object normal, world frame
+ * @param contactForces  per contact, N
+ * @param target         a marker in the world (m), or null
+ * @param closest        a second marker (the closest reachable point), or null
+ */
+public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] contactPoints, double[] contactNormals,
+                   double[] contactForces, double[] target, double[] closest) {
+
+    private static final double[] NONE = new double[0];
+
+    /** The pose of a simulation snapshot (the arrays are shared with the immutable snapshot). */
+    public static Pose of(Snapshot s, RigidTransform worldFromPalm) {
+        double[][] frames = new double[3][];
+        int n = 0;
+        for (Snapshot.FingerSnapshot f : s.fingers()) n += f.contactCount();
+        double[] p = new double[3 * n], nn = new double[3 * n], force = new double[n];
+        int at = 0;
+        for (int k = 0; k < 3; k++) {
+            Snapshot.FingerSnapshot f = s.fingers()[k];
+            frames[k] = f.framesWorld();
+            int c = f.contactCount();
+            System.arraycopy(f.contactPoints(), 0, p, 3 * at, 3 * c);
+            System.arraycopy(f.contactNormals(), 0, nn, 3 * at, 3 * c);
+            System.arraycopy(f.contactForces(), 0, force, at, c);
+            at += c;
+        }
+        return new Pose(worldFromPalm.toArray(), frames, p, nn, force, null, null);
+    }
+
+    /**
+     * The pose of joint values by forward kinematics (no contacts).
+     *
+     * @param joints per finger {θk1, θk2, θk3}, rad
+     */
+    public static Pose ofJoints(double[][] joints, RigidTransform worldFromPalm) {
+        double[] wp = worldFromPalm.toArray();
+        double[][] frames = new double[3][48];
+        double[] inPalm = new double[48];
+        for (int k = 1; k <= 3; k++) {
+            FingerKinematics.of(k).framesInPalm(joints[k - 1], inPalm);
+            for (int j = 0; j < 4; j++) RigidTransform.multiply(wp, 0, inPalm, 12 * j, frames[k - 1], 12 * j);
+        }
+        return new Pose(wp, frames, NONE, NONE, NONE, null, null);
+    }
+
+    /** A copy with markers (world frame, m; either may be null). */
+    public Pose withMarkers(double[] targetWorld, double[] closestWorld) {
+        return new Pose(worldFromPalm, framesWorld, contactPoints, contactNormals, contactForces, targetWorld, closestWorld);
+    }
+
+    /** @return the number of contacts */
+    public int contactCount() { return contactForces.length; }
+}

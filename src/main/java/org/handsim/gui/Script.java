@@ -1,0 +1,235 @@
+package org.handsim.gui;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import org.handsim.sim.ClutchState;
+
+/**
+ * The action language of {@code handsim gui --script FILE}: one action per line, run in
+ * order against the window as a user would (pressing its buttons, typing into its fields),
+ * for tests, documentation screenshots and measurements. Parsing is pure (no window), so a
+ * bad script fails before anything opens.
+ *
+ * <h2>Syntax</h2>
+ * Blank lines and lines starting with {@code #} are ignored; otherwise a line is
+ * {@code VERB ARGUMENTS}, words separated by spaces. File names are relative to the script
+ * file's folder, then to the HandSim home folder.
+ * <pre>
+ * press LABEL               click the button whose label or name is LABEL (case-insensitive),
+ *                           e.g. press Kinematics, press Path Planning, press Run with dynamics,
+ *                           press ik.solve; only buttons on screen count (open the panel first)
+ * set NAME VALUE            type VALUE into the field NAME and press Enter (fk3.counts, ik.x,
+ *                           path.M3.end, obj.z, dyn.gx, ...); a list: the item with that text,
+ *                           or starting with it; a slider: the number
+ * import FILE               import a VRML97 object (what the Objects panel's file chooser does)
+ *                           and wait until it is in the view and the model
+ * play SECONDS | end        play until the simulated time reaches SECONDS (or the scenario's
+ *                           end) and wait; if it is there already, pause there
+ * speed FACTOR | max        simulation speed: 1 = real time, max = as fast as possible
+ * wait MS                   wait MS milliseconds of wall time
+ * screenshot FILE           save the whole window as PNG
+ * show hand|object|contacts on|off     show or hide a part of the 3D scene
+ * assert-state FINGER S1[|S2...]       fail unless finger 1..3's clutch is in one of the
+ *                                      states (FREE, BLOCKED, BROKEN, STALLED)
+ * assert-status TEXT        fail unless the status bar contains TEXT
+ * log dynamics|state|events|ik         print the Dynamics table, the time and clutch states,
+ *                                      the Dynamics events, or the Kinematics answer
+ * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
+ * </pre>
+ * Output lines start with {@code gui: }. An unknown verb or a bad argument is an error naming
+ * the file and line ({@link ScriptException}; the command exits with code 2); a failing
+ * {@code assert-*} or an action that cannot be done exits with code 1.
+ *
+ * <h2>Example</h2>
+ * <pre>
+ * press Objects
+ * import vrml/objects/cube.wrl
+ * press Dynamics
+ * speed max
+ * play 2.5
+ * assert-state 3 BROKEN|STALLED
+ * screenshot out/gui.png
+ * play end
+ * log dynamics
+ * </pre>
+ */
+public final class Script {
+    /**
+     * The language in brief, for {@code handsim gui --help} (a compile-time constant for
+     * picocli's annotations; {@code %n} is a line break there).
+     */
+    public static final String HELP = "Script actions (one per line, '#' starts a comment; output: 'gui: ' lines):%n"
+        + "  press LABEL          click a button by label or name (press Kinematics)%n"
+        + "  set NAME VALUE       type into a field, then Enter (fk3.counts, ik.x, obj.z)%n"
+        + "  import FILE          import a VRML97 object, as the file chooser does%n"
+        + "  play T|end           play until simulated time T s (or the end), and wait%n"
+        + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
+        + "  wait MS              wait MS milliseconds%n"
+        + "  screenshot FILE      save the whole window as PNG%n"
+        + "  show hand|object|contacts on|off%n"
+        + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
+        + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
+        + "  log dynamics|state|events|ik%n"
+        + "  measure-fps SECONDS  render continuously and print frames per second%n"
+        + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
+        + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
+        + "numerical guard. Field and button names: the Javadoc of each panel class.";
+
+    /** The verbs. */
+    public enum Verb {
+        PRESS("press"), SET("set"), IMPORT("import"), PLAY("play"), SPEED("speed"), WAIT("wait"),
+        SCREENSHOT("screenshot"), SHOW("show"), ASSERT_STATE("assert-state"), ASSERT_STATUS("assert-status"),
+        LOG("log"), MEASURE_FPS("measure-fps");
+
+        final String word;
+
+        Verb(String word) { this.word = word; }
+
+        static Verb of(String w) {
+            for (Verb v : values()) if (v.word.equals(w)) return v;
+            return null;
+        }
+    }
+
+    /**
+     * One action.
+     *
+     * @param line 1-based line number in the file
+     * @param text the line as written (trimmed)
+     * @param verb what to do
+     * @param args the arguments (the last one may contain spaces: labels, values, file names)
+     */
+    public record Action(int line, String text, Verb verb, List<String> args) {
+        public String arg(int i) { return args.get(i); }
+    }
+
+    /** A script that cannot be run as written. */
+    public static final class ScriptException extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        ScriptException(String message) { super(message); }
+    }
+
+    private final String source;
+    private final List<Action> actions;
+
+    private Script(String source, List<Action> actions) {
+        this.source = source;
+        this.actions = List.copyOf(actions);
+    }
+
+    /** The file name the script came from (for messages). */
+    public String source() { return source; }
+
+    public List<Action> actions() { return actions; }
+
+    /** All verbs, for messages and help. */
+    public static String verbs() {
+        StringBuilder sb = new StringBuilder();
+        for (Verb v : Verb.values()) sb.append(sb.length() == 0 ? "" : ", ").append(v.word);
+        return sb.toString();
+    }
+
+    /**
+     * Parses a script.
+     *
+     * @param source a name for messages (the file name)
+     * @throws ScriptException "{@code SOURCE:LINE: message}" for the first bad line
+     */
+    public static Script parse(String source, String text) throws ScriptException {
+        List<Action> out = new ArrayList<>();
+        String[] lines = text.split("\r?\n", -1);
+        for (int i = 0; i < lines.length; i++) {
+            String line = lines[i].trim();
+            if (line.isEmpty() || line.startsWith("#")) continue;
+            int n = i + 1;
+            String[] head = line.split("\\s+", 2);
+            Verb v = Verb.of(head[0].toLowerCase(Locale.ROOT));
+            String rest = head.length > 1 ? head[1].trim() : "";
+            if (v == null) throw error(source, n, "unknown action '" + head[0] + "' (known: " + verbs() + ")");
+            out.add(new Action(n, line, v, arguments(source, n, v, rest)));
+        }
+        return new Script(source, out);
+    }
+
+    private static List<String> arguments(String src, int n, Verb v, String rest) throws ScriptException {
+        switch (v) {
+            case PRESS:
+            case IMPORT:
+            case SCREENSHOT:
+            case ASSERT_STATUS:
+                if (rest.isEmpty()) throw error(src, n, v.word + " needs an argument");
+                return List.of(rest);
+            case SET: {
+                String[] p = rest.split("\\s+", 2);
+                if (p.length < 2 || p[1].isEmpty()) throw error(src, n, "set needs a field name and a value, e.g. 'set fk3.counts 5000'");
+                return List.of(p[0], p[1].trim());
+            }
+            case PLAY:
+                if (!rest.equalsIgnoreCase("end")) positive(src, n, v, rest);
+                return List.of(rest.toLowerCase(Locale.ROOT));
+            case SPEED:
+                if (!rest.equalsIgnoreCase("max")) {
+                    double f = number(src, n, v, rest);
+                    if (!(f > 0)) throw error(src, n, "speed must be > 0 or 'max', got " + rest);
+                }
+                return List.of(rest.toLowerCase(Locale.ROOT));
+            case WAIT: {
+                double ms = number(src, n, v, rest);
+                if (ms < 0 || ms != Math.rint(ms)) throw error(src, n, "wait needs whole milliseconds >= 0, got " + rest);
+                return List.of(rest);
+            }
+            case MEASURE_FPS:
+                positive(src, n, v, rest);
+                return List.of(rest);
+            case SHOW: {
+                String[] p = rest.toLowerCase(Locale.ROOT).split("\\s+");
+                if (p.length != 2 || !Arrays.asList("hand", "object", "contacts").contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
+                    throw error(src, n, "show needs hand|object|contacts and on|off, got '" + rest + "'");
+                }
+                return List.of(p[0], p[1]);
+            }
+            case ASSERT_STATE: {
+                String[] p = rest.split("\\s+");
+                if (p.length != 2 || !p[0].matches("[123]")) throw error(src, n, "assert-state needs a finger 1..3 and states, e.g. 'assert-state 3 BROKEN|STALLED'");
+                for (String s : p[1].split("\\|")) {
+                    try {
+                        ClutchState.valueOf(s.toUpperCase(Locale.ROOT));
+                    } catch (IllegalArgumentException e) {
+                        throw error(src, n, "unknown clutch state '" + s + "' (FREE, BLOCKED, BROKEN, STALLED)");
+                    }
+                }
+                return List.of(p[0], p[1].toUpperCase(Locale.ROOT));
+            }
+            case LOG:
+                if (!Arrays.asList("dynamics", "state", "events", "ik").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events or ik, got '" + rest + "'");
+                }
+                return List.of(rest.toLowerCase(Locale.ROOT));
+            default:
+                throw new AssertionError(v);
+        }
+    }
+
+    private static double number(String src, int n, Verb v, String text) throws ScriptException {
+        try {
+            double d = Double.parseDouble(text);
+            if (!Double.isFinite(d)) throw new NumberFormatException();
+            return d;
+        } catch (NumberFormatException e) {
+            throw error(src, n, v.word + " needs a number, got '" + text + "'");
+        }
+    }
+
+    private static double positive(String src, int n, Verb v, String text) throws ScriptException {
+        double d = number(src, n, v, text);
+        if (!(d > 0)) throw error(src, n, v.word + " needs a number > 0, got '" + text + "'");
+        return d;
+    }
+
+    private static ScriptException error(String src, int line, String message) {
+        return new ScriptException(src + ":" + line + ": " + message);
+    }
+}

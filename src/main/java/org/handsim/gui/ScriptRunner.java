@@ -1,0 +1,357 @@
+package org.handsim.gui;
+
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Robot;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintWriter;
+import java.lang.reflect.InvocationTargetException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.imageio.ImageIO;
+import javax.swing.AbstractButton;
+import javax.swing.JComboBox;
+import javax.swing.JSlider;
+import javax.swing.SwingUtilities;
+import javax.swing.text.JTextComponent;
+import org.handsim.sim.ClutchState;
+import org.handsim.sim.Home;
+import org.handsim.util.AtomicFile;
+
+/**
+ * Runs a {@link Script} against a {@link HandSimWindow}, one action after the other, on the
+ * calling thread (never the event dispatch thread): each action that touches Swing is done
+ * on the EDT with {@code invokeAndWait}; waits ({@code play}, {@code import}) poll the
+ * simulation's published state, so the window keeps updating meanwhile.
+ *
+ * <p>Screenshots are taken with {@link Robot#createScreenCapture} over the window's bounds:
+ * the Java3D canvas is a heavyweight OpenGL surface that {@code paint} into an image would
+ * leave blank, while the screen (Xvfb's framebuffer under a virtual display) holds what was
+ * actually rendered. Before capturing, the view is updated, Java3D is asked for a new frame
+ * and the runner waits until it was swapped.
+ */
+public final class ScriptRunner {
+    /** How long {@code play} may take in wall time before the script fails. */
+    static final long PLAY_TIMEOUT_MS = 20 * 60_000L;
+
+    /** A failed action (exit code 1, or 4 for a simulation stopped by its guard). */
+    public static final class ScriptFailure extends Exception {
+        private static final long serialVersionUID = 1L;
+        final int exitCode;
+
+        ScriptFailure(String message, int exitCode) {
+            super(message);
+            this.exitCode = exitCode;
+        }
+
+        public int exitCode() { return exitCode; }
+    }
+
+    private final HandSimWindow window;
+    private final PrintWriter out;
+    private final Path baseDir;
+
+    /**
+     * @param window  the window to drive
+     * @param out     where {@code gui: } lines go
+     * @param baseDir folder that relative file names are resolved against first (the script's)
+     */
+    public ScriptRunner(HandSimWindow window, PrintWriter out, Path baseDir) {
+        this.window = window;
+        this.out = out;
+        this.baseDir = baseDir;
+    }
+
+    /** Runs every action; throws on the first that fails. */
+    public void run(Script script) throws ScriptFailure, InterruptedException {
+        for (Script.Action a : script.actions()) {
+            try {
+                perform(a);
+            } catch (ScriptFailure f) {
+                throw new ScriptFailure(script.source() + ":" + a.line() + ": " + a.text() + ": " + f.getMessage(), f.exitCode);
+            } catch (InterruptedException e) {
+                throw e;
+            } catch (Exception e) {
+                throw new ScriptFailure(script.source() + ":" + a.line() + ": " + a.text() + ": " + message(e), 1);
+            }
+        }
+    }
+
+    static String message(Throwable e) {
+        Throwable c = e instanceof ExecutionException || e instanceof InvocationTargetException ? e.getCause() : e;
+        return c.getMessage() != null ? c.getMessage() : c.toString();
+    }
+
+    private void perform(Script.Action a) throws Exception {
+        switch (a.verb()) {
+            case PRESS: edt(() -> { press(a.arg(0)); return null; }); break;
+            case SET: edt(() -> { set(a.arg(0), a.arg(1)); return null; }); break;
+            case IMPORT:
+                importObject(resolve(a.arg(0)));
+                break;
+            case PLAY: play(a.arg(0)); break;
+            case SPEED: {
+                double f = a.arg(0).equals("max") ? 0 : Double.parseDouble(a.arg(0));
+                edt(() -> { window.setSpeed(f); return null; });
+                break;
+            }
+            case WAIT: Thread.sleep(Long.parseLong(a.arg(0))); break;
+            case SCREENSHOT: screenshot(resolveOut(a.arg(0))); break;
+            case SHOW: {
+                SceneView.Part p = SceneView.Part.valueOf(a.arg(0).toUpperCase(Locale.ROOT));
+                boolean on = a.arg(1).equals("on");
+                edt(() -> { window.view().setVisible(p, on); return null; });
+                break;
+            }
+            case ASSERT_STATE: {
+                int k = Integer.parseInt(a.arg(0));
+                window.runner().sync();
+                SimulationRunner.State s = window.runner().latest();
+                if (s.snapshot() == null) throw new ScriptFailure("no model", 1);
+                ClutchState c = s.clutch(k);
+                List<String> want = List.of(a.arg(1).split("\\|"));
+                if (!want.contains(c.name())) throw new ScriptFailure("finger " + k + " is " + c + ", expected " + a.arg(1), 1);
+                say(String.format(Locale.ROOT, "finger %d is %s at t = %.4f s (breakaway %s)", k, c, s.time(),
+                    Double.isNaN(s.breakaway()[k - 1]) ? "none" : Widgets.fmt(s.breakaway()[k - 1], 4) + " s"));
+                break;
+            }
+            case ASSERT_STATUS: {
+                String st = edt(window::statusText);
+                if (!st.contains(a.arg(0))) throw new ScriptFailure("the status bar says '" + st + "'", 1);
+                say("status: " + st);
+                break;
+            }
+            case LOG: log(a.arg(0)); break;
+            case MEASURE_FPS: {
+                double seconds = Double.parseDouble(a.arg(0));
+                double fps = window.view().measureFps(seconds);
+                java.awt.Dimension d = edt(() -> window.view().canvas().getSize());
+                say(String.format(Locale.ROOT, "fps %.1f (view %dx%d, %d triangles, %.1f s of continuous rendering)",
+                    fps, d.width, d.height, edt(window::triangleCount), seconds));
+                break;
+            }
+            default:
+                throw new AssertionError(a.verb());
+        }
+    }
+
+    /** Imports an object as the Objects panel's file chooser does, and waits until it is in the view and the model. */
+    public void importObject(Path f) throws Exception {
+        Future<?> done = edt(() -> window.objectsPanel().importFile(f));
+        done.get(5, TimeUnit.MINUTES);
+        window.runner().sync();
+        edt(() -> { window.refreshNow(); return null; });
+        say("imported " + f);
+    }
+
+    private void say(String line) {
+        out.println("gui: " + line);
+        out.flush();
+    }
+
+    private Path resolve(String name) {
+        Path p = Path.of(name);
+        if (p.isAbsolute()) return p;
+        if (baseDir != null && Files.exists(baseDir.resolve(p))) return baseDir.resolve(p);
+        if (Files.exists(p)) return p.toAbsolutePath();
+        return Home.dir().resolve(p);
+    }
+
+    private Path resolveOut(String name) {
+        Path p = Path.of(name);
+        return p.isAbsolute() ? p : p.toAbsolutePath();
+    }
+
+    // ------------------------------------------------------------------ actions on the EDT
+    private void press(String label) throws ScriptFailure {
+        List<AbstractButton> all = new ArrayList<>();
+        collect(window.frame().getRootPane(), AbstractButton.class, all);
+        AbstractButton hidden = null;
+        for (AbstractButton b : all) {
+            boolean match = label.equalsIgnoreCase(b.getName()) || label.equalsIgnoreCase(b.getText())
+                || label.equalsIgnoreCase("tool." + b.getText());
+            if (!match) continue;
+            if (b.isShowing() && b.isEnabled()) {
+                b.doClick(0);
+                say("pressed " + label);
+                return;
+            }
+            hidden = b;
+        }
+        throw new ScriptFailure(hidden != null ? "the button '" + label + "' is not on screen (open its panel first)"
+            : "no button '" + label + "'", 1);
+    }
+
+    private void set(String name, String value) throws ScriptFailure {
+        List<Component> all = new ArrayList<>();
+        collect(window.frame().getRootPane(), Component.class, all);
+        Component found = null;
+        for (Component c : all) {
+            if (name.equals(c.getName())) {
+                found = c;
+                if (c.isShowing()) break;
+            }
+        }
+        if (found == null) throw new ScriptFailure("no field '" + name + "'", 1);
+        if (!found.isShowing()) throw new ScriptFailure("the field '" + name + "' is not on screen (open its panel first)", 1);
+        if (found instanceof javax.swing.JTextField) {
+            javax.swing.JTextField f = (javax.swing.JTextField) found;
+            f.requestFocusInWindow();
+            f.setText(value);
+            f.postActionEvent();
+        } else if (found instanceof JTextComponent) {
+            ((JTextComponent) found).setText(value);
+        } else if (found instanceof JComboBox) {
+            JComboBox<?> box = (JComboBox<?>) found;
+            int pick = -1;
+            for (int i = 0; i < box.getItemCount() && pick < 0; i++) if (String.valueOf(box.getItemAt(i)).equalsIgnoreCase(value)) pick = i;
+            for (int i = 0; i < box.getItemCount() && pick < 0; i++) {
+                if (String.valueOf(box.getItemAt(i)).toLowerCase(Locale.ROOT).startsWith(value.toLowerCase(Locale.ROOT))) pick = i;
+            }
+            if (pick < 0) throw new ScriptFailure("the list '" + name + "' has no item '" + value + "'", 1);
+            box.setSelectedIndex(pick);
+        } else if (found instanceof JSlider) {
+            try {
+                ((JSlider) found).setValue((int) Math.round(Double.parseDouble(value)));
+            } catch (NumberFormatException e) {
+                throw new ScriptFailure("the slider '" + name + "' needs a number, got '" + value + "'", 1);
+            }
+        } else {
+            throw new ScriptFailure("'" + name + "' is a " + found.getClass().getSimpleName() + ", not a field", 1);
+        }
+        say("set " + name + " = " + value);
+    }
+
+    private static <T> void collect(Container c, Class<T> type, List<T> out) {
+        for (Component child : c.getComponents()) {
+            if (type.isInstance(child)) out.add(type.cast(child));
+            if (child instanceof Container) collect((Container) child, type, out);
+        }
+    }
+
+    // ------------------------------------------------------------------ play, log, screenshot
+    private void play(String arg) throws Exception {
+        SimulationRunner r = window.runner();
+        r.sync();
+        double target = arg.equals("end") ? Double.POSITIVE_INFINITY : Double.parseDouble(arg);
+        long frames0 = window.view().framesRendered(), wall0 = System.nanoTime();
+        edt(() -> { window.playUntil(target); return null; });
+        r.sync();
+        long deadline = System.currentTimeMillis() + PLAY_TIMEOUT_MS;
+        SimulationRunner.State s = r.latest();
+        // probe the event dispatch thread: how late does a posted event run while the model plays?
+        java.util.concurrent.atomic.AtomicLong worstLatency = new java.util.concurrent.atomic.AtomicLong();
+        int probes = 0;
+        while (s.playing()) {
+            if (System.currentTimeMillis() > deadline) throw new ScriptFailure("still playing after " + PLAY_TIMEOUT_MS / 1000 + " s", 1);
+            long posted = System.nanoTime();
+            SwingUtilities.invokeLater(() -> worstLatency.accumulateAndGet(System.nanoTime() - posted, Math::max));
+            probes++;
+            Thread.sleep(20);
+            s = r.latest();
+        }
+        edt(() -> { window.refreshNow(); return null; });
+        if (s.error() != null) throw new ScriptFailure(s.error(), 4);
+        double wall = (System.nanoTime() - wall0) / 1e9;
+        long frames = window.view().framesRendered() - frames0;
+        say(String.format(Locale.ROOT, "played to t = %.4f s%s in %.2f s wall; the 3D view showed %d frames (%.1f per second); "
+            + "event dispatch thread latency at most %.1f ms (%d probes)",
+            s.time(), s.finished() ? " (end of the scenario)" : "", wall, frames, frames / wall, worstLatency.get() / 1e6, probes));
+    }
+
+    private void log(String what) throws Exception {
+        window.runner().sync();
+        edt(() -> { window.refreshNow(); return null; });
+        switch (what) {
+            case "dynamics":
+                for (String l : edt(() -> window.dynamics().tableLines())) say("dynamics: " + l);
+                break;
+            case "events":
+                for (String l : edt(() -> window.dynamics().eventsText()).split("\n")) if (!l.isBlank()) say("event: " + l);
+                break;
+            case "ik":
+                for (String l : edt(() -> window.kinematics().ikText()).split("\n")) say("ik: " + l);
+                break;
+            default: {
+                SimulationRunner.State s = window.runner().latest();
+                StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "state: t = %.4f s, %s", s.time(),
+                    s.error() != null ? "stopped: " + s.error() : s.playing() ? "playing" : s.finished() ? "at the end" : "paused"));
+                if (s.snapshot() != null) {
+                    for (int k = 1; k <= 3; k++) sb.append(", finger ").append(k).append(' ').append(s.clutch(k));
+                }
+                say(sb.toString());
+            }
+        }
+    }
+
+    /**
+     * Saves the whole window as PNG (atomically) and prints its size and the regions of the 3D
+     * view and the charts in window coordinates: {@code gui: screenshot FILE WxH view=x,y,w,h
+     * charts=x,y,w,h}.
+     */
+    public void screenshot(Path file) throws Exception {
+        window.runner().sync();
+        edt(() -> { window.refreshNow(); return null; });
+        window.charts().awaitDrawn();
+        edt(() -> {
+            window.frame().toFront();
+            window.frame().getRootPane().paintImmediately(window.frame().getRootPane().getBounds());
+            return null;
+        });
+        long f0 = window.view().framesRendered();
+        window.view().canvas().getView().repaint();
+        long until = System.currentTimeMillis() + 3000;
+        while (window.view().framesRendered() < f0 + 2 && System.currentTimeMillis() < until) {
+            window.view().canvas().getView().repaint();
+            Thread.sleep(20);
+        }
+        Thread.sleep(150);
+        AtomicReference<Rectangle> bounds = new AtomicReference<>();
+        List<Rectangle> regions = edt(() -> {
+            Point p = window.frame().getLocationOnScreen();
+            bounds.set(new Rectangle(p.x, p.y, window.frame().getWidth(), window.frame().getHeight()));
+            return window.regions();
+        });
+        BufferedImage img = new Robot().createScreenCapture(bounds.get());
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        ImageIO.write(img, "png", bytes);
+        if (file.getParent() != null) Files.createDirectories(file.getParent());
+        try (AtomicFile af = new AtomicFile(file)) {
+            bytes.writeTo(af.stream());
+            af.commit();
+        }
+        say(String.format(Locale.ROOT, "screenshot %s %dx%d view=%s charts=%s", file, img.getWidth(), img.getHeight(),
+            rect(regions.get(0)), rect(regions.get(1))));
+    }
+
+    private static String rect(Rectangle r) {
+        return r.x + "," + r.y + "," + r.width + "," + r.height;
+    }
+
+    /** Runs {@code c} on the event dispatch thread and returns its value. */
+    static <T> T edt(Callable<T> c) throws Exception {
+        if (SwingUtilities.isEventDispatchThread()) return c.call();
+        AtomicReference<T> value = new AtomicReference<>();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                value.set(c.call());
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) throw failure.get();
+        return value.get();
+    }
+}

@@ -1,0 +1,31 @@
+/**
+ * The desktop program (paper Section V, Fig. 5): a Swing window with the paper's Kinematics,
+ * Path Planning, Dynamics and Objects buttons, a Java3D view of the hand, the object and the
+ * contacts, live JFreeChart traces, Play / Pause / Step / Reset, and a scripted mode for tests
+ * and documentation ({@link org.handsim.gui.Script}). Uses {@code sim} (and the kinematics it
+ * is built on) and JFreeChart; nothing outside {@code gui} and {@code cli} uses this package.
+ *
+ * <h2>Thread rules</h2>
+ * <ol>
+ *   <li><b>The model has one thread.</b> Only the simulation thread of
+ *       {@link org.handsim.gui.SimulationRunner} creates, initialises and steps the
+ *       {@code HandModel}. Other threads send it commands (load, play, pause, step, reset,
+ *       speed), which it runs in order.</li>
+ *   <li><b>Views read immutable values.</b> The simulation thread publishes a
+ *       {@link org.handsim.gui.SimulationRunner.State} (holding a {@code sim.Snapshot}) through
+ *       a volatile field and trace rows through a concurrent queue; nothing published is
+ *       changed afterwards.</li>
+ *   <li><b>Swing and the scene graph belong to the event dispatch thread.</b> A
+ *       {@code javax.swing.Timer} on the EDT reads the newest state at display rate and updates
+ *       the 3D view, charts, labels and tables; panels change the working scenario there. Java3D
+ *       renders on its own threads from the scene graph the EDT edits (the frame-rate
+ *       measurement's spin behaviour runs on Java3D's behaviour thread).</li>
+ *   <li><b>Nothing slow on the EDT.</b> Stepping, and reading VRML files, run on other threads;
+ *       the EDT never waits for the model. Scripts run on their own thread and reach the EDT
+ *       with {@code invokeAndWait}.</li>
+ *   <li><b>Errors are shown, not lost.</b> A {@code SimulationException} stops the run and
+ *       appears in the status bar and a dialog; uncaught exceptions (on the EDT or elsewhere)
+ *       are recorded by {@link org.handsim.gui.ErrorLog} and make a scripted run fail.</li>
+ * </ol>
+ */
+package org.handsim.gui;

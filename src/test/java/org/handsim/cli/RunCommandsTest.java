@@ -1,0 +1,76 @@
+package org.handsim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.handsim.sim.Home;
+import org.handsim.sim.Recorder;
+import org.junit.jupiter.api.Test;
+
+/** `handsim run` and `handsim sweep`: the files they promise, and their failures. */
+class RunCommandsTest {
+    @Test
+    void runWritesTheContractFiles() throws Exception {
+        Path out = Files.createTempDirectory("handsim-run");
+        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", "--out", out.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.out().contains("finger 3: breakaway at t = 1.800"), r.out());
+        List<String> trace = Files.readAllLines(out.resolve("trace.csv"));
+        assertEquals(Recorder.header(), trace.get(0));
+        assertTrue(trace.get(0).startsWith("t_s,qM1_counts,theta11_rad,theta12_rad,theta13_rad,dtheta12_rad_s,dtheta13_rad_s,"
+            + "ddtheta12_rad_s2,ddtheta13_rad_s2,tau12_Nm,tau13_Nm,state1,contacts1,force1_N,qM2_counts"));
+        assertTrue(trace.get(0).endsWith("state3,contacts3,force3_N,qM4_counts"));
+        assertEquals(1 + 8948, trace.size(), "header, t = 0, then 8947 steps");
+        String summary = Files.readString(out.resolve("summary.json"));
+        for (String key : new String[] {"\"scenario\"", "\"sim_time_s\"", "\"steps\"", "\"dt_s\"", "\"wall_time_s\"", "\"steps_per_s\"",
+            "\"breakaway_time_s\"", "\"breakaway_torque_Nm\"", "\"breakaway_force_N\"", "\"final_joints_rad\"", "\"max_contact_force_N\""}) {
+            assertTrue(summary.contains(key), key);
+        }
+        for (String f : new String[] {"fig7_finger3.png", "fig7_finger3.svg", "fig8_finger3.png", "fig8_finger3.svg"}) {
+            assertTrue(Files.size(out.resolve(f)) > 10_000, f);
+        }
+        try (var s = Files.list(out)) {
+            assertFalse(s.anyMatch(p -> p.getFileName().toString().endsWith(".partial")), "no temporary files left");
+        }
+    }
+
+    @Test
+    void badScenarioIsALoadErrorNamingTheField() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-run");
+        Path bad = dir.resolve("bad.json");
+        Files.writeString(bad, Files.readString(Home.paperScenario()).replace("\"dt_s\": 0.001", "\"dt_s\": -1")
+            .replace("../vrml/objects/cube.wrl", Home.dir().resolve("vrml/objects/cube.wrl").toString().replace("\\", "/")));
+        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", bad.toString(), "--out", dir.resolve("out").toString());
+        assertEquals(3, r.code());
+        assertTrue(r.err().contains("field dt_s: must be > 0"), r.err());
+        assertFalse(Files.exists(dir.resolve("out")));
+    }
+
+    @Test
+    void sweepRunsInParallelAndReportsAFailedRunWithoutStoppingTheOthers() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-sweep");
+        Path base = dir.resolve("base.json");
+        Files.writeString(base, Files.readString(Home.paperScenario())
+            .replace("../vrml/objects/cube.wrl", Home.dir().resolve("vrml/objects/cube.wrl").toString().replace("\\", "/")));
+        Path sweep = dir.resolve("sweep.json");
+        Files.writeString(sweep, "{\"name\":\"t\",\"base\":\"base.json\",\"runs\":["
+            + "{\"label\":\"as is\",\"set\":{}},"
+            + "{\"label\":\"no cube\",\"set\":{\"object\":null,\"duration_s\":2.0}},"
+            + "{\"label\":\"broken\",\"set\":{\"dt_s\":-1}}]}");
+        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("sweep", sweep.toString(), "--out", dir.resolve("out").toString(), "--threads", "2");
+        assertEquals(1, r.code(), r.err());
+        List<String> rows = Files.readAllLines(dir.resolve("out").resolve("summary.csv"));
+        assertEquals(SweepCommand.HEADER, rows.get(0));
+        assertEquals(4, rows.size());
+        assertTrue(rows.get(1).startsWith("as is,paper-breakaway,ok,"), rows.get(1));
+        assertTrue(rows.get(1).contains(",1.800"), rows.get(1));
+        assertTrue(rows.get(2).startsWith("no cube,paper-breakaway,ok,"), rows.get(2));
+        assertTrue(rows.get(3).startsWith("broken,,failed,") && rows.get(3).contains("dt_s"), rows.get(3));
+        String csvSplit = ",(?=(?:[^\"]*\"[^\"]*\")*[^\"]*$)"; // commas outside quotes
+        for (String row : rows) assertEquals(SweepCommand.HEADER.split(",", -1).length, row.split(csvSplit, -1).length, row);
+    }
+}

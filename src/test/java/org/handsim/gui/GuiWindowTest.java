@@ -1,0 +1,245 @@
+package org.handsim.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.awt.Rectangle;
+import java.awt.image.BufferedImage;
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
+import org.handsim.TestPaths;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The window end to end (issue 7, "Done means"), in a separate JVM on the current display —
+ * the test JVM itself runs headless with Java3D's no-op renderer. The child process opens
+ * {@code handsim gui} on the paper's experiment and runs a script that presses each of the
+ * four buttons, imports the cube, runs the experiment with dynamics (in real time to
+ * t = 2.5 s, after the breakaway, where it logs the Dynamics panel and takes a screenshot; then
+ * as fast as possible to the end), and takes a second screenshot with the hand, object and
+ * contacts hidden (the empty scene). Checked:
+ * <ul>
+ *   <li>exit code 0 and no exception on the event dispatch thread (the program counts them and
+ *       fails; the log is searched too);</li>
+ *   <li>the 3D view region shows the hand: enough pixels differ from the background colour,
+ *       and from the empty scene's screenshot;</li>
+ *   <li>the chart region shows the traces: pixels in finger 3's trace colour;</li>
+ *   <li>the breakaway appears in the Dynamics panel: at t = 2.5 s finger 3 is BROKEN or
+ *       STALLED and its row has the breakaway time; the events list names the breakaway.</li>
+ * </ul>
+ * Without a display the test is skipped with the reason printed — or fails, when the system
+ * property {@code handsim.requireDisplay} is {@code true} or the environment variable
+ * {@code HANDSIM_REQUIRE_DISPLAY} is {@code 1} / {@code true} (what {@code ./test} sets when it
+ * runs the suite under {@code xvfb-run}).
+ *
+ * <p>The display comes from the environment ({@code DISPLAY}, {@code XAUTHORITY}) or, where the
+ * environment does not reach the test JVM (Gradle 4.4's daemon on JDK 17 keeps the environment
+ * it was started with), from the system properties {@code handsim.display} and
+ * {@code handsim.xauthority}. Either of these runs the test under a virtual display:
+ * <pre>
+ * HANDSIM_REQUIRE_DISPLAY=1 xvfb-run -a -s '-screen 0 1280x1024x24' gradle --no-daemon test
+ * xvfb-run -a -s '-screen 0 1280x1024x24' sh -c 'gradle test -Dhandsim.requireDisplay=true \
+ *     -Dhandsim.display="$DISPLAY" -Dhandsim.xauthority="$XAUTHORITY"'   # build.gradle forwards them
+ * </pre>
+ */
+class GuiWindowTest {
+    /** Share of the 3D view's pixels that must show something other than the background. */
+    static final double MIN_SCENE_FRACTION = 0.02;
+    static final double MAX_EMPTY_FRACTION = 0.002;
+    static final int MIN_TRACE_PIXELS = 800;
+    static final long TIMEOUT_MIN = 10;
+
+    static boolean requireDisplay() {
+        String env = System.getenv("HANDSIM_REQUIRE_DISPLAY");
+        return Boolean.getBoolean("handsim.requireDisplay") || "1".equals(env) || "true".equalsIgnoreCase(env);
+    }
+
+    /**
+     * The X display: the environment's DISPLAY, else the system property {@code handsim.display}
+     * (Gradle 4.4's daemon on JDK 17 keeps the environment it started with, so a build run under
+     * {@code xvfb-run} may have to pass the display as a property; see the class comment).
+     */
+    static String display() {
+        String d = System.getenv("DISPLAY");
+        if (d == null || d.isEmpty()) d = System.getProperty("handsim.display");
+        return d == null || d.isEmpty() ? null : d;
+    }
+
+    static void needDisplay() {
+        if (display() != null) return;
+        String why = "no DISPLAY: the window test needs a display; run the tests under a virtual display, e.g. "
+            + "xvfb-run -a -s '-screen 0 1280x1024x24' gradle test (./test does this)";
+        if (requireDisplay()) fail(why + " [handsim.requireDisplay is set, so this is a failure]");
+        System.out.println("GuiWindowTest skipped: " + why);
+        Assumptions.assumeTrue(false, why);
+    }
+
+    /** Output and exit code of {@code handsim gui ARGS} in a child JVM on the current display. */
+    record Child(int code, String log) {}
+
+    static Child runGui(Path dir, String... args) throws Exception {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.add("-Xss16m");
+        cmd.add("-Xmx1g");
+        cmd.add("-Dhandsim.home=" + TestPaths.root());
+        cmd.add("-cp");
+        cmd.add(System.getProperty("java.class.path"));
+        cmd.add("org.handsim.cli.HandSim");
+        cmd.add("gui");
+        cmd.addAll(List.of(args));
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).directory(dir.toFile());
+        pb.environment().put("DISPLAY", display());
+        String xauth = System.getenv("XAUTHORITY");
+        if (xauth == null || xauth.isEmpty()) xauth = System.getProperty("handsim.xauthority");
+        if (xauth != null && !xauth.isEmpty()) pb.environment().put("XAUTHORITY", xauth);
+        Path logFile = dir.resolve("gui.log");
+        pb.redirectOutput(logFile.toFile());
+        Process p = pb.start();
+        if (!p.waitFor(TIMEOUT_MIN, TimeUnit.MINUTES)) {
+            p.destroyForcibly();
+            fail("handsim gui did not finish within " + TIMEOUT_MIN + " minutes; log:\n" + Files.readString(logFile));
+        }
+        String log = Files.readString(logFile, StandardCharsets.UTF_8);
+        System.out.println("---- handsim gui log ----\n" + log + "-------------------------");
+        return new Child(p.exitValue(), log);
+    }
+
+    @Test
+    void theWindowRunsThePapersExperiment() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-gui-test");
+        needDisplay();
+        Path cube = TestPaths.root().resolve("vrml/objects/cube.wrl");
+        Path full = dir.resolve("window.png"), empty = dir.resolve("empty.png");
+        Path script = dir.resolve("paper.txt");
+        Files.writeString(script, String.join("\n",
+            "press Kinematics",
+            "set fk3.counts 5000",
+            "set ik.z 0.5",
+            "press Solve",
+            "assert-status UNREACHABLE",
+            "press Path Planning",
+            "press Dynamics",
+            "press Objects",
+            "import " + cube,
+            "press Dynamics",
+            "speed 1",
+            "press Run with dynamics",
+            "play 2.5",
+            "assert-state 3 BROKEN|STALLED",
+            "log dynamics",
+            "screenshot " + full,
+            "speed max",
+            "play end",
+            "log dynamics",
+            "log events",
+            "log state",
+            "show hand off",
+            "show object off",
+            "show contacts off",
+            "screenshot " + empty,
+            ""));
+        Child c = runGui(dir, "--script", script.toString());
+        System.out.println("screenshots and log in " + dir);
+
+        // no exception on the event dispatch thread (or anywhere)
+        assertEquals(0, c.code(), "exit code; log:\n" + c.log());
+        assertTrue(c.log().contains("gui: done, 0 uncaught exceptions"), c.log());
+        assertFalse(c.log().contains("uncaught exception on thread"), c.log());
+        assertFalse(c.log().contains("\tat org.handsim."), "a stack trace from HandSim code:\n" + c.log());
+        assertTrue(c.log().contains("gui: status: inverse kinematics: target UNREACHABLE"), "unreachable IK target in the status bar:\n" + c.log());
+
+        // the breakaway in the Dynamics panel
+        Matcher row = Pattern.compile("gui: dynamics: finger=3 .*clutch=(\\w+).*breakaway_s=([0-9.]+)").matcher(c.log());
+        assertTrue(row.find(), "finger 3's Dynamics row with a breakaway time:\n" + c.log());
+        assertTrue(row.group(1).equals("BROKEN") || row.group(1).equals("STALLED"), row.group());
+        double tb = Double.parseDouble(row.group(2));
+        assertTrue(tb > 0, "breakaway time " + tb);
+        assertTrue(c.log().contains("finger 3 BREAKAWAY"), "the events list names the breakaway:\n" + c.log());
+
+        // the screenshots
+        Rectangle[] regions = regions(c.log(), full);
+        BufferedImage a = ImageIO.read(full.toFile()), b = ImageIO.read(empty.toFile());
+        Rectangle view = regions[0], charts = regions[1];
+        int viewPixels = view.width * view.height;
+        assertTrue(viewPixels > 100 * 100, "3D view region too small: " + view);
+        double scene = fraction(a, view, (x, y) -> differs(a.getRGB(x, y), SceneView.BACKGROUND_RGB, 30));
+        double emptyScene = fraction(b, view, (x, y) -> differs(b.getRGB(x, y), SceneView.BACKGROUND_RGB, 30));
+        double changed = fraction(a, view, (x, y) -> differs(a.getRGB(x, y), b.getRGB(x, y), 30));
+        System.out.printf("3D view %s: %.1f%% not background with the hand, %.2f%% without, %.1f%% changed%n",
+            view, 100 * scene, 100 * emptyScene, 100 * changed);
+        assertTrue(scene >= MIN_SCENE_FRACTION, "the 3D view shows too little: " + scene);
+        assertTrue(emptyScene <= MAX_EMPTY_FRACTION, "the empty scene is not empty (or the background colour is wrong): " + emptyScene);
+        assertTrue(changed >= MIN_SCENE_FRACTION, "hiding the hand changed too little: " + changed);
+
+        int red = 0;
+        for (int y = charts.y; y < charts.y + charts.height; y++) {
+            for (int x = charts.x; x < charts.x + charts.width; x++) {
+                if (!differs(a.getRGB(x, y), TraceCharts.FINGER_RGB[2], 60)) red++;
+            }
+        }
+        System.out.println("charts " + charts + ": " + red + " pixels in finger 3's colour");
+        assertTrue(red >= MIN_TRACE_PIXELS, "the charts show no traces of finger 3 (" + red + " pixels)");
+        GuiCommandTest.delete(dir);   // kept when a check fails, for a look at the screenshots
+    }
+
+    @Test
+    void aVrmlFileThatFailsToLoadIsReportedInTheWindow() throws Exception {
+        needDisplay();
+        Path dir = Files.createTempDirectory("handsim-gui-test");
+        Path broken = dir.resolve("broken.wrl");
+        Files.writeString(broken, "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 1 0 0] }"
+            + " coordIndex [0, 1, 9, -1] } }\n");
+        Path script = dir.resolve("broken.txt");
+        Files.writeString(script, "press Objects\nimport " + broken + "\n");
+        Child c = runGui(dir, "--script", script.toString());
+        assertEquals(1, c.code(), "the failed import fails the script; log:\n" + c.log());
+        assertTrue(c.log().contains("handsim gui: cannot load " + broken + ": " + broken + ":2:"), "FILE:LINE:COL of the loader:\n" + c.log());
+        assertTrue(c.log().contains("coordIndex"), c.log());
+        assertTrue(c.log().contains("broken.txt:2: import " + broken), "the script line is named:\n" + c.log());
+        assertTrue(c.log().contains("gui: failed (exit code 1), 0 uncaught exceptions"), c.log());
+        GuiCommandTest.delete(dir);
+    }
+
+    /** The view and chart regions the program printed for a screenshot. */
+    static Rectangle[] regions(String log, Path shot) {
+        Matcher m = Pattern.compile("gui: screenshot " + Pattern.quote(shot.toString())
+            + " (\\d+)x(\\d+) view=(\\d+),(\\d+),(\\d+),(\\d+) charts=(\\d+),(\\d+),(\\d+),(\\d+)").matcher(log);
+        assertTrue(m.find(), "no screenshot line for " + shot + " in:\n" + log);
+        int[] v = new int[10];
+        for (int i = 0; i < 10; i++) v[i] = Integer.parseInt(m.group(i + 1));
+        assertTrue(new File(shot.toString()).length() > 0);
+        return new Rectangle[] {new Rectangle(v[2], v[3], v[4], v[5]), new Rectangle(v[6], v[7], v[8], v[9])};
+    }
+
+    interface PixelTest { boolean at(int x, int y); }
+
+    static double fraction(BufferedImage img, Rectangle r, PixelTest t) {
+        long n = 0, hit = 0;
+        for (int y = r.y; y < Math.min(img.getHeight(), r.y + r.height); y++) {
+            for (int x = r.x; x < Math.min(img.getWidth(), r.x + r.width); x++) {
+                n++;
+                if (t.at(x, y)) hit++;
+            }
+        }
+        return n == 0 ? 0 : hit / (double) n;
+    }
+
+    /** True if two colours differ by more than {@code tolerance} summed over R, G, B. */
+    static boolean differs(int rgb1, int rgb2, int tolerance) {
+        int d = Math.abs(((rgb1 >> 16) & 255) - ((rgb2 >> 16) & 255)) + Math.abs(((rgb1 >> 8) & 255) - ((rgb2 >> 8) & 255))
+            + Math.abs((rgb1 & 255) - (rgb2 & 255));
+        return d > tolerance;
+    }
+}
