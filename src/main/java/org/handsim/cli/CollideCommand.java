@@ -31,13 +31,15 @@ import org.handsim.vrml.VrmlScene;
  * contact geometry of two VRML objects (paper Section IV, first two steps).
  */
 @Command(name = "collide", mixinStandardHelpOptions = true,
-    description = {"Intersects two VRML97 objects with k-DOP trees (B placed in A's frame by --pose-b) and prints",
-        "{\"intersecting\":bool,\"pairs\":n,\"segments\":n,\"patches\":[{\"center\":[x,y,z],\"normal\":[x,y,z],\"area_m2\":a,\"pairs\":n}],",
-        "\"counters\":{\"node_tests\":n,\"tri_tests\":n},\"build_ms\":t,\"query_us_median\":t}",
-        "pairs: intersecting triangle pairs; segments: their intersection segments; patches: connected sets of",
-        "segments, each one point contact (centre of its bounding box, area-weighted normal of B's triangles pointing",
-        "out of B, area estimate), in A's frame, metres. build_ms: both trees; query_us_median: the tree query with",
-        "B's placement, median of --repeat runs after as many warm-up runs.",
+    description = {"Intersects two VRML97 objects with k-DOP trees (B placed by --pose-b).",
+        "Prints {\"intersecting\":bool,\"pairs\":n,\"segments\":n,",
+        "  \"patches\":[{\"center\":[x,y,z],\"normal\":[x,y,z],\"area_m2\":a,\"pairs\":n}],",
+        "  \"counters\":{\"node_tests\":n,\"tri_tests\":n},\"build_ms\":t,\"query_us_median\":t}",
+        "pairs: intersecting triangle pairs; segments: their intersection segments;",
+        "patches: connected sets of segments, one point contact each: centre of the",
+        "bounding box, unit normal out of B (from B's triangles), area estimate;",
+        "A's frame, metres. build_ms: both trees; query_us_median: the tree query",
+        "including B's placement, median of --repeat runs after as many warm-ups.",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
