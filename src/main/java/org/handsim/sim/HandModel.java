@@ -285,7 +285,7 @@ public final class HandModel {
             linkValid[i][j - 1] = true;
             changed = true;
         }
-        if (changed || cs.size() == 0 && (linkContacts[i][0].size() + linkContacts[i][1].size() + linkContacts[i][2].size()) > 0) {
+        if (changed) {
             cs.clear();
             for (int j = 0; j < 3; j++) cs.append(linkContacts[i][j]);
         }
