@@ -3,7 +3,13 @@ package org.handsim;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** Where the tests find the project root and the shared folder (../shared beside the repo). */
+/**
+ * Where the tests find the project root and the shared folder (real-world VRML corpus, bench
+ * meshes): the system property {@code handsim.shared} (the build sets it to {@code ../shared}
+ * beside the checkout), else the environment variable {@code HANDSIM_SHARED}, else
+ * {@code ../shared} or {@code ../../shared} from the project root, else {@code /work/shared}.
+ * The folder is never copied into the repository (its files carry their own licences).
+ */
 public final class TestPaths {
     private TestPaths() {}
 
@@ -13,10 +19,20 @@ public final class TestPaths {
         return p != null ? Path.of(p) : Path.of("").toAbsolutePath();
     }
 
-    /** {@code ../shared} relative to the project root (system property {@code handsim.shared}). */
+    /** The shared folder (the first candidate that holds {@code vrml-corpus/}, else the build's). */
     public static Path shared() {
-        String p = System.getProperty("handsim.shared");
-        return p != null ? Path.of(p) : root().resolve("../shared").normalize();
+        String prop = System.getProperty("handsim.shared");
+        String env = System.getenv("HANDSIM_SHARED");
+        Path[] candidates = {
+            prop != null ? Path.of(prop) : null,
+            env != null ? Path.of(env) : null,
+            root().resolve("../shared").normalize(),
+            root().resolve("../../shared").normalize(),
+            Path.of("/work/shared")};
+        for (Path c : candidates) {
+            if (c != null && Files.isDirectory(c.resolve("vrml-corpus"))) return c;
+        }
+        return prop != null ? Path.of(prop) : root().resolve("../shared").normalize();
     }
 
     /** True if the shared folder with the VRML corpus is present. */
