@@ -25,7 +25,8 @@ public final class HandSim implements Runnable {
         CollideCommand.class,
         RunCommand.class,
         SweepCommand.class,
-        GuiCommand.class
+        GuiCommand.class,
+        TradeoffCommand.class
         // sub-commands register here, one line each
     );
 

@@ -45,6 +45,10 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--no-charts", description = "skip the charts")
     boolean noCharts;
 
+    @Option(names = "--no-lazy", description = {"compute every finger fully every step (no work saving;",
+        "for comparison: same results, more collision queries and dynamics calls)"})
+    boolean noLazy;
+
     @Override
     public Integer call() throws IOException {
         PrintWriter err = spec.commandLine().getErr();
@@ -57,7 +61,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         Path dir = out != null ? out : Path.of("out", scenario.name());
         long t0 = System.nanoTime();
-        HandModel model = Simulation.model(scenario, true);
+        HandModel model = Simulation.model(scenario, true).lazy(!noLazy);
         double setup = (System.nanoTime() - t0) / 1e9;
         long t1 = System.nanoTime();
         try {

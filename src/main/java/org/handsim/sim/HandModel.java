@@ -214,6 +214,7 @@ public final class HandModel {
             collide(k);
             torquesAndForces(k);
         }
+        maxForce[i] = Math.max(maxForce[i], contacts[i].forceSum());
         guard(k);
     }
 
@@ -429,7 +430,6 @@ public final class HandModel {
                 cs.forces[c] = solver.force(c);
                 cs.undetermined[c] = solver.undetermined(c);
             }
-            maxForce[i] = Math.max(maxForce[i], cs.forceSum());
         }
     }
 
@@ -457,6 +457,8 @@ public final class HandModel {
             breakTime[i] = lastT[i] + frac * (t - lastT[i]);
             breakTorque[i] = hand.tauBreak();
             breakForce[i] = forceInner * hand.tauBreak() / tauK2;
+            // the forces grow with the transmitted torque: at the crossing they are τ_break/τ of now's
+            maxForce[i] = Math.max(maxForce[i], cs.forceSum() * hand.tauBreak() / tauK2);
             breakQ[i] = qb;
             c.breakAway(qb, hand.tauBreak());
             return true;
@@ -508,6 +510,9 @@ public final class HandModel {
         lazy = on;
         return this;
     }
+
+    /** Whether work saving is on ({@link #lazy(boolean)}). */
+    public boolean isLazy() { return lazy; }
 
     // ------------------------------------------------------------------ read-out
     public Scenario scenario() { return scenario; }

@@ -10,7 +10,7 @@ import java.util.Map;
  * "Outputs"). Keys: {@code scenario, sim_time_s, steps, dt_s, wall_time_s, steps_per_s,
  * realtime_factor, fingers[{finger, final_state, breakaway_time_s|null, breakaway_torque_Nm|null,
  * breakaway_force_N|null, contact_counts|null, breakaway_counts|null, final_joints_rad,
- * max_contact_force_N}], counters{...}}.
+ * max_contact_force_N}], lazy, counters{...}}.
  */
 public final class RunSummary {
     private RunSummary() {}
@@ -46,6 +46,7 @@ public final class RunSummary {
         s.put("fingers", fingers);
         Map<String, Object> c = new LinkedHashMap<>();
         for (HandModel.Counter counter : HandModel.Counter.values()) c.put(counter.name().toLowerCase(), m.counter(counter));
+        s.put("lazy", m.isLazy());
         s.put("counters", c);
         return s;
     }

@@ -1,0 +1,139 @@
+package org.handsim.chart;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.geom.Ellipse2D;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.annotations.XYPointerAnnotation;
+import org.jfree.chart.axis.LogAxis;
+import org.jfree.chart.labels.XYItemLabelGenerator;
+import org.jfree.chart.plot.XYPlot;
+import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.chart.title.TextTitle;
+import org.jfree.chart.ui.HorizontalAlignment;
+import org.jfree.chart.ui.RectangleEdge;
+import org.jfree.chart.ui.TextAnchor;
+import org.jfree.data.xy.XYSeries;
+import org.jfree.data.xy.XYSeriesCollection;
+
+/**
+ * A speed-against-accuracy chart from a {@link StudyTable}: x and y on log axes, one colour per
+ * series, each point labelled with its setting, each series' Pareto front drawn as a dashed
+ * line through its non-dominated points, the default setting ringed and pointed at. Values
+ * that are 0 (an exact answer) cannot sit on a log axis: they are drawn at the floor of the
+ * axis (a tenth of the smallest positive value) and the subtitle says so; the CSV keeps the 0.
+ */
+public final class TradeoffChart {
+    static final Color[] PALETTE = {
+        new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c), new Color(0x9467bd),
+        new Color(0xff7f0e), new Color(0x8c564b), new Color(0xe377c2), new Color(0x17becf)};
+
+    private TradeoffChart() {}
+
+    /** Writes {@code dir/<id>.png}, {@code .svg} and {@code .csv}. */
+    public static void write(StudyTable table, Path dir) throws IOException {
+        table.writeCsv(dir.resolve(table.id() + ".csv"));
+        ChartExport.write(create(table), dir.resolve(table.id()), 1000, 700);
+    }
+
+    public static JFreeChart create(StudyTable t) {
+        double fx = floor(t, t.xColumn()), fy = floor(t, t.yColumn());
+        boolean clamped = false;
+        XYSeriesCollection data = new XYSeriesCollection();
+        XYLineAndShapeRenderer r = new XYLineAndShapeRenderer();
+        List<List<String>> labels = new ArrayList<>();
+        List<double[]> defaults = new ArrayList<>();
+        int s = 0;
+        for (String name : t.series()) {
+            List<StudyTable.Row> rows = t.rows(name);
+            double[] x = new double[rows.size()], y = new double[rows.size()];
+            XYSeries points = new XYSeries(name, false, true);
+            List<String> pointLabels = new ArrayList<>();
+            for (int i = 0; i < rows.size(); i++) {
+                StudyTable.Row row = rows.get(i);
+                x[i] = row.values()[t.xColumn()];
+                y[i] = row.values()[t.yColumn()];
+                double px = x[i] > 0 ? x[i] : fx, py = y[i] > 0 ? y[i] : fy;
+                if (!(x[i] > 0) || !(y[i] > 0)) clamped = true;
+                if (!Double.isFinite(x[i]) || !Double.isFinite(y[i])) continue;
+                points.add(px, py);
+                pointLabels.add(row.setting());
+                if (row.isDefault()) defaults.add(new double[] {px, py, s});
+            }
+            XYSeries front = new XYSeries(name + " (Pareto front)", false, true);
+            for (int i : ParetoFront.of(x, y)) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
+            Color c = PALETTE[s % PALETTE.length];
+            int pi = data.getSeriesCount();
+            data.addSeries(points);
+            labels.add(pointLabels);
+            r.setSeriesPaint(pi, c);
+            r.setSeriesLinesVisible(pi, false);
+            r.setSeriesShapesVisible(pi, true);
+            r.setSeriesShape(pi, new Ellipse2D.Double(-4, -4, 8, 8));
+            r.setSeriesItemLabelsVisible(pi, true);
+            data.addSeries(front);
+            labels.add(List.of());
+            r.setSeriesPaint(pi + 1, c);
+            r.setSeriesLinesVisible(pi + 1, true);
+            r.setSeriesShapesVisible(pi + 1, false);
+            r.setSeriesStroke(pi + 1, new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1f, new float[] {6f, 4f}, 0f));
+            r.setSeriesVisibleInLegend(pi + 1, s == 0);
+            s++;
+        }
+        r.setDefaultItemLabelGenerator((XYItemLabelGenerator) (ds, series, item) -> {
+            List<String> l = labels.get(series);
+            return item < l.size() ? l.get(item) : null;
+        });
+        r.setDefaultItemLabelFont(new Font("SansSerif", Font.PLAIN, 10));
+        r.setDefaultItemLabelsVisible(true);
+
+        LogAxis xAxis = new LogAxis(t.xLabel());
+        LogAxis yAxis = new LogAxis(t.yLabel());
+        xAxis.setSmallestValue(fx / 10);
+        yAxis.setSmallestValue(fy / 10);
+        for (LogAxis a : new LogAxis[] {xAxis, yAxis}) a.setLabelFont(new Font("SansSerif", Font.PLAIN, 13));
+        XYPlot plot = new XYPlot(data, xAxis, yAxis, r);
+        plot.setBackgroundPaint(Color.WHITE);
+        plot.setDomainGridlinePaint(new Color(0xdddddd));
+        plot.setRangeGridlinePaint(new Color(0xdddddd));
+        for (double[] d : defaults) {
+            XYPointerAnnotation a = new XYPointerAnnotation("default", d[0], d[1], -Math.PI / 4);
+            a.setFont(new Font("SansSerif", Font.BOLD, 12));
+            a.setPaint(PALETTE[(int) d[2] % PALETTE.length]);
+            a.setArrowPaint(PALETTE[(int) d[2] % PALETTE.length]);
+            a.setTextAnchor(TextAnchor.BOTTOM_LEFT);
+            a.setTipRadius(7);
+            a.setBaseRadius(40);
+            plot.addAnnotation(a);
+        }
+        JFreeChart chart = new JFreeChart(t.title(), new Font("SansSerif", Font.BOLD, 16), plot, true);
+        chart.setBackgroundPaint(Color.WHITE);
+        List<String> sub = new ArrayList<>();
+        sub.add("dashed: Pareto front (no other setting is both faster and more exact); lower left is better");
+        if (clamped) sub.add(String.format(java.util.Locale.ROOT, "0 (exact) is drawn at the axis floor (%.0e on x, %.0e on y)", fx, fy));
+        for (Map.Entry<String, String> e : t.notes().entrySet()) sub.add(e.getValue());
+        for (String line : sub) {
+            TextTitle tt = new TextTitle(line, new Font("SansSerif", Font.PLAIN, 11));
+            tt.setPosition(RectangleEdge.BOTTOM);
+            tt.setHorizontalAlignment(HorizontalAlignment.LEFT);
+            chart.addSubtitle(tt);
+        }
+        return chart;
+    }
+
+    /** A tenth of the smallest positive finite value of a column (1e-16 if there is none). */
+    static double floor(StudyTable t, int column) {
+        double min = Double.POSITIVE_INFINITY;
+        for (StudyTable.Row row : t.rows()) {
+            double v = row.values()[column];
+            if (v > 0 && Double.isFinite(v)) min = Math.min(min, v);
+        }
+        return Double.isFinite(min) ? min / 10 : 1e-16;
+    }
+}
