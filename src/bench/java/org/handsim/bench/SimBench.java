@@ -1,5 +1,6 @@
 package org.handsim.bench;
 
+import java.nio.file.Path;
 import java.util.Locale;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Home;
@@ -7,28 +8,47 @@ import org.handsim.sim.Scenario;
 import org.handsim.sim.Simulation;
 
 /**
- * Steps per second of the paper's experiment (scenarios/paper-breakaway.json, dt = 1 ms,
- * 8 947 steps): the whole model in the process — trajectories, clutch, kinematics, collision
- * and contacts, dynamics — with the trace recorded, as the default (work saving on) and with
- * every finger fully computed every step (lazy off: collision and contacts every step).
+ * The whole model in the process — trajectories, clutch, kinematics, collision and contacts,
+ * dynamics — on the paper's experiment (scenarios/paper-breakaway.json, 8 947 steps) and the
+ * three-finger mug grasp (scenarios/mug-grasp.json, 4 700 steps), dt = 1 ms, no trace: the
+ * savings table of docs/BENCHMARKS.md. Three settings per scene: the default (work saving on),
+ * lazy off (every finger collided and run through the dynamics every step) and torques off
+ * (no dynamics: the clutch does not need it). The results of the three are checked equal.
  */
 final class SimBench implements BenchMain.Suite {
     @Override
     public void run() {
-        Scenario s = Scenario.load(Home.paperScenario());
-        for (boolean lazy : new boolean[] {true, false}) {
-            for (boolean record : new boolean[] {false, true}) {
-                long[] steps = {0};
-                Bench.Result r = Bench.measure(String.format(Locale.ROOT, "paper experiment, lazy %s, trace %s (one run)", lazy, record), () -> {
-                    HandModel m = Simulation.model(s, record).lazy(lazy);
+        StringBuilder table = new StringBuilder();
+        table.append("| scene | setting | wall per run | ns/step | x real time | finger updates | fingers idle | collision queries | skipped | dynamics calls | skipped |\n");
+        table.append("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
+            Scenario s = Scenario.load(file);
+            double reference = Double.NaN;
+            for (String setting : new String[] {"default (lazy)", "lazy off", "torques off"}) {
+                Scenario run = setting.equals("torques off") ? s.withTorques(false) : s;
+                boolean lazy = !setting.equals("lazy off");
+                HandModel[] last = new HandModel[1];
+                Bench.Result r = Bench.measure(String.format(Locale.ROOT, "%s, %s (one run)", s.name(), setting), () -> {
+                    HandModel m = Simulation.model(run, false).lazy(lazy);
                     m.run(null);
-                    steps[0] = m.stepIndex();
-                    return m.breakawayTime(3);
-                }, 3000, 15, 200);
-                double perStep = r.medianNs / steps[0];
-                System.out.println(String.format(Locale.ROOT, "    -> %.0f ns/step, %.0f steps/s, %.0fx real time",
-                    perStep, 1e9 / perStep, 1e9 / perStep * s.dt()));
+                    last[0] = m;
+                    return m.maxContactForce(1) + m.maxContactForce(3);
+                }, 2000, 11, 200);
+                HandModel m = last[0];
+                double result = m.maxContactForce(1) + m.maxContactForce(3) + m.breakawayTime(3);
+                if (Double.isNaN(reference)) reference = result;
+                if (Math.abs(result - reference) > 1e-9 * Math.abs(reference)) {
+                    throw new AssertionError(s.name() + ", " + setting + ": results differ from the default: " + result + " vs " + reference);
+                }
+                double perStep = r.medianNs / m.stepIndex();
+                table.append(String.format(Locale.ROOT, "| %s | %s | %.1f ms | %.0f | %.0f | %d | %d | %d | %d | %d | %d |%n",
+                    s.name(), setting, r.medianMs(), perStep, m.time() / (r.medianNs / 1e9),
+                    m.counter(HandModel.Counter.FINGER_UPDATES), m.counter(HandModel.Counter.FINGERS_IDLE),
+                    m.counter(HandModel.Counter.COLLISION_QUERIES), m.counter(HandModel.Counter.COLLISIONS_SKIPPED),
+                    m.counter(HandModel.Counter.DYNAMICS_CALLS), m.counter(HandModel.Counter.DYNAMICS_SKIPPED)));
             }
         }
+        System.out.println();
+        System.out.print(table);
     }
 }

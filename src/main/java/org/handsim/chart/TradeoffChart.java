@@ -5,6 +5,8 @@ import java.awt.Color;
 import java.awt.Font;
 import java.awt.geom.Ellipse2D;
 import java.io.IOException;
+import java.text.DecimalFormat;
+import java.text.DecimalFormatSymbols;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,6 +14,7 @@ import java.util.Map;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.annotations.XYPointerAnnotation;
 import org.jfree.chart.axis.LogAxis;
+import org.jfree.chart.axis.NumberTickUnit;
 import org.jfree.chart.labels.XYItemLabelGenerator;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
@@ -95,9 +98,8 @@ public final class TradeoffChart {
 
         LogAxis xAxis = new LogAxis(t.xLabel());
         LogAxis yAxis = new LogAxis(t.yLabel());
-        xAxis.setSmallestValue(fx / 10);
-        yAxis.setSmallestValue(fy / 10);
-        for (LogAxis a : new LogAxis[] {xAxis, yAxis}) a.setLabelFont(new Font("SansSerif", Font.PLAIN, 13));
+        decades(xAxis, t, t.xColumn(), fx);
+        decades(yAxis, t, t.yColumn(), fy);
         XYPlot plot = new XYPlot(data, xAxis, yAxis, r);
         plot.setBackgroundPaint(Color.WHITE);
         plot.setDomainGridlinePaint(new Color(0xdddddd));
@@ -125,6 +127,30 @@ public final class TradeoffChart {
             chart.addSubtitle(tt);
         }
         return chart;
+    }
+
+    /**
+     * Spans the axis over whole decades around the column's values (at least two labelled
+     * ticks), labelled 1E-3, 1E-2, …
+     */
+    static void decades(LogAxis a, StudyTable t, int column, double floor) {
+        double lo = Double.POSITIVE_INFINITY, hi = 0;
+        for (StudyTable.Row row : t.rows()) {
+            double v = row.values()[column];
+            if (!Double.isFinite(v)) continue;
+            v = v > 0 ? v : floor;
+            lo = Math.min(lo, v);
+            hi = Math.max(hi, v);
+        }
+        if (!(hi > 0)) return;
+        double l = Math.floor(Math.log10(lo)), h = Math.ceil(Math.log10(hi));
+        if (h - l < 1) h = l + 1;
+        a.setSmallestValue(Math.pow(10, l - 1));
+        a.setRange(Math.pow(10, l), Math.pow(10, h));
+        a.setTickUnit(new NumberTickUnit(Math.max(1, Math.ceil((h - l) / 10))));
+        a.setNumberFormatOverride(new DecimalFormat("0E0", DecimalFormatSymbols.getInstance(java.util.Locale.ROOT)));
+        a.setMinorTickMarksVisible(true);
+        a.setLabelFont(new Font("SansSerif", Font.PLAIN, 13));
     }
 
     /** A tenth of the smallest positive finite value of a column (1e-16 if there is none). */

@@ -23,14 +23,17 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim tradeoff}: the speed-against-accuracy charts of issue 8. */
 @Command(name = "tradeoff", mixinStandardHelpOptions = true,
-    description = {"Runs the speed-against-accuracy studies and writes, per study, <id>.png, <id>.svg and",
-        "<id>.csv (header: series,setting,default,<study columns>) into --out DIR (default",
-        "out/tradeoff), plus tradeoff.json (per study: rows, wall seconds). Each chart plots cost",
-        "against error on log axes, one point per setting, the Pareto front dashed, the default",
-        "marked. Studies: 1-dt (time step, paper experiment), 2-tessellation (object resolution",
-        "against analytic contacts), 3-kdop (k of the k-DOPs and brute force, hand grasping each",
-        "vrml/objects model), 4-integrators (energy drift of a free finger). The full run takes",
-        "a few minutes; --quick runs fewer settings (a smoke test)."})
+    description = {
+        "Runs the speed-against-accuracy studies. Per study it writes <id>.png,",
+        "<id>.svg and <id>.csv (header: series,setting,default,<study columns>)",
+        "into --out DIR (default out/tradeoff), and tradeoff.json (per study:",
+        "rows, wall_time_s, files). Each chart plots cost against error on log",
+        "axes, one point per setting, the Pareto front dashed, the default marked.",
+        "Studies: 1-dt (time step, paper experiment), 2-tessellation (object",
+        "resolution against analytic contacts), 3-kdop (k of the k-DOPs and brute",
+        "force, the hand grasping each vrml/objects model), 4-integrators (energy",
+        "drift of a free finger). The full run takes a few minutes; --quick runs",
+        "fewer settings (a smoke test)."})
 public final class TradeoffCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 

@@ -14,7 +14,10 @@ import org.handsim.sim.Simulation;
  * against the cube). For each dt from 0.05 to 20 ms: the wall time per simulated second (median
  * of timed runs without a trace, work saving on, as {@code handsim run} does it) against the
  * relative error of three results — the breakaway time, the peak τ32 and the peak contact force
- * — measured against a reference run at dt = 0.01 ms. The default is the scenario's dt (1 ms).
+ * — measured against a reference run at dt = 0.01 ms, and of the τ32 trace itself (RMS of the
+ * coarse trace, linearly interpolated, minus the reference, over the peak). The events are
+ * located inside the step (HandModel), so the three results hardly depend on dt; the trace does.
+ * The default is the scenario's dt (1 ms).
  */
 public final class DtStudy implements Study {
     /** Time steps of the full run, seconds. */
@@ -40,22 +43,45 @@ public final class DtStudy implements Study {
         return "1-dt";
     }
 
-    /** The three results a run of the paper's experiment is judged by (finger 3). */
-    record Outcome(double breakawayTime, double peakTau32, double peakForce, long steps) {
+    /** The results a run of the paper's experiment is judged by (finger 3), and its τ32 trace. */
+    record Outcome(double breakawayTime, double peakTau32, double peakForce, long steps, double[] tau32) {
         double[] values() { return new double[] {breakawayTime, peakTau32, peakForce}; }
     }
 
-    static final String[] SERIES = {"breakaway time", "peak tau32", "peak contact force"};
+    static final String[] SERIES = {"breakaway time", "peak tau32", "peak contact force", "tau32 trace (RMS / peak)"};
 
-    /** Runs the scenario at dt and returns its outcome (peaks over every step). */
+    /** Runs the scenario and returns its outcome (peaks over every step, τ32 at every step). */
     static Outcome outcome(Scenario s) {
         HandModel m = Simulation.model(s, false);
-        double peakTau = Math.abs(m.torques(FINGER)[2]);
+        double[] trace = new double[(int) m.totalSteps() + 1];
+        trace[0] = m.torques(FINGER)[2];
+        double peakTau = Math.abs(trace[0]);
         while (m.running()) {
             m.step();
-            peakTau = Math.max(peakTau, Math.abs(m.torques(FINGER)[2]));
+            double tau = m.torques(FINGER)[2];
+            trace[(int) m.stepIndex()] = tau;
+            peakTau = Math.max(peakTau, Math.abs(tau));
         }
-        return new Outcome(m.breakawayTime(FINGER), peakTau, m.maxContactForce(FINGER), m.stepIndex());
+        return new Outcome(m.breakawayTime(FINGER), peakTau, m.maxContactForce(FINGER), m.stepIndex(), trace);
+    }
+
+    /**
+     * RMS over the reference's steps of (the coarse τ32 trace, linearly interpolated as a chart
+     * draws it) − (the reference trace): what a coarser dt loses between its samples.
+     */
+    static double traceRms(Outcome coarse, double coarseDt, Outcome ref, double refDt) {
+        double sum = 0;
+        int n = ref.tau32().length;
+        double[] c = coarse.tau32();
+        for (int i = 0; i < n; i++) {
+            double x = i * refDt / coarseDt;
+            int j = Math.min((int) Math.floor(x), c.length - 2);
+            double f = Math.min(1, x - j);
+            double v = c[j] + f * (c[j + 1] - c[j]);
+            double d = v - ref.tau32()[i];
+            sum += d * d;
+        }
+        return Math.sqrt(sum / n);
     }
 
     @Override
@@ -81,11 +107,13 @@ public final class DtStudy implements Study {
             }, quick ? 1 : 3, quick ? 3 : 15, quick ? 0.1 : 1.0);
             double perSimSecond = time.medianSeconds() / s.duration();
             double[] v = o.values();
-            for (int j = 0; j < SERIES.length; j++) {
+            for (int j = 0; j < v.length; j++) {
                 double abs = Math.abs(v[j] - refValues[j]);
                 t.add(SERIES[j], ms(dts[i]), dts[i] == scenario.dt(),
                     dts[i], o.steps(), perSimSecond, v[j], refValues[j], abs, abs / Math.abs(refValues[j]));
             }
+            double rms = traceRms(o, dts[i], ref, refDt);
+            t.add(SERIES[3], ms(dts[i]), dts[i] == scenario.dt(), dts[i], o.steps(), perSimSecond, rms, 0, rms, rms / ref.peakTau32());
             if (progress != null) progress.accept(0.3 + 0.7 * (i + 1) / dts.length);
         }
         return t;
