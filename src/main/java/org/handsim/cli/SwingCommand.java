@@ -35,7 +35,9 @@ import picocli.CommandLine.Model.CommandSpec;
  * friction, no joint stops) swinging under gravity, integrated with a chosen method. Output
  * contract: DIR/swing.csv ({@link #HEADER}: the start state, then one row per step) and
  * DIR/swing.json ({@link #JSON_KEYS}), both written through {@link AtomicFile} and committed
- * only when the run completes. A run stopped by the energy guard exits 4 and writes nothing;
+ * only when the run completes. {@code energy_drift_rel} is {@code |E(T) − E(0)|} over
+ * {@code max(|E(0)|, the largest kinetic energy of the run)} (the potential's zero, at the base
+ * origin, is arbitrary). {@code wall_time_s} is the integration including the CSV formatting. A run stopped by the energy guard exits 4 and writes nothing;
  * files of an earlier run in DIR are left as they were (never deleted, never touched).
  */
 @Command(name = "swing", mixinStandardHelpOptions = true,

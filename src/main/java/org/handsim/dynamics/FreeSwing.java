@@ -31,11 +31,14 @@ public final class FreeSwing {
 
     /** The outcome of a completed run. */
     public record Result(long steps, double duration, double initialEnergy, double finalEnergy, double worstGrowth,
-                         long evaluations, double[] finalState) {
-        /** {@code |E(T) − E(0)| / |E(0)|} (the plain difference if E(0) = 0). */
+                         double driftScale, long evaluations, double[] finalState) {
+        /**
+         * {@code |E(T) − E(0)| / max(|E(0)|, largest kinetic energy of the run)} ({@link EnergyGuard#driftScale()};
+         * the plain difference, J, if that scale is 0: a chain at rest without gravity).
+         */
         public double relativeDrift() {
             double d = Math.abs(finalEnergy - initialEnergy);
-            return initialEnergy == 0 ? d : d / Math.abs(initialEnergy);
+            return driftScale == 0 ? d : d / driftScale;
         }
     }
 
@@ -85,6 +88,6 @@ public final class FreeSwing {
             if (progress != null && i % every == 0) progress.accept((double) i / steps);
         }
         if (progress != null) progress.accept(1.0);
-        return new Result(steps, duration, e0, e, worst, integrator.evaluations() - evals0, y.clone());
+        return new Result(steps, duration, e0, e, worst, guard.driftScale(), integrator.evaluations() - evals0, y.clone());
     }
 }

@@ -54,6 +54,8 @@ class FreeSwingTest {
             double drift = worst[0] / worst[1];
             assertTrue(drift <= EnergyConservationTest.DRIFT, "finger " + k + ": relative drift " + drift);
             assertTrue(Math.abs(r.worstGrowth()) <= worst[0]);
+            assertEquals(worst[1], r.driftScale(), 1e-15, "the drift's scale is max(|E(0)|, largest kinetic energy)");
+            assertEquals(Math.abs(r.finalEnergy() - e0) / worst[1], r.relativeDrift(), 1e-18);
         }
     }
 
