@@ -52,6 +52,8 @@ class IntegratorStudyTest {
         }
         assertEquals(1, defaults);
         assertFalse(t.notes().containsKey("diverged"));
+        assertTrue(t.notes().get("capped").startsWith("Dormand-Prince called every 1 ms (as handsim swing does, tol 1e-10): 1000 steps, 6001 evaluations"),
+            t.notes().get("capped"));
         StudyTable.Row euler10 = t.rows("explicit Euler").get(0);
         assertEquals("10 ms", euler10.setting());
         assertEquals(3.664146e-3, t.value(euler10, "drift"), 1e-8);
