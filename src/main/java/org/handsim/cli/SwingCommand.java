@@ -41,9 +41,9 @@ import picocli.CommandLine.Model.CommandSpec;
  * files of an earlier run in DIR are left as they were (never deleted, never touched).
  */
 @Command(name = "swing", mixinStandardHelpOptions = true,
-    description = {"Integrates one free finger (zero joint torques: clutch disengaged, motor",
-        "off; no friction, no joint stops) swinging under gravity. Writes",
-        "DIR/swing.csv, header",
+    description = {"One free finger swinging under gravity, energy-guarded.",
+        "Zero joint torques (clutch disengaged, motor off), no friction, no joint",
+        "stops. Writes DIR/swing.csv, header",
         "  t_s,q1_rad,q2_rad,q3_rad,qd1_rad_s,qd2_rad_s,qd3_rad_s,energy_J",
         "(the start, then one row per step), and DIR/swing.json (finger,",
         "integrator, dt_s, steps, duration_s, energy_initial_J, energy_final_J,",
