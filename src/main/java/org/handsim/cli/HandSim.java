@@ -26,7 +26,8 @@ public final class HandSim implements Runnable {
         RunCommand.class,
         SweepCommand.class,
         GuiCommand.class,
-        TradeoffCommand.class
+        TradeoffCommand.class,
+        SwingCommand.class
         // sub-commands register here, one line each
     );
 

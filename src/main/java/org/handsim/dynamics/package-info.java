@@ -23,6 +23,11 @@
  *       {@link org.handsim.dynamics.ExplicitEuler}, {@link org.handsim.dynamics.SemiImplicitEuler},
  *       {@link org.handsim.dynamics.RungeKutta4}, {@link org.handsim.dynamics.DormandPrince54};
  *       {@link org.handsim.dynamics.FingerDynamicsOde} is a finger as an ODE.</li>
+ *   <li>{@link org.handsim.dynamics.FreeSwing} — a free finger (zero torque) integrated over a
+ *       duration, each step checked by an {@link org.handsim.dynamics.EnergyGuard} (finite
+ *       state, no failed step, no energy growth beyond half the energy scale), which stops a
+ *       blow-up with an {@link org.handsim.dynamics.IntegrationStoppedException} naming the
+ *       step, the time and the value; behind {@code handsim swing}.</li>
  * </ul>
  *
  * <h2>Conventions</h2>

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
  * is arbitrary). Measured: below 1e-10 in every case.
  */
 class EnergyConservationTest {
-    private static final double DRIFT = 1e-8;
+    static final double DRIFT = 1e-8;
     private static final double DT = 1e-4;
     private static final int STEPS = 10_000;
 
