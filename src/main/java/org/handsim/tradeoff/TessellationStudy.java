@@ -27,8 +27,8 @@ import org.handsim.vrml.VrmlLoader;
  * ignores divisions) at n = 1 … 32.
  *
  * <p>Each is pressed into a large flat plate (the top face z = 0 of a 0.4 × 0.4 × 0.02 m box,
- * mesh A, as a link is in {@link SceneGeometry}) to a depth of a tenth of its radius (half the
- * edge for the cube), in {@value #POSES} seeded-random poses, and the real contact pipeline runs:
+ * mesh A, as a link is in {@link SceneGeometry}) to a seeded-random depth of 5–15 % of its radius
+ * (half the edge for the cube), in {@value #POSES} seeded-random poses, and the real contact pipeline runs:
  * k-DOP trees (k = {@value SceneGeometry#DEFAULT_K}), {@link TreeQuery}, {@link ContactPatches}
  * → one point contact. The analytic contact of the ideal shape with the plane z = 0 is known:
  * <ul>
@@ -54,14 +54,14 @@ import org.handsim.vrml.VrmlLoader;
  */
 public final class TessellationStudy implements Study {
     /** Seeded-random poses per shape (the same poses at every divisions). */
-    static final int POSES = 16;
-    /** Depth of the ideal shape in the plate, relative to its radius. */
-    static final double DEPTH = 0.1;
+    static final int POSES = 32;
+    /** Depth of the ideal shape in the plate, relative to its radius: seeded-random in [min, max]. */
+    static final double DEPTH_MIN = 0.05, DEPTH_MAX = 0.15;
     /** Errors below this (relative) are round-off: the "error" column stores 0 (exact). */
     static final double ROUND_OFF = 1e-12;
 
     static final int[] ROUND = {6, 8, 12, 16, 24, 32, 48, 64, 96, 128};
-    static final int[] QUICK_ROUND = {8, 16, 24, 48};
+    static final int[] QUICK_ROUND = {12, 16, 24, 48};
     static final int[] CUBE = {1, 2, 4, 8, 16, 32};
     static final int[] QUICK_CUBE = {1, 4};
 
@@ -103,14 +103,14 @@ public final class TessellationStudy implements Study {
         }
 
         /**
-         * The seeded poses: object frame → plate frame, the ideal shape {@link #DEPTH} × radius
-         * deep in the plate, and the analytic contact centre in the plate frame (normal −z).
+         * The seeded poses: object frame → plate frame, the ideal shape {@link #DEPTH_MIN} to
+         * {@link #DEPTH_MAX} × radius deep in the plate, and the analytic contact centre in the plate frame (normal −z).
          */
         List<double[]> poses() {
             SplittableRandom r = new SplittableRandom(seed);
             List<double[]> out = new ArrayList<>();
-            double h = DEPTH * radius;
             for (int i = 0; i < POSES; i++) {
+                double h = radius * (DEPTH_MIN + (DEPTH_MAX - DEPTH_MIN) * r.nextDouble());
                 double x0 = 0.01 * (r.nextDouble() - 0.5), y0 = 0.01 * (r.nextDouble() - 0.5);
                 RigidTransform rot;
                 switch (this) {
@@ -239,7 +239,7 @@ public final class TessellationStudy implements Study {
                     pairs += cp.build(res, plate, m, p) + res.pairCount();
                 }
                 return pairs;
-            }, quick ? 1 : 3, quick ? 3 : 21, quick ? 0.01 : 0.1);
+            }, quick ? 1 : 5, quick ? 3 : 61, quick ? 0.01 : 0.25);
             secs = t.medianSeconds() / placed.size();
         }
         return new Measure(m.triangleCount(), missed, cw, found > 0 ? cs / found : Double.NaN, nw, found > 0 ? ns / found : Double.NaN, secs);
@@ -258,8 +258,8 @@ public final class TessellationStudy implements Study {
             "query_s", "error", "time of one contact query: k-DOP tree query + patches (s, log)",
             "worst error over " + POSES + " poses: centre / radius, normal in rad (log)");
         t.note("probe", String.format(Locale.ROOT,
-            "sphere r = 40 mm, cylinder r = 30 mm x 120 mm (setting: divisions), cube 60 mm (setting: n x n squares per face), each %.0f %% of its radius deep in a flat plate, %d seeded poses; default: divisions %d (scenario default), cube 1 (vrml/objects/cube.wrl)",
-            100 * DEPTH, POSES, Shape.SPHERE.defaultDivisions));
+            "sphere r = 40 mm, cylinder r = 30 mm x 120 mm (setting: divisions), cube 60 mm (setting: n x n squares per face), each %.0f-%.0f %% of its radius deep in a flat plate, %d seeded poses; default: divisions %d (scenario default), cube 1 (vrml/objects/cube.wrl)",
+            100 * DEPTH_MIN, 100 * DEPTH_MAX, POSES, Shape.SPHERE.defaultDivisions));
         t.note("cube", "cube: face contacts are exact at every subdivision (errors are round-off, drawn at the axis floor): subdividing only costs time");
         int total = 0, done = 0;
         for (Shape s : Shape.values()) total += divisions(s, quick).length;
