@@ -50,9 +50,10 @@ public final class RunCommand implements Callable<Integer> {
         "for comparison: same results, more collision queries and dynamics calls)"})
     boolean noLazy;
 
-    @Option(names = "--tolerance", paramLabel = "LENGTH", description = {"contact tolerance (e.g. 0.5mm, 0.0005m, 1e-3 in metres):",
-        "tessellate the object's curved primitives at the coarsest divisions whose",
-        "worst contact-centre error (chart 2-tessellation) is at most LENGTH"})
+    @Option(names = "--tolerance", paramLabel = "LENGTH", description = {"contact tolerance, e.g. 0.5mm, 0.0005m, 1e-3 (m):",
+        "tessellate the object at the coarsest divisions",
+        "whose worst contact-centre error (chart",
+        "2-tessellation) is at most LENGTH"})
     String tolerance;
 
     @Override
