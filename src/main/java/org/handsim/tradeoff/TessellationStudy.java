@@ -263,6 +263,7 @@ public final class TessellationStudy implements Study {
         t.note("probe", String.format(Locale.ROOT,
             "sphere r = 40 mm, cylinder r = 30 mm x 120 mm (setting: divisions), cube 60 mm (setting: n x n squares per face), each %.0f-%.0f %% of its radius deep in a flat plate, %d seeded poses; default: divisions %d (scenario default), cube 1 (vrml/objects/cube.wrl)",
             100 * DEPTH_MIN, 100 * DEPTH_MAX, POSES, Shape.SPHERE.defaultDivisions));
+        t.note("series", "series: <shape> centre = worst contact-centre error / radius, <shape> normal = worst normal error (rad), same poses at every setting");
         t.note("cube", "cube: face contacts are exact at every subdivision (errors are round-off, drawn at the axis floor): subdividing only costs time");
         int total = 0, done = 0;
         for (Shape s : Shape.values()) total += divisions(s, quick).length;
