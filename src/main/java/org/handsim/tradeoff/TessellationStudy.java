@@ -58,8 +58,8 @@ public final class TessellationStudy implements Study {
     static final int POSES = 32;
     /** Depth of the ideal shape in the plate, relative to its radius: seeded-random in [min, max]. */
     static final double DEPTH_MIN = 0.05, DEPTH_MAX = 0.15;
-    /** Timings per setting; the quietest median is kept (the machine is shared). */
-    static final int ROUNDS = 3;
+    /** Timing rounds, round-robin over every setting; the quietest median of each is kept (the machine is shared). */
+    static final int ROUNDS = 5;
     /** Errors below this (relative) are round-off: the "error" column stores 0 (exact). */
     static final double ROUND_OFF = 1e-12;
 
@@ -198,54 +198,81 @@ public final class TessellationStudy implements Study {
     private final TriangleMesh plate = plate();
     private final KdopTree plateTree = KdopTree.build(plate, SceneGeometry.DEFAULT_K);
 
+    /** One shape at one resolution ready to query: its mesh, tree and the placed poses. */
+    final class Probe {
+        final TriangleMesh mesh;
+        final KdopTree tree;
+        final List<double[]> poses;
+        final List<RigidTransform> placed = new ArrayList<>();
+        private final TreeQuery q = new TreeQuery();
+        private final CollisionResult res = new CollisionResult();
+        private final ContactPatches cp = new ContactPatches();
+
+        Probe(Shape shape, int divisions) {
+            mesh = shape.mesh(divisions);
+            tree = KdopTree.build(mesh, SceneGeometry.DEFAULT_K);
+            poses = shape.poses();
+            for (double[] p : poses) placed.add(RigidTransform.of(java.util.Arrays.copyOf(p, 12)));
+        }
+
+        /** The errors over the poses (querySeconds NaN). */
+        Measure errors() {
+            double[] c = new double[3], n = new double[3];
+            int missed = 0, found = 0;
+            double cw = 0, cs = 0, nw = 0, ns = 0;
+            for (int i = 0; i < poses.size(); i++) {
+                q.collide(plateTree, tree, placed.get(i), res);
+                int np = cp.build(res, plate, mesh, placed.get(i));
+                if (np != 1) {
+                    missed++;
+                    continue;
+                }
+                cp.center(0, c);
+                cp.normal(0, n);
+                double[] want = poses.get(i);
+                double dc = Math.sqrt(sq(c[0] - want[12]) + sq(c[1] - want[13]) + sq(c[2] - want[14]));
+                double dn = Math.atan2(Math.sqrt(n[0] * n[0] + n[1] * n[1]), -n[2]);  // angle to (0, 0, -1)
+                cw = Math.max(cw, dc);
+                cs += dc;
+                nw = Math.max(nw, dn);
+                ns += dn;
+                found++;
+            }
+            return new Measure(mesh.triangleCount(), missed, cw, found > 0 ? cs / found : Double.NaN, nw,
+                found > 0 ? ns / found : Double.NaN, Double.NaN);
+        }
+
+        /** All poses once, as {@link SceneGeometry#collide} runs a query: tree query, then patches. */
+        int runAll() {
+            int pairs = 0;
+            for (RigidTransform p : placed) {
+                q.collide(plateTree, tree, p, res);
+                pairs += cp.build(res, plate, mesh, p) + res.pairCount();
+            }
+            return pairs;
+        }
+
+        /** Median seconds of one query (over timed runs of all poses). */
+        double seconds(boolean quick) {
+            return Timing.median(this::runAll, quick ? 1 : 5, quick ? 3 : 41, quick ? 0.01 : 0.04).medianSeconds() / placed.size();
+        }
+    }
+
     /**
      * Runs the poses of one shape at one resolution.
      *
-     * @param timed whether to time the queries (median over timed runs of all poses, per query)
+     * @param timed whether to time the queries (the quietest of {@value #ROUNDS} medians, one after the other)
      */
     Measure measure(Shape shape, int divisions, boolean timed, boolean quick) {
-        TriangleMesh m = shape.mesh(divisions);
-        KdopTree tree = KdopTree.build(m, SceneGeometry.DEFAULT_K);
-        List<double[]> poses = shape.poses();
-        List<RigidTransform> placed = new ArrayList<>();
-        for (double[] p : poses) placed.add(RigidTransform.of(java.util.Arrays.copyOf(p, 12)));
-        TreeQuery q = new TreeQuery();
-        CollisionResult res = new CollisionResult();
-        ContactPatches cp = new ContactPatches();
-        double[] c = new double[3], n = new double[3];
-        int missed = 0, found = 0;
-        double cw = 0, cs = 0, nw = 0, ns = 0;
-        for (int i = 0; i < poses.size(); i++) {
-            q.collide(plateTree, tree, placed.get(i), res);
-            int np = cp.build(res, plate, m, placed.get(i));
-            if (np != 1) {
-                missed++;
-                continue;
-            }
-            cp.center(0, c);
-            cp.normal(0, n);
-            double[] want = poses.get(i);
-            double dc = Math.sqrt(sq(c[0] - want[12]) + sq(c[1] - want[13]) + sq(c[2] - want[14]));
-            double dn = Math.atan2(Math.sqrt(n[0] * n[0] + n[1] * n[1]), -n[2]);  // angle to (0, 0, -1)
-            cw = Math.max(cw, dc);
-            cs += dc;
-            nw = Math.max(nw, dn);
-            ns += dn;
-            found++;
-        }
-        double secs = Double.NaN;
-        for (int round = 0; timed && round < (quick ? 1 : ROUNDS); round++) {
-            Timing.Result<Integer> t = Timing.median(() -> {
-                int pairs = 0;
-                for (RigidTransform p : placed) {
-                    q.collide(plateTree, tree, p, res);
-                    pairs += cp.build(res, plate, m, p) + res.pairCount();
-                }
-                return pairs;
-            }, quick ? 1 : 5, quick ? 3 : 41, quick ? 0.01 : 0.1);
-            secs = Double.isNaN(secs) ? t.medianSeconds() / placed.size() : Math.min(secs, t.medianSeconds() / placed.size());
-        }
-        return new Measure(m.triangleCount(), missed, cw, found > 0 ? cs / found : Double.NaN, nw, found > 0 ? ns / found : Double.NaN, secs);
+        Probe p = new Probe(shape, divisions);
+        Measure m = p.errors();
+        double secs = Double.POSITIVE_INFINITY;
+        for (int round = 0; timed && round < (quick ? 1 : ROUNDS); round++) secs = Math.min(secs, p.seconds(quick));
+        return timed ? withSeconds(m, secs) : m;
+    }
+
+    private static Measure withSeconds(Measure m, double secs) {
+        return new Measure(m.triangles(), m.missed(), m.centreWorst(), m.centreMean(), m.normalWorst(), m.normalMean(), secs);
     }
 
     private static double sq(double x) { return x * x; }
@@ -268,23 +295,46 @@ public final class TessellationStudy implements Study {
         int total = 0, done = 0;
         for (Shape s : Shape.values()) total += divisions(s, quick).length;
         List<String> missedNotes = new ArrayList<>();
-        // warm the JIT on the query before anything is timed (the first shape would pay for it)
-        long warm = System.nanoTime();
-        while ((System.nanoTime() - warm) / 1e9 < (quick ? 0.05 : 0.5)) measure(Shape.SPHERE, 16, true, true);
+        List<Shape> shapes = new ArrayList<>();
+        List<Integer> divs = new ArrayList<>();
+        List<Probe> probes = new ArrayList<>();
+        List<Measure> measures = new ArrayList<>();
         for (Shape s : Shape.values()) {
             for (int d : divisions(s, quick)) {
-                Measure m = measure(s, d, true, quick);
-                boolean def = d == s.defaultDivisions;
-                double crel = m.centreWorst() / s.radius, crelMean = m.centreMean() / s.radius;
-                double[] common = {d, m.triangles(), m.querySeconds(), POSES, m.missed(), s.radius, m.centreWorst(), crel, crelMean,
-                    m.normalWorst(), m.normalMean()};
-                double yc = m.missed() > 0 ? Double.NaN : crel < ROUND_OFF ? 0 : crel;
-                double yn = m.missed() > 0 ? Double.NaN : m.normalWorst() < ROUND_OFF ? 0 : m.normalWorst();
-                t.add(s.label + " centre", String.valueOf(d), def, with(common, yc));
-                t.add(s.label + " normal", String.valueOf(d), def, with(common, yn));
-                if (m.missed() > 0) missedNotes.add(s.label + " " + d + ": " + m.missed() + "/" + POSES);
-                if (progress != null) progress.accept((double) ++done / total);
+                Probe p = new Probe(s, d);
+                shapes.add(s);
+                divs.add(d);
+                probes.add(p);
+                measures.add(p.errors());
+                if (progress != null) progress.accept(0.2 * ++done / total);
             }
+        }
+        // warm the JIT on the query before anything is timed (the first setting would pay for it), then
+        // time round-robin: a burst of load from other processes hits every setting alike; the quietest median is kept
+        long warm = System.nanoTime();
+        while ((System.nanoTime() - warm) / 1e9 < (quick ? 0.05 : 0.5)) probes.get(probes.size() / 3).runAll();
+        double[] secs = new double[probes.size()];
+        java.util.Arrays.fill(secs, Double.POSITIVE_INFINITY);
+        int rounds = quick ? 1 : ROUNDS;
+        for (int round = 0; round < rounds; round++) {
+            for (int i = 0; i < probes.size(); i++) {
+                secs[i] = Math.min(secs[i], probes.get(i).seconds(quick));
+                if (progress != null) progress.accept(0.2 + 0.8 * (round * probes.size() + i + 1) / (rounds * probes.size()));
+            }
+        }
+        for (int i = 0; i < probes.size(); i++) {
+            Shape s = shapes.get(i);
+            int d = divs.get(i);
+            Measure m = withSeconds(measures.get(i), secs[i]);
+            boolean def = d == s.defaultDivisions;
+            double crel = m.centreWorst() / s.radius, crelMean = m.centreMean() / s.radius;
+            double[] common = {d, m.triangles(), m.querySeconds(), POSES, m.missed(), s.radius, m.centreWorst(), crel, crelMean,
+                m.normalWorst(), m.normalMean()};
+            double yc = m.missed() > 0 ? Double.NaN : crel < ROUND_OFF ? 0 : crel;
+            double yn = m.missed() > 0 ? Double.NaN : m.normalWorst() < ROUND_OFF ? 0 : m.normalWorst();
+            t.add(s.label + " centre", String.valueOf(d), def, with(common, yc));
+            t.add(s.label + " normal", String.valueOf(d), def, with(common, yn));
+            if (m.missed() > 0) missedNotes.add(s.label + " " + d + ": " + m.missed() + "/" + POSES);
         }
         if (!missedNotes.isEmpty()) {
             t.note("missed", "not plotted (the coarse polyhedron missed the plate in some poses): " + String.join(", ", missedNotes));
