@@ -17,6 +17,7 @@ import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
 import org.handsim.sim.Simulation;
 import org.handsim.sim.SimulationException;
+import org.handsim.tradeoff.Resolution;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
@@ -49,6 +50,12 @@ public final class RunCommand implements Callable<Integer> {
         "for comparison: same results, more collision queries and dynamics calls)"})
     boolean noLazy;
 
+    @Option(names = "--tolerance", paramLabel = "LENGTH", description = {"contact tolerance, e.g. 0.5mm, 0.0005m, 1e-3 (m):",
+        "tessellate the object at the coarsest divisions",
+        "whose worst contact-centre error (chart",
+        "2-tessellation) is at most LENGTH"})
+    String tolerance;
+
     @Override
     public Integer call() throws IOException {
         PrintWriter err = spec.commandLine().getErr();
@@ -58,6 +65,38 @@ public final class RunCommand implements Callable<Integer> {
         if (dt != null) {
             if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
             scenario = scenario.withDt(dt);
+        }
+        Double toleranceM = null;
+        String toleranceLine = null;
+        if (tolerance != null) {
+            try {
+                toleranceM = Resolution.parseLength(tolerance);
+            } catch (IllegalArgumentException e) {
+                throw CliError.usage("handsim: --tolerance: " + e.getMessage());
+            }
+            Scenario.ObjectPlacement o = scenario.object();
+            if (o == null) {
+                err.println("handsim: --tolerance has no effect: the scenario has no object");
+            } else {
+                Resolution.Choice c;
+                try {
+                    c = Resolution.choose(o.file(), o.scale(), toleranceM);
+                } catch (ScenarioException e) {
+                    throw new CliError(CliError.LOAD, e.getMessage());
+                }
+                if (c.fixedMesh()) {
+                    err.println("handsim: --tolerance has no effect: " + o.file() + " is a fixed mesh of " + c.triangles() + " triangles");
+                } else if (!c.met()) {
+                    throw CliError.usage("handsim: --tolerance " + tolerance.trim() + " cannot be met for " + o.file() + ": the best achievable"
+                        + " worst contact-centre error is " + Resolution.mm(c.expectedErrorM()) + " (divisions " + c.divisions()
+                        + ", object radius " + Resolution.mm(c.sizeM()) + ")");
+                } else {
+                    scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions()));
+                    toleranceLine = String.format(Locale.ROOT, "tolerance %s: divisions %d (%d triangles), expected worst contact-centre error %s"
+                        + " (object radius %s, chart 2-tessellation)", Resolution.mm(toleranceM), c.divisions(), c.triangles(),
+                        Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));
+                }
+            }
         }
         Path dir = out != null ? out : Path.of("out", scenario.name());
         long t0 = System.nanoTime();
@@ -72,6 +111,10 @@ public final class RunCommand implements Callable<Integer> {
         double wall = (System.nanoTime() - t1) / 1e9;
         Map<String, Object> summary = RunSummary.of(model, wall);
         summary.put("setup_time_s", setup);
+        if (toleranceM != null) {
+            summary.put("tolerance_m", toleranceM);
+            if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
+        }
         List<String> written = new ArrayList<>();
         long t2 = System.nanoTime();
         if (scenario.writeTrace()) {
@@ -100,6 +143,7 @@ public final class RunCommand implements Callable<Integer> {
         summary.put("phase_times", phases);
         AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
         written.add("summary.json");
+        if (toleranceLine != null) stdout.println(toleranceLine);
         stdout.println(headline(model, wall));
         stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
         return 0;

@@ -10,6 +10,8 @@ public final class Studies {
     /** Studies register here, one line each, in the order of their charts. */
     public static final List<Supplier<Study>> ALL = List.of(
         DtStudy::new,
+        TessellationStudy::new,
+        KdopStudy::new,
         IntegratorStudy::new
     );
 }
