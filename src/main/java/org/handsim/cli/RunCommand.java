@@ -66,36 +66,17 @@ public final class RunCommand implements Callable<Integer> {
             if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
             scenario = scenario.withDt(dt);
         }
-        Double toleranceM = null;
+        Double toleranceM = tolerance != null ? parseTolerance(tolerance) : null;
         String toleranceLine = null;
-        if (tolerance != null) {
-            try {
-                toleranceM = Resolution.parseLength(tolerance);
-            } catch (IllegalArgumentException e) {
-                throw CliError.usage("handsim: --tolerance: " + e.getMessage());
-            }
+        if (toleranceM != null) {
             Scenario.ObjectPlacement o = scenario.object();
-            if (o == null) {
-                err.println("handsim: --tolerance has no effect: the scenario has no object");
-            } else {
-                Resolution.Choice c;
-                try {
-                    c = Resolution.choose(o.file(), o.scale(), toleranceM);
-                } catch (ScenarioException e) {
-                    throw new CliError(CliError.LOAD, e.getMessage());
-                }
-                if (c.fixedMesh()) {
-                    err.println("handsim: --tolerance has no effect: " + o.file() + " is a fixed mesh of " + c.triangles() + " triangles");
-                } else if (!c.met()) {
-                    throw CliError.usage("handsim: --tolerance " + tolerance.trim() + " cannot be met for " + o.file() + ": the best achievable"
-                        + " worst contact-centre error is " + Resolution.mm(c.expectedErrorM()) + " (divisions " + c.divisions()
-                        + ", object radius " + Resolution.mm(c.sizeM()) + ")");
-                } else {
-                    scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions()));
-                    toleranceLine = String.format(Locale.ROOT, "tolerance %s: divisions %d (%d triangles), expected worst contact-centre error %s"
-                        + " (object radius %s, chart 2-tessellation)", Resolution.mm(toleranceM), c.divisions(), c.triangles(),
-                        Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));
-                }
+            Resolution.Choice c = o == null ? null : chooseResolution(o, toleranceM, err);
+            if (o == null) err.println("handsim: --tolerance has no effect: the scenario has no object");
+            if (c != null && !c.fixedMesh()) {
+                scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions()));
+                toleranceLine = String.format(Locale.ROOT, "tolerance %s: divisions %d (%d triangles), expected worst contact-centre error %s"
+                    + " (object radius %s, chart 2-tessellation)", Resolution.mm(toleranceM), c.divisions(), c.triangles(),
+                    Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));
             }
         }
         Path dir = out != null ? out : Path.of("out", scenario.name());
@@ -147,6 +128,37 @@ public final class RunCommand implements Callable<Integer> {
         stdout.println(headline(model, wall));
         stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
         return 0;
+    }
+
+    /** {@code --tolerance} as metres; exit 2 naming the value if it is not a length. */
+    private static double parseTolerance(String text) {
+        try {
+            return Resolution.parseLength(text);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: --tolerance: " + e.getMessage());
+        }
+    }
+
+    /**
+     * The object's divisions for a tolerance (chart 2-tessellation's table). A fixed mesh gets a
+     * note on standard error and is run as it is; a tolerance no tessellation meets is exit 2
+     * with the best achievable error.
+     */
+    private Resolution.Choice chooseResolution(Scenario.ObjectPlacement o, double toleranceM, PrintWriter err) {
+        Resolution.Choice c;
+        try {
+            c = Resolution.choose(o.file(), o.scale(), toleranceM);
+        } catch (ScenarioException e) {
+            throw new CliError(CliError.LOAD, e.getMessage());
+        }
+        if (c.fixedMesh()) {
+            err.println("handsim: --tolerance has no effect: " + o.file() + " is a fixed mesh of " + c.triangles() + " triangles");
+        } else if (!c.met()) {
+            throw CliError.usage("handsim: --tolerance " + tolerance.trim() + " cannot be met for " + o.file() + ": the best achievable"
+                + " worst contact-centre error is " + Resolution.mm(c.expectedErrorM()) + " (divisions " + c.divisions()
+                + ", object radius " + Resolution.mm(c.sizeM()) + ")");
+        }
+        return c;
     }
 
     static Scenario loadScenario(Path file) {
