@@ -28,6 +28,7 @@ public final class StudyTable {
     private final int xColumn, yColumn;
     private final List<Row> rows = new ArrayList<>();
     private final Map<String, String> notes = new LinkedHashMap<>();
+    private boolean labelEveryPoint = true;
 
     /**
      * @param id      file base name, e.g. {@code 1-dt}
@@ -67,6 +68,16 @@ public final class StudyTable {
         return this;
     }
 
+    /**
+     * Whether the chart labels every point with its setting (default) or, for crowded charts,
+     * only the points on a Pareto front and the defaults.
+     */
+    public StudyTable labelEveryPoint(boolean on) {
+        labelEveryPoint = on;
+        return this;
+    }
+
+    public boolean labelsEveryPoint() { return labelEveryPoint; }
     public String id() { return id; }
     public String title() { return title; }
     public String xLabel() { return xLabel; }

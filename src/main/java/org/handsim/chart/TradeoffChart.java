@@ -59,18 +59,21 @@ public final class TradeoffChart {
             XYSeries points = new XYSeries(name, false, true);
             List<String> pointLabels = new ArrayList<>();
             for (int i = 0; i < rows.size(); i++) {
+                x[i] = rows.get(i).values()[t.xColumn()];
+                y[i] = rows.get(i).values()[t.yColumn()];
+            }
+            List<Integer> onFront = ParetoFront.of(x, y);
+            for (int i = 0; i < rows.size(); i++) {
                 StudyTable.Row row = rows.get(i);
-                x[i] = row.values()[t.xColumn()];
-                y[i] = row.values()[t.yColumn()];
                 double px = x[i] > 0 ? x[i] : fx, py = y[i] > 0 ? y[i] : fy;
-                if (!(x[i] > 0) || !(y[i] > 0)) clamped = true;
                 if (!Double.isFinite(x[i]) || !Double.isFinite(y[i])) continue;
+                if (!(x[i] > 0) || !(y[i] > 0)) clamped = true;
                 points.add(px, py);
-                pointLabels.add(row.setting());
+                pointLabels.add(t.labelsEveryPoint() || row.isDefault() || onFront.contains(i) ? row.setting() : null);
                 if (row.isDefault()) defaults.add(new double[] {px, py, s});
             }
             XYSeries front = new XYSeries(name + " (Pareto front)", false, true);
-            for (int i : ParetoFront.of(x, y)) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
+            for (int i : onFront) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
             Color c = PALETTE[s % PALETTE.length];
             int pi = data.getSeriesCount();
             data.addSeries(points);

@@ -193,7 +193,8 @@ public final class KdopStudy implements Study {
     @Override
     public StudyTable run(boolean quick, DoubleConsumer progress) {
         StudyTable t = new StudyTable(id(), "k-DOP k and brute force: the hand grasping each vrml/objects model", COLUMNS,
-            "query_s", "triangle_tests", "wall time of the nine link-object queries (s, log)", "triangle-triangle tests (log)");
+            "query_s", "triangle_tests", "wall time of the nine link-object queries (s, log)", "triangle-triangle tests (log)")
+            .labelEveryPoint(false);
         List<Path> files = objects();
         if (quick) files = files.subList(0, Math.min(3, files.size()));
         int[] settings = settings();
@@ -239,6 +240,7 @@ public final class KdopStudy implements Study {
             + linkTriangles / 9 + " triangles on average, object triangles in the CSV");
         t.note("touching", "links touching the object (of 9): " + String.join(", ", touching));
         t.note("same", "every k and brute force find the same intersecting pairs and segments: k changes only the speed; default k = 18");
+        t.note("labels", "labelled: the points on each object's Pareto front and the default; upper right, one per object: brute force; every point is in 3-kdop.csv");
         return t;
     }
 }
