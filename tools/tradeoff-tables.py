@@ -50,7 +50,7 @@ print("|---|---:|---:|---:|---:|---:|---:|")
 for o in objs:
     cells = []
     for x in [y for y in k if y["series"] == o]:
-        cells.append(f"{t(x['query_s'])}, {int(float(x['triangle_tests'])):,}".replace(",", " ", 1) if False else f"{t(x['query_s'])}, {int(float(x['triangle_tests']))}")
+        cells.append(f"{t(x['query_s'])}, {int(float(x['triangle_tests']))}")
     print(f"| {o} | {int(float(k[[y['series'] for y in k].index(o)]['object_triangles']))} | " + " | ".join(cells) + " |")
 print()
 
