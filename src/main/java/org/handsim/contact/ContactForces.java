@@ -22,8 +22,15 @@ package org.handsim.contact;
  * <p>Not thread-safe: one instance per model (it keeps its scratch arrays).
  */
 public final class ContactForces {
-    /** Moment arms (metres) below this count as zero. */
-    public static final double MIN_ARM_M = 1e-7;
+    /**
+     * Moment arms (metres) below this count as zero: 0.5 mm. The arm of a contact is only as
+     * good as its normal and position, and at the default tessellation those are good to about
+     * 1–2° and 0.5 mm (docs/BENCHMARKS.md, chart 2-tessellation): at a 30 mm lever that is an
+     * uncertainty of about 0.5–1 mm in the arm, so a smaller arm does not determine the force
+     * (f = τ/a would be more than 100 % uncertain, and grow without bound — thousands of newtons
+     * for τ_break — as a → 0). Such a contact is reported undetermined with f = 0.
+     */
+    public static final double MIN_ARM_M = 5e-4;
     private static final int MAX_ITER = 100;
 
     private double[] arms = new double[0];      // 3 per contact: a_1i, a_2i, a_3i

@@ -38,6 +38,31 @@ class RunCommandsTest {
         }
     }
 
+    /** The mug lowered by 5 mm: it starts inside the fingers' first links, and the run says so. */
+    @Test
+    void aFingerStartingInsideTheObjectIsWarnedAbout() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-run");
+        Path moved = dir.resolve("mug-moved.json");
+        String text = Files.readString(Home.scenarios().resolve("mug-grasp.json"))
+            .replace("../vrml/objects/mug.wrl", Home.dir().resolve("vrml/objects/mug.wrl").toString().replace("\\", "/"));
+        assertTrue(text.contains("\"position_m\": [\n      0,\n      0,\n      0.125"), "the mug's position as the test expects it");
+        text = text.replace("\"position_m\": [\n      0,\n      0,\n      0.125", "\"position_m\": [\n      0,\n      0,\n      0.12");
+        Files.writeString(moved, text);
+        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", moved.toString(), "--no-charts", "--out", dir.resolve("out").toString());
+        assertEquals(0, r.code(), r.err());
+        for (int k = 1; k <= 3; k++) {
+            assertTrue(r.err().contains("handsim: warning: finger " + k + " starts in contact with the object"), r.err());
+        }
+        String summary = Files.readString(dir.resolve("out").resolve("summary.json"));
+        assertTrue(summary.contains("\"warnings\": [\"finger 1 starts in contact"), summary);
+        // the unmoved mug: no warning, an empty list
+        KinematicsCommandsTest.Run ok = KinematicsCommandsTest.run("run", Home.scenarios().resolve("mug-grasp.json").toString(), "--no-charts",
+            "--out", dir.resolve("ok").toString());
+        assertEquals(0, ok.code(), ok.err());
+        assertFalse(ok.err().contains("warning"), ok.err());
+        assertTrue(Files.readString(dir.resolve("ok").resolve("summary.json")).contains("\"warnings\": []"));
+    }
+
     @Test
     void badScenarioIsALoadErrorNamingTheField() throws Exception {
         Path dir = Files.createTempDirectory("handsim-run");

@@ -68,6 +68,32 @@ class ContactForcesTest {
     }
 
     /**
+     * Below {@link ContactForces#MIN_ARM_M} (0.5 mm) the arm does not determine the force: a
+     * push tilted so that its arm about joint 2 is 0.3 mm is undetermined (not 4 200 N); at an
+     * arm of 1 mm the force is τ/a exactly. The arm of a push (−s, 0, −1)/√(1+s²) at
+     * p − o1 = (0, 0, 0.05) is 0.05·s/√(1+s²).
+     */
+    @Test
+    void armsBelowHalfAMillimetreAreUndeterminedAboveThemTheForceIsTorqueOverArm() {
+        double[] f = upright();
+        double[] p = {0.05, 0, 0.05};
+        ContactForces cf = new ContactForces();
+        for (double arm : new double[] {3e-4, 1e-3}) {
+            double s = arm / Math.sqrt(0.05 * 0.05 - arm * arm);   // 0.05·s/√(1+s²) = arm
+            double n = Math.sqrt(1 + s * s);
+            cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, new double[] {-s / n, 0, -1 / n}, new int[] {2});
+            assertEquals(arm, Math.abs(cf.arm(0, 1)), 1e-15, "the arm as built");
+            if (arm < ContactForces.MIN_ARM_M) {
+                assertTrue(cf.undetermined(0), "arm " + arm);
+                assertEquals(0, cf.force(0));
+            } else {
+                assertFalse(cf.undetermined(0), "arm " + arm);
+                assertEquals(1.26 / arm, cf.force(0), 1e-9, "f = tau / a");
+            }
+        }
+    }
+
+    /**
      * Two contacts, one per link, torques on both flexion joints: the 2×2 system by hand.
      * Outer link horizontal inward: with θ3 = 90° − Φ3 link 3 points along −x from o2 = (0.05,0,0.07).
      * Contact B on link 3 at 0.03 from o2, pushing −z: arm about joint 3 = 0.03, about joint 2:
