@@ -24,7 +24,7 @@ final class SimBench implements BenchMain.Suite {
         for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
             Scenario s = Scenario.load(file);
             double reference = Double.NaN;
-            for (String setting : new String[] {"default (lazy)", "lazy off", "torques off"}) {
+            for (String setting : new String[] {"default (lazy)", "torques off", "lazy off"}) {
                 Scenario run = setting.equals("torques off") ? s.withTorques(false) : s;
                 boolean lazy = !setting.equals("lazy off");
                 HandModel[] last = new HandModel[1];
