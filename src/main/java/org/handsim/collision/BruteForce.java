@@ -49,17 +49,12 @@ public final class BruteForce {
         return out;
     }
 
-    /** Exactly collinear triangles of the mesh (in its own frame), as {@link KdopTree} marks them. */
+    /** Exactly collinear triangles of the mesh (in its own frame), by {@link KdopTree}'s own rule. */
     boolean[] degenerate(TriangleMesh mesh) {
         double[] v = mesh.vertices();
         int[] t = mesh.triangles();
         boolean[] d = new boolean[mesh.triangleCount()];
-        for (int i = 0; i < d.length; i++) {
-            int a = 3 * t[3 * i], b = 3 * t[3 * i + 1], c = 3 * t[3 * i + 2];
-            d[i] = pred.orient2d(v[a], v[a + 1], v[b], v[b + 1], v[c], v[c + 1]) == 0
-                && pred.orient2d(v[a + 1], v[a + 2], v[b + 1], v[b + 2], v[c + 1], v[c + 2]) == 0
-                && pred.orient2d(v[a + 2], v[a], v[b + 2], v[b], v[c + 2], v[c]) == 0;
-        }
+        for (int i = 0; i < d.length; i++) d[i] = KdopTree.collinear(pred, v, t, i);
         return d;
     }
 }

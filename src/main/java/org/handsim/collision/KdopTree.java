@@ -145,7 +145,8 @@ public final class KdopTree {
         return new KdopTree(mesh, Kdop.of(k), rule, maxLeafSize);
     }
 
-    private static boolean collinear(Predicates pred, double[] v, int[] tri, int t) {
+    /** True if triangle t's vertices are exactly collinear (exact orient2d zero on all three coordinate planes). */
+    static boolean collinear(Predicates pred, double[] v, int[] tri, int t) {
         int a = 3 * tri[3 * t], b = 3 * tri[3 * t + 1], c = 3 * tri[3 * t + 2];
         return pred.orient2d(v[a], v[a + 1], v[b], v[b + 1], v[c], v[c + 1]) == 0
             && pred.orient2d(v[a + 1], v[a + 2], v[b + 1], v[b + 2], v[c + 1], v[c + 2]) == 0
