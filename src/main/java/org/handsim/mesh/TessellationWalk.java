@@ -11,6 +11,7 @@ import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.handsim.math.RigidTransform;
 import org.jogamp.java3d.Geometry;
 import org.jogamp.java3d.GeometryArray;
 import org.jogamp.java3d.GeometryStripArray;
@@ -434,16 +435,10 @@ public final class TessellationWalk {
         return p;
     }
 
-    /** Row-major 3×4 affine a · (4×4 b, only its top three rows used). */
+    /** Row-major 3×4 affine a · (4×4 b, only its top three rows used), a new array. */
     private static double[] compose(double[] a, double[] b) {
         double[] r = new double[12];
-        for (int i = 0; i < 3; i++) {
-            for (int j = 0; j < 4; j++) {
-                double s = a[4 * i] * b[j] + a[4 * i + 1] * b[4 + j] + a[4 * i + 2] * b[8 + j];
-                if (j == 3) s += a[4 * i + 3];
-                r[4 * i + j] = s;
-            }
-        }
+        RigidTransform.multiply(a, 0, b, 0, r, 0);
         return r;
     }
 
