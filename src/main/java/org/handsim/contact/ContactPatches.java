@@ -171,7 +171,7 @@ public final class ContactPatches {
             if (a != tolA || b != tolB) {
                 tolA = a;
                 tolB = b;
-                tolUsed = TOLERANCE_FACTOR * Math.max(diagonal(a), diagonal(b));
+                tolUsed = TOLERANCE_FACTOR * Math.max(a.diagonal(), b.diagonal());
                 if (!(tolUsed > 0)) tolUsed = Double.MIN_NORMAL;
             }
             tol = tolUsed;
@@ -179,12 +179,6 @@ public final class ContactPatches {
         tolUsed = tol;
         poseB.copyTo(rot, 0);
         return build(r, a.normals(), a.areas(), b.normals(), b.areas(), rot, tol);
-    }
-
-    private static double diagonal(TriangleMesh m) {
-        double[][] bb = m.bounds();
-        double dx = bb[1][0] - bb[0][0], dy = bb[1][1] - bb[0][1], dz = bb[1][2] - bb[0][2];
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     /**

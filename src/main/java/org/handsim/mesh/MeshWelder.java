@@ -31,9 +31,7 @@ public final class MeshWelder {
      * last place of float input after transforms; far below any modelled feature).
      */
     public static double defaultTolerance(TriangleMesh m) {
-        double[][] b = m.bounds();
-        double dx = b[1][0] - b[0][0], dy = b[1][1] - b[0][1], dz = b[1][2] - b[0][2];
-        return 1e-9 * Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return 1e-9 * m.diagonal();
     }
 
     /** Welds with {@link #defaultTolerance}. */

@@ -184,6 +184,13 @@ public final class TriangleMesh {
         return new double[][] {lo, hi};
     }
 
+    /** @return the length of the bounding box's diagonal, m (0 for an empty mesh) */
+    public double diagonal() {
+        double[][] b = bounds();
+        double dx = b[1][0] - b[0][0], dy = b[1][1] - b[0][1], dz = b[1][2] - b[0][2];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
     /** @return a new mesh with every vertex mapped by {@code t} (same triangles) */
     public TriangleMesh transformed(RigidTransform t) {
         double[] out = new double[vertices.length];

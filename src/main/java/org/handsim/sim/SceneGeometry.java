@@ -71,8 +71,7 @@ public final class SceneGeometry implements LinkContacts {
         for (int j = 0; j < 3; j++) linkSpheres[j] = sphere(linkMeshes[j]);
         double diag = 0;
         for (TriangleMesh m : new TriangleMesh[] {objectMesh, linkMeshes[0], linkMeshes[1], linkMeshes[2]}) {
-            double[][] b = m.bounds();
-            diag = Math.max(diag, Math.sqrt(sq(b[1][0] - b[0][0]) + sq(b[1][1] - b[0][1]) + sq(b[1][2] - b[0][2])));
+            diag = Math.max(diag, m.diagonal());
         }
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
         thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.scale(),

@@ -45,6 +45,8 @@ class MeshWelderTest {
         TriangleMesh jittered = looseCube(1e-7);
         assertEquals(8, new MeshWelder().weld(jittered, 1e-6).vertexCount());
         assertEquals(24, new MeshWelder().weld(jittered, 1e-9).vertexCount());
+        assertEquals(Math.sqrt(3), looseCube(0).diagonal(), 1e-15, "the unit cube's diagonal");
+        assertEquals(1e-9 * Math.sqrt(3), MeshWelder.defaultTolerance(looseCube(0)), 1e-24);
         assertEquals(24, new MeshWelder().weld(jittered).vertexCount(), "default 1e-9 x diagonal keeps 1e-7 jitter apart");
     }
 
