@@ -102,8 +102,8 @@ public final class ContactPatches {
     private NormalRule rule = NormalRule.CURVE;
     private final double[] sumA = new double[12], sumB = new double[12];
     private double tolerance = Double.NaN;
-    private TriangleMesh tolA, tolB;
-    private double tolUsed;
+    private TriangleMesh tolA, tolB;        // the meshes defaultTol was computed for
+    private double defaultTol, tolUsed;
 
     // scratch
     private int[] parent = new int[64];
@@ -171,12 +171,11 @@ public final class ContactPatches {
             if (a != tolA || b != tolB) {
                 tolA = a;
                 tolB = b;
-                tolUsed = TOLERANCE_FACTOR * Math.max(a.diagonal(), b.diagonal());
-                if (!(tolUsed > 0)) tolUsed = Double.MIN_NORMAL;
+                defaultTol = TOLERANCE_FACTOR * Math.max(a.diagonal(), b.diagonal());
+                if (!(defaultTol > 0)) defaultTol = Double.MIN_NORMAL;
             }
-            tol = tolUsed;
+            tol = defaultTol;
         }
-        tolUsed = tol;
         poseB.copyTo(rot, 0);
         return build(r, a.normals(), a.areas(), b.normals(), b.areas(), rot, tol);
     }

@@ -63,6 +63,28 @@ class ContactPatchesTest {
         return Math.sqrt((u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]) + (u[2] - v[2]) * (u[2] - v[2]));
     }
 
+    /**
+     * The default tolerance is 1e-9 × the larger bounding-box diagonal, and comes back after a
+     * fixed tolerance or a build from raw arrays was used in between (same meshes).
+     */
+    @Test
+    void defaultToleranceComesBackAfterAFixedOne() {
+        TriangleMesh a = TestMeshes.box(0.03, 0.04, 0.12, 1), b = TestMeshes.box(0.01, 0.01, 0.01, 1);
+        double def = ContactPatches.TOLERANCE_FACTOR * 0.26;   // diagonal of 6 × 8 × 24 cm
+        ContactPatches cp = new ContactPatches();
+        CollisionResult none = new CollisionResult();
+        cp.build(none, a, b, RigidTransform.IDENTITY);
+        assertEquals(def, cp.tolerance(), 1e-24);
+        cp.tolerance(1e-3).build(none, a, b, RigidTransform.IDENTITY);
+        assertEquals(1e-3, cp.tolerance());
+        cp.tolerance(Double.NaN).build(none, a, b, RigidTransform.IDENTITY);
+        assertEquals(def, cp.tolerance(), 1e-24);
+        cp.build(none, a.normals(), a.areas(), b.normals(), b.areas(), RigidTransform.IDENTITY.toArray(), 2e-3);
+        assertEquals(2e-3, cp.tolerance());
+        cp.build(none, a, b, RigidTransform.IDENTITY);
+        assertEquals(def, cp.tolerance(), 1e-24);
+    }
+
     /** [centre error m, normal error deg, area] of the single contact of a sphere (B) dipping h into the slab. */
     private double[] spherePlane(int segments, double h, double x0, double y0, RigidTransform spin) {
         return spherePlane(segments, h, x0, y0, spin, ContactPatches.NormalRule.CURVE);
