@@ -85,6 +85,50 @@ class ContactPatchesTest {
         assertEquals(def, cp.tolerance(), 1e-24);
     }
 
+    /**
+     * No allocation per step once warm (DESIGN.md: hot loops allocate nothing): the query, the
+     * patches (both entry points) and the contact forces, measured with the JVM's per-thread
+     * allocation counter.
+     */
+    @Test
+    void patchesAndForcesAllocateNothingOnceWarm() {
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        org.junit.jupiter.api.Assumptions.assumeTrue(mx instanceof com.sun.management.ThreadMXBean);
+        com.sun.management.ThreadMXBean tmx = (com.sun.management.ThreadMXBean) mx;
+        TriangleMesh plate = slab(4), sphere = TestMeshes.uvSphere(DEFAULT_SEGMENTS, R);
+        KdopTree ta = KdopTree.build(plate, 18), tb = KdopTree.build(sphere, 18);
+        RigidTransform pose = RigidTransform.fromPose(0.003, -0.002, R - 0.002, 0.3, 0.2, 0.1);
+        double[] pose12 = pose.toArray(), frames = new double[48], tau = {0, 1.0, 0.5};
+        org.handsim.kinematics.FingerKinematics.of(3).frames(new double[] {0, 0.5, 0.3}, frames);
+        double[] points = new double[3 * 8], dirs = new double[3 * 8];
+        int[] links = new int[8];
+        ContactPatches cp = new ContactPatches();
+        ContactForces cf = new ContactForces();
+        int[] patches = new int[1];
+        Runnable step = () -> {
+            query.collide(ta, tb, pose12, 0, result);
+            cp.build(result, plate, sphere, pose);
+            int n = cp.build(result, plate.normals(), plate.areas(), sphere.normals(), sphere.areas(), pose12, 1e-11);
+            for (int i = 0; i < n; i++) {
+                cp.center(i, points);
+                System.arraycopy(points, 0, points, 3 * i, 3);
+                cp.normal(i, dirs);
+                System.arraycopy(dirs, 0, dirs, 3 * i, 3);
+                links[i] = 2 + i % 2;
+            }
+            cf.solve(frames, 1, tau, n, points, dirs, links);
+            patches[0] = n;
+        };
+        for (int i = 0; i < 2000; i++) step.run();   // warm-up (and JIT)
+        long id = Thread.currentThread().getId();
+        long before = tmx.getThreadAllocatedBytes(id);
+        for (int i = 0; i < 100; i++) step.run();
+        long bytes = tmx.getThreadAllocatedBytes(id) - before;
+        assertEquals(1, patches[0], "one contact");
+        assertTrue(result.pairCount() > 10, "pairs " + result.pairCount());
+        assertTrue(bytes < 1000, bytes + " bytes in 100 steps");
+    }
+
     /** [centre error m, normal error deg, area] of the single contact of a sphere (B) dipping h into the slab. */
     private double[] spherePlane(int segments, double h, double x0, double y0, RigidTransform spin) {
         return spherePlane(segments, h, x0, y0, spin, ContactPatches.NormalRule.CURVE);
