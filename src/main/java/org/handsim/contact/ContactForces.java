@@ -41,6 +41,7 @@ public final class ContactForces {
     private int[] idxScratch = new int[0];
     private double[] gScratch = new double[0], bScratch = new double[0], yScratch = new double[0];
     private boolean[] deadScratch = new boolean[0];
+    private final double[] res = new double[3];   // τ − A f per joint, in nnls
     private int count;
     private double residual;
 
@@ -102,17 +103,18 @@ public final class ContactForces {
     private void nnls(int r0, double[] tau, int n) {
         for (int i = 0; i < n; i++) passive[i] = false;
         for (int iter = 0; iter < MAX_ITER; iter++) {
-            // gradient w = Aᵀ (τ − A f)
+            // gradient w = Aᵀ (τ − A f), the residual τ − A f computed once
+            for (int m = r0; m < 3; m++) {
+                double r = tau[m];
+                for (int j = 0; j < n; j++) r -= arms[3 * j + m] * mag[j];
+                res[m] = r;
+            }
             int best = -1;
             double bestW = 1e-15;
             for (int i = 0; i < n; i++) {
                 if (passive[i] || undetermined[i]) continue;
                 double g = 0;
-                for (int m = r0; m < 3; m++) {
-                    double r = tau[m];
-                    for (int j = 0; j < n; j++) r -= arms[3 * j + m] * mag[j];
-                    g += arms[3 * i + m] * r;
-                }
+                for (int m = r0; m < 3; m++) g += arms[3 * i + m] * res[m];
                 if (g > bestW) { bestW = g; best = i; }
             }
             if (best < 0) return;
