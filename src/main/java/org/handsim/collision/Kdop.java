@@ -101,11 +101,6 @@ public final class Kdop {
     /** @return k/2, the number of directions */
     public int directionCount() { return m; }
 
-    /** @return direction i as a new array {x, y, z} (unnormalised, integer components) */
-    public double[] direction(int i) {
-        return new double[] {dx[i], dy[i], dz[i]};
-    }
-
     TransformedBounds.Facets facets() { return facets; }
 
     /** Makes {@code b[off..off+k−1]} the empty k-DOP (min = +∞, max = −∞). */

@@ -67,13 +67,9 @@ public final class TriangleIntersector {
     // coplanar clipping scratch: up to 9 points
     private final double[] polyA = new double[27], polyB = new double[27];
     private final double[] side = new double[9];
-    private long tests;
 
     /** @return the predicates (for their exact-stage counter) */
     public Predicates predicates() { return pred; }
-
-    /** @return how many pairs {@link #intersect} has examined */
-    public long tests() { return tests; }
 
     /** @return the number of segments of the last intersection (0 if disjoint) */
     public int segmentCount() { return segCount; }
@@ -119,7 +115,6 @@ public final class TriangleIntersector {
     }
 
     private void load(double[] va, int a0, int a1, int a2, double[] vb, int b0, int b1, int b2) {
-        tests++;
         segCount = 0;
         area = 0;
         double[] p = v1, q = v2;
