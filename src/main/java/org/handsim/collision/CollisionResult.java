@@ -28,11 +28,9 @@ public final class CollisionResult {
 
     /**
      * Node pairs visited: every pair of nodes (one of A, one of B) whose k-DOPs the walk
-     * compared, the roots included (the CLI's {@code node_tests}).
+     * compared, the roots included; one k-DOP overlap test each (the CLI's {@code node_tests}).
      */
     public long nodeTests;
-    /** k-DOP overlap tests: in {@link TreeQuery}'s walk one per visited node pair, so equal to {@link #nodeTests}. */
-    public long kdopTests;
     /** Triangle–triangle tests. */
     public long triangleTests;
     /** Triangle pairs skipped because one triangle has zero area. */
@@ -45,7 +43,7 @@ public final class CollisionResult {
         pairs = 0;
         segs = 0;
         segStart[0] = 0;
-        nodeTests = kdopTests = triangleTests = degenerateSkipped = exactPredicates = 0;
+        nodeTests = triangleTests = degenerateSkipped = exactPredicates = 0;
     }
 
     /** @return true if some pair intersects */

@@ -116,7 +116,7 @@ public final class TreeQuery {
         int nbv = bv.length / 3, nbt = b.tris.length / 3;
         boolean identity = isIdentity(m);
         if (!identity && !rootBoxesMayOverlap(a, b)) {
-            out.nodeTests = out.kdopTests = 1;
+            out.nodeTests = 1;
             return;
         }
         boolean refit = !identity && placement == Placement.REFIT;
@@ -305,7 +305,6 @@ public final class TreeQuery {
             }
         }
         out.nodeTests = tests;
-        out.kdopTests = tests;
         out.triangleTests = triTests;
         out.degenerateSkipped = degSkipped;
     }
