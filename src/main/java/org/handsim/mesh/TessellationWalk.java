@@ -244,38 +244,17 @@ public final class TessellationWalk {
                 if (any) shapes++;
                 continue;
             }
-            if (n instanceof Link) {
-                Node sg = ((Link) n).getSharedGroup();
-                if (sg != null) stack.push(new Frame(sg, m, part));
-                continue;
-            }
-            if (!(n instanceof Group)) continue; // lights, backgrounds, behaviours, ...
-            Group g = (Group) n;
-            if (grouping == Grouping.NAMED_PARTS && g.getName() != null) part = namedPart(g);
-            if (g instanceof TransformGroup) {
-                ((TransformGroup) g).getTransform(t3d);
-                t3d.get(m16);
-                m = compose(m, m16);
-            }
-            if (g instanceof Switch) {
-                Switch sw = (Switch) g;
-                int w = sw.getWhichChild();
-                int nc = sw.numChildren();
-                if (w == Switch.CHILD_NONE) continue;
-                if (w == Switch.CHILD_MASK) {
-                    java.util.BitSet mask = sw.getChildMask();
-                    for (int i = nc - 1; i >= 0; i--) if (mask.get(i)) stack.push(new Frame(sw.getChild(i), m, part));
-                    continue;
-                }
-                if (w != Switch.CHILD_ALL) {
-                    if (w >= 0 && w < nc) stack.push(new Frame(sw.getChild(w), m, part));
-                    continue;
+            if (n instanceof Group) {
+                Group g = (Group) n;
+                if (grouping == Grouping.NAMED_PARTS && g.getName() != null) part = namedPart(g);
+                if (g instanceof TransformGroup) {
+                    ((TransformGroup) g).getTransform(t3d);
+                    t3d.get(m16);
+                    m = compose(m, m16);
                 }
             }
-            for (int i = g.numChildren() - 1; i >= 0; i--) {
-                Node c = g.getChild(i);
-                if (c != null) stack.push(new Frame(c, m, part));
-            }
+            Node[] kids = children(n);
+            for (int i = kids.length - 1; i >= 0; i--) stack.push(new Frame(kids[i], m, part));
         }
         List<TriangleMesh> out = new ArrayList<>();
         List<Part> order = new ArrayList<>();
@@ -359,6 +338,15 @@ public final class TessellationWalk {
             for (int i = 0, k = s.numGeometries(); i < k; i++) f.sum = Math.min(HUGE, f.sum + triangles(s.getGeometry(i)));
             return new Node[0];
         }
+        return children(n);
+    }
+
+    /**
+     * The non-null children the walk visits below a node, in scene order: a Link's SharedGroup,
+     * a Switch's selected child(ren), any other Group's children; none for other nodes (lights,
+     * backgrounds, behaviours, ...). Shape3D is handled by the caller.
+     */
+    private static Node[] children(Node n) {
         if (n instanceof Link) {
             Node sg = ((Link) n).getSharedGroup();
             return sg == null ? new Node[0] : new Node[] {sg};
