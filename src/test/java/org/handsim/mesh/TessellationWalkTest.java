@@ -196,6 +196,15 @@ class TessellationWalkTest {
         assertEquals(1, new TessellationWalk().run(bg).shapes);
         sw.setWhichChild(Switch.CHILD_ALL);
         assertEquals(3, new TessellationWalk().run(bg).shapes);
+        assertEquals(6, TessellationWalk.expandedTriangles(bg), "the counting pass: three squares");
+        java.util.BitSet mask = new java.util.BitSet();
+        mask.set(0);
+        sw.setChildMask(mask);
+        sw.setWhichChild(Switch.CHILD_MASK);
+        TessellationWalk.Result masked = new TessellationWalk().run(bg);
+        assertEquals(2, masked.shapes, "mask {0}: the switch's own square plus the second Link");
+        assertEquals(0, masked.merged().bounds()[1][2], TOL, "the shifted child is masked out");
+        assertEquals(4, TessellationWalk.expandedTriangles(bg), "the counting pass: two squares");
     }
 
     @Test
