@@ -108,8 +108,17 @@ public final class RigidTransform {
      */
     public static void multiplyDh(double[] a, int ao, double theta, double d, double len, double alpha,
                                   double[] out, int oo) {
+        multiplyDh(a, ao, theta, d, len, Math.cos(alpha), Math.sin(alpha), out, oo);
+    }
+
+    /**
+     * As {@link #multiplyDh(double[], int, double, double, double, double, double[], int)} with
+     * the twist given as {@code cos α} and {@code sin α}, precomputed by callers whose twists are
+     * constant (allocation-free).
+     */
+    public static void multiplyDh(double[] a, int ao, double theta, double d, double len, double ca, double sa,
+                                  double[] out, int oo) {
         double ct = Math.cos(theta), st = Math.sin(theta);
-        double ca = Math.cos(alpha), sa = Math.sin(alpha);
         double c1x = -st * ca, c1y = ct * ca, c1z = sa;
         double c2x = st * sa, c2y = -ct * sa, c2z = ca;
         double c3x = len * ct, c3y = len * st, c3z = d;
