@@ -1,6 +1,7 @@
 package org.handsim.dynamics;
 
 import java.util.Locale;
+import org.handsim.math.Vec3;
 
 /**
  * The stability guard of a free (unactuated, frictionless) chain: after every step the state
@@ -68,12 +69,11 @@ public final class EnergyGuard {
 
     /** {@code Σ_j m_j·|g|·ρ_j}: no configuration has a potential energy below its negative, J. */
     static double potentialDepth(LinkChain c, double[] g) {
-        double gNorm = Math.sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        double gNorm = Vec3.norm(g);
         double reach = 0, sum = 0;
         for (int j = 0; j < c.links(); j++) {
             reach += Math.abs(c.dh(j).a()) + Math.abs(c.dh(j).d());
-            double[] r = c.link(j).com();
-            sum += c.link(j).mass() * gNorm * (reach + Math.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]));
+            sum += c.link(j).mass() * gNorm * (reach + Vec3.norm(c.link(j).com()));
         }
         return sum;
     }

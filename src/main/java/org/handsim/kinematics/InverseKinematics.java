@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.handsim.hand.FingerDescription;
 import org.handsim.hand.HandDescription;
+import org.handsim.math.Vec3;
 
 /**
  * Closed-form inverse kinematics of one finger (paper Section II.B, eqs 5–7), with joint
@@ -114,13 +115,13 @@ public final class InverseKinematics {
             if (b.withinLimits()) {
                 double[] j = b.joints();
                 double[] tip = fk.fingertip(j);
-                double err = dist(tip, target);
+                double err = Vec3.distance(tip, target);
                 if (err <= REACH_TOLERANCE_M) return new IkResult(true, j, tip, err, branches);
             }
         }
         double[] best = closest(px, py, pz, rho, psi);
         double[] tip = fk.fingertip(best);
-        double err = dist(tip, target);
+        double err = Vec3.distance(tip, target);
         return new IkResult(err <= REACH_TOLERANCE_M, best, tip, err, branches);
     }
 
@@ -259,11 +260,8 @@ public final class InverseKinematics {
         return w <= -Math.PI ? w + 2 * Math.PI : w;
     }
 
-    private static double dist(double[] a, double[] b) {
-        return Math.sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-    }
-
-    private static double[] checkTarget(double[] t) {
+    /** @throws IllegalArgumentException naming the coordinate, unless {@code t} is a finite 3-vector */
+    static double[] checkTarget(double[] t) {
         if (t == null || t.length != 3) throw new IllegalArgumentException("target must have 3 coordinates");
         for (int i = 0; i < 3; i++) {
             if (!Double.isFinite(t[i])) {
