@@ -33,7 +33,7 @@ public final class EnergyGuard {
 
     private final ChainDynamics dynamics;
     private final int dimension, n;
-    private final double[] g = new double[3], q, qd;
+    private final double[] g, q, qd;
     private final double initialEnergy, scale, bound;
     private double maxKinetic;
 
@@ -41,17 +41,15 @@ public final class EnergyGuard {
      * A guard for motion of {@code ode} (zero torque) from state {@code y0}.
      *
      * @param ode the free chain under gravity (its torque law must be {@link FingerDynamicsOde.Torques#ZERO}
-     *            for the bound to hold)
-     * @param g   gravity the ODE uses, base frame, m/s²
+     *            for the bound to hold); the guard uses the ODE's gravity
      * @param y0  the start state (q, q̇), rad and rad/s
      */
-    public EnergyGuard(FingerDynamicsOde ode, double[] g, double[] y0) {
-        Check.vec("g", g, 3);
+    public EnergyGuard(FingerDynamicsOde ode, double[] y0) {
         Check.vec("y0", y0, ode.dimension());
         dynamics = ode.dynamics();
         dimension = ode.dimension();
         n = ode.dof();
-        System.arraycopy(g, 0, this.g, 0, 3);
+        g = ode.gravity();
         for (int i = 0; i < dimension; i++) {
             if (!Double.isFinite(y0[i])) throw new IllegalArgumentException("y0[" + i + "] must be finite, got " + y0[i]);
         }

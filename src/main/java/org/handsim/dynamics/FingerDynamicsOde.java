@@ -55,6 +55,11 @@ public final class FingerDynamicsOde implements Ode {
         return n;
     }
 
+    /** @return gravity in the base frame, m/s² (a copy) */
+    public double[] gravity() {
+        return gravity.clone();
+    }
+
     /** @return the dynamics behind this ODE */
     public ChainDynamics dynamics() {
         return forward.dynamics();
