@@ -152,7 +152,7 @@ public final class SwingCommand implements Callable<Integer> {
             };
             long t0 = System.nanoTime();
             try {
-                result = FreeSwing.run(ode, g, in, y, dt, duration, sink, new ProgressBar(err, "handsim swing"));
+                result = FreeSwing.run(ode, in, y, dt, duration, sink, new ProgressBar(err, "handsim swing"));
             } catch (IntegrationStoppedException e) {
                 throw new CliError(CliError.NUMERIC, "handsim: swing " + e.getMessage() + hint(in, e) + "; no output written");
             } catch (UncheckedIOException e) {

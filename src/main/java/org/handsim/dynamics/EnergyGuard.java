@@ -1,6 +1,7 @@
 package org.handsim.dynamics;
 
 import java.util.Locale;
+import org.handsim.math.Vec3;
 
 /**
  * The stability guard of a free (unactuated, frictionless) chain: after every step the state
@@ -32,7 +33,7 @@ public final class EnergyGuard {
 
     private final ChainDynamics dynamics;
     private final int dimension, n;
-    private final double[] g = new double[3], q, qd;
+    private final double[] g, q, qd;
     private final double initialEnergy, scale, bound;
     private double maxKinetic;
 
@@ -40,17 +41,15 @@ public final class EnergyGuard {
      * A guard for motion of {@code ode} (zero torque) from state {@code y0}.
      *
      * @param ode the free chain under gravity (its torque law must be {@link FingerDynamicsOde.Torques#ZERO}
-     *            for the bound to hold)
-     * @param g   gravity the ODE uses, base frame, m/s²
+     *            for the bound to hold); the guard uses the ODE's gravity
      * @param y0  the start state (q, q̇), rad and rad/s
      */
-    public EnergyGuard(FingerDynamicsOde ode, double[] g, double[] y0) {
-        Check.vec("g", g, 3);
+    public EnergyGuard(FingerDynamicsOde ode, double[] y0) {
         Check.vec("y0", y0, ode.dimension());
         dynamics = ode.dynamics();
         dimension = ode.dimension();
         n = ode.dof();
-        System.arraycopy(g, 0, this.g, 0, 3);
+        g = ode.gravity();
         for (int i = 0; i < dimension; i++) {
             if (!Double.isFinite(y0[i])) throw new IllegalArgumentException("y0[" + i + "] must be finite, got " + y0[i]);
         }
@@ -68,12 +67,11 @@ public final class EnergyGuard {
 
     /** {@code Σ_j m_j·|g|·ρ_j}: no configuration has a potential energy below its negative, J. */
     static double potentialDepth(LinkChain c, double[] g) {
-        double gNorm = Math.sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        double gNorm = Vec3.norm(g);
         double reach = 0, sum = 0;
         for (int j = 0; j < c.links(); j++) {
             reach += Math.abs(c.dh(j).a()) + Math.abs(c.dh(j).d());
-            double[] r = c.link(j).com();
-            sum += c.link(j).mass() * gNorm * (reach + Math.sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]));
+            sum += c.link(j).mass() * gNorm * (reach + Vec3.norm(c.link(j).com()));
         }
         return sum;
     }

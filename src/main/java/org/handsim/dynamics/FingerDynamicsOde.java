@@ -24,7 +24,7 @@ public final class FingerDynamicsOde implements Ode {
     private final ForwardDynamics forward;
     private final int n;
     private final double[] gravity = new double[3];
-    private Torques torques;
+    private final Torques torques;
     private final double[] q, qd, tau, qdd;
 
     /**
@@ -55,21 +55,14 @@ public final class FingerDynamicsOde implements Ode {
         return n;
     }
 
+    /** @return gravity in the base frame, m/s² (a copy) */
+    public double[] gravity() {
+        return gravity.clone();
+    }
+
     /** @return the dynamics behind this ODE */
     public ChainDynamics dynamics() {
         return forward.dynamics();
-    }
-
-    /** Replaces gravity (m/s², base frame), e.g. when the hand turns. */
-    public void setGravity(double[] g) {
-        Check.vec("g", g, 3);
-        System.arraycopy(g, 0, gravity, 0, 3);
-    }
-
-    /** Replaces the torque law. */
-    public void setTorques(Torques torques) {
-        if (torques == null) throw new IllegalArgumentException("torques must not be null (use Torques.ZERO)");
-        this.torques = torques;
     }
 
     @Override

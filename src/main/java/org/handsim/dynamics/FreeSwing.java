@@ -52,8 +52,7 @@ public final class FreeSwing {
     /**
      * Integrates the free finger.
      *
-     * @param ode        the finger under zero torque ({@link FingerDynamicsOde.Torques#ZERO}) and gravity g
-     * @param g          the ODE's gravity, base frame, m/s² (for the guard's energy scale)
+     * @param ode        the finger under zero torque ({@link FingerDynamicsOde.Torques#ZERO}) and gravity
      * @param integrator built for {@code ode.dimension()}
      * @param y          start state (q, q̇) of the active joints; advanced in place to the last accepted state
      * @param dt         output step, s
@@ -62,13 +61,13 @@ public final class FreeSwing {
      * @param progress   told the fraction done about a hundred times (may be null)
      * @throws IntegrationStoppedException when the guard stops the run (y holds the last accepted state)
      */
-    public static Result run(FingerDynamicsOde ode, double[] g, Integrator integrator, double[] y, double dt, double duration,
+    public static Result run(FingerDynamicsOde ode, Integrator integrator, double[] y, double dt, double duration,
                              Sink sink, DoubleConsumer progress) {
         if (integrator.dimension() != ode.dimension()) {
             throw new IllegalArgumentException("integrator dimension " + integrator.dimension() + " != ode dimension " + ode.dimension());
         }
         long steps = steps(dt, duration);
-        EnergyGuard guard = new EnergyGuard(ode, g, y);
+        EnergyGuard guard = new EnergyGuard(ode, y);
         double e0 = guard.initialEnergy();
         if (sink != null) sink.accept(0, 0.0, y, e0);
         int n = ode.dimension();

@@ -98,15 +98,15 @@ public final class HandDynamics {
     public void inverseDynamics(int k, double[] q, double[] qd, double[] qdd, double[] g, double[] tauOut) {
         ChainDynamics d = finger(k);
         LinkChain c = d.chain();
-        int i = k - 1;
+        Check.vec("tauOut", tauOut, 3);   // the chain would allocate a new one for null
+        if (c.dof() == 3) {
+            d.inverseDynamics(q, qd, qdd, g, tauOut);   // checks q, qd, qdd and g itself
+            return;
+        }
         Check.vec("q", q, 3);
         Check.vec("qd", qd, 3);
         Check.vec("qdd", qdd, 3);
-        Check.vec("tauOut", tauOut, 3);
-        if (c.dof() == 3) {
-            d.inverseDynamics(q, qd, qdd, g, tauOut);
-            return;
-        }
+        int i = k - 1;
         for (int j = 0; j < 3; j++) {
             int p = c.dofOfLink(j);
             if (p >= 0) {

@@ -270,7 +270,7 @@ public final class LagrangeEuler implements ChainDynamics {
         Check.vec("q", q, dof);
         for (int j = 0, p = 0; j < n; j++) {
             double qj = chain.isActive(j) ? q[p++] : fixedQ[j];
-            dhInto(qj + dhOffset[j], dhD[j], dhA[j], dhCosAlpha[j], dhSinAlpha[j], link);
+            RigidTransform.dhInto(qj + dhOffset[j], dhD[j], dhA[j], dhCosAlpha[j], dhSinAlpha[j], link, 0);
             RigidTransform.multiply(tf, 12 * j, link, 0, tf, 12 * (j + 1));
         }
         for (int ip = 0; ip < dof; ip++) {
@@ -385,26 +385,6 @@ public final class LagrangeEuler implements ChainDynamics {
             }
             c[ip] = -s;
         }
-    }
-
-    /**
-     * The DH link transform {@code Rz(θ)·Tz(d)·Tx(a)·Rx(α)}, as {@link RigidTransform#dhInto}
-     * but with cos α and sin α precomputed (two trigonometric calls per link instead of four).
-     */
-    private static void dhInto(double theta, double d, double a, double ca, double sa, double[] out) {
-        double ct = Math.cos(theta), st = Math.sin(theta);
-        out[0] = ct;
-        out[1] = -st * ca;
-        out[2] = st * sa;
-        out[3] = a * ct;
-        out[4] = st;
-        out[5] = ct * ca;
-        out[6] = -ct * sa;
-        out[7] = a * st;
-        out[8] = 0;
-        out[9] = sa;
-        out[10] = ca;
-        out[11] = d;
     }
 
     /** Writes z × v into column slot (out[o], out[o+4], out[o+8]) of a 3×4 matrix. */

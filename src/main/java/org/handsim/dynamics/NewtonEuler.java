@@ -237,21 +237,7 @@ public final class NewtonEuler implements ChainDynamics {
         Check.vec("q", q, dof);
         for (int j = 0, p = 0; j < n; j++) {
             double qj = active[j] ? q[p++] : fixedQ[j];
-            // RigidTransform.dhInto with cos α, sin α precomputed: Rz(θ)·Tz(d)·Tx(a)·Rx(α)
-            double th = qj + offset[j], ct = Math.cos(th), st = Math.sin(th), ca = cosAlpha[j], sa = sinAlpha[j];
-            int o = 12 * j;
-            tr[o] = ct;
-            tr[o + 1] = -st * ca;
-            tr[o + 2] = st * sa;
-            tr[o + 3] = a[j] * ct;
-            tr[o + 4] = st;
-            tr[o + 5] = ct * ca;
-            tr[o + 6] = -ct * sa;
-            tr[o + 7] = a[j] * st;
-            tr[o + 8] = 0;
-            tr[o + 9] = sa;
-            tr[o + 10] = ca;
-            tr[o + 11] = d[j];
+            RigidTransform.dhInto(qj + offset[j], d[j], a[j], cosAlpha[j], sinAlpha[j], tr, 12 * j);
         }
     }
 

@@ -36,12 +36,13 @@ public final class HandDescription {
     private final double[] theta2Limits, theta3Limits, spreadLimits;
     private final double tauBreak, kClutch;
 
+    /** Reads and validates {@code root}; a {@link Json.JsonException} thrown here becomes a {@link HandDescriptionException} in {@link #parse}. */
     private HandDescription(JsonObject root) {
         name = root.string("name");
         JsonObject links = root.object("links");
-        a1 = positiveLength(links, "A1_m");
-        a2 = positiveLength(links, "A2_m");
-        a3 = positiveLength(links, "A3_m");
+        a1 = links.positive("A1_m");
+        a2 = links.positive("A2_m");
+        a3 = links.positive("A3_m");
         double[] alpha = {rad(links.number("alpha1_deg")), rad(links.number("alpha2_deg")), rad(links.number("alpha3_deg"))};
         double[] d = {links.number("d1_m"), links.number("d2_m"), links.number("d3_m")};
         double phi2 = rad(links.number("phi2_deg"));
@@ -60,8 +61,8 @@ public final class HandDescription {
         outerCountsPerDeg = tr.positive("outer_counts_per_deg");
         fingerCountsMax = tr.integer("finger_counts_max");
         spreadCountsMax = tr.integer("spread_counts_max");
-        if (fingerCountsMax <= 0) throw new HandDescriptionException(tr.error("finger_counts_max", "must be > 0").getMessage());
-        if (spreadCountsMax <= 0) throw new HandDescriptionException(tr.error("spread_counts_max", "must be > 0").getMessage());
+        if (fingerCountsMax <= 0) throw tr.error("finger_counts_max", "must be > 0");
+        if (spreadCountsMax <= 0) throw tr.error("spread_counts_max", "must be > 0");
 
         JsonObject lim = root.object("joint_limits_deg");
         theta2Limits = range(lim, "theta2");
@@ -69,19 +70,19 @@ public final class HandDescription {
         spreadLimits = range(lim, "spread");
 
         JsonObject mp = root.object("mass_properties");
-        if (mp.list("links").size() != 3) throw new HandDescriptionException(mp.error("links", "must list exactly 3 links").getMessage());
+        if (mp.list("links").size() != 3) throw mp.error("links", "must list exactly 3 links");
         LinkInertia[] inertias = new LinkInertia[3];
         for (int j = 0; j < 3; j++) inertias[j] = linkInertia(mp.objectAt("links", j));
 
         int nf = root.list("fingers").size();
-        if (nf != 3) throw new HandDescriptionException(root.error("fingers", "must list exactly 3 fingers, got " + nf).getMessage());
+        if (nf != 3) throw root.error("fingers", "must list exactly 3 fingers, got " + nf);
         fingers = new FingerDescription[3];
         for (int i = 0; i < 3; i++) {
             JsonObject f = root.objectAt("fingers", i);
             int k = f.integer("finger");
-            if (k != i + 1) throw new HandDescriptionException(f.error("finger", "must be " + (i + 1) + ", got " + k).getMessage());
+            if (k != i + 1) throw f.error("finger", "must be " + (i + 1) + ", got " + k);
             int rTable = f.integer("r_table1");
-            if (rTable != 0 && rTable != 1) throw new HandDescriptionException(f.error("r_table1", "must be 0 or 1, got " + rTable).getMessage());
+            if (rTable != 0 && rTable != 1) throw f.error("r_table1", "must be 0 or 1, got " + rTable);
             double rPalm = f.number("r_palm");
             double jPalm = f.number("j_palm");
             // BH8 manual Table 9: spread axis at x = r*Aw, height Dw, base turned by -(pi/2)*j about z.
@@ -89,7 +90,7 @@ public final class HandDescription {
                 .compose(RigidTransform.rotZ(-Math.PI / 2 * jPalm));
             double spreadPerCount = rad(f.number("spread_deg_per_count"));
             if (rTable == 0 && spreadPerCount != 0) {
-                throw new HandDescriptionException(f.error("spread_deg_per_count", "must be 0 for a finger without spread (r_table1 = 0)").getMessage());
+                throw f.error("spread_deg_per_count", "must be 0 for a finger without spread (r_table1 = 0)");
             }
             fingers[i] = new FingerDescription(k, dh, base, rTable == 1, spreadPerCount, inertias);
         }
@@ -136,23 +137,15 @@ public final class HandDescription {
         return Math.toRadians(deg);
     }
 
-    private static double positiveLength(JsonObject o, String field) {
-        try {
-            return o.positive(field);
-        } catch (Json.JsonException e) {
-            throw new HandDescriptionException(e.getMessage());
-        }
-    }
-
     private static double[] range(JsonObject o, String field) {
         double[] r = o.numbers(field, 2);
-        if (!(r[0] < r[1])) throw new HandDescriptionException(o.error(field, "lower limit must be below the upper, got " + r[0] + ", " + r[1]).getMessage());
+        if (!(r[0] < r[1])) throw o.error(field, "lower limit must be below the upper, got " + r[0] + ", " + r[1]);
         return new double[] {rad(r[0]), rad(r[1])};
     }
 
     private static LinkInertia linkInertia(JsonObject l) {
         double m = l.number("mass_kg");
-        if (!(m > 0)) throw new HandDescriptionException(l.error("mass_kg", "must be > 0, got " + m).getMessage());
+        if (!(m > 0)) throw l.error("mass_kg", "must be > 0, got " + m);
         double[] com = l.numbers("com_m", 3);
         JsonObject in = l.object("inertia_kgm2");
         double[] t = {in.number("xx"), in.number("xy"), in.number("xz"), in.number("yy"), in.number("yz"), in.number("zz")};
@@ -161,8 +154,8 @@ public final class HandDescription {
         double m2 = t[0] * t[3] - t[1] * t[1];
         double m3 = t[0] * (t[3] * t[5] - t[4] * t[4]) - t[1] * (t[1] * t[5] - t[4] * t[2]) + t[2] * (t[1] * t[4] - t[3] * t[2]);
         if (!(m1 > 0 && m2 > 0 && m3 > 0)) {
-            throw new HandDescriptionException(l.error("inertia_kgm2", "is not positive definite (leading minors "
-                + m1 + ", " + m2 + ", " + m3 + ")").getMessage());
+            throw l.error("inertia_kgm2", "is not positive definite (leading minors "
+                + m1 + ", " + m2 + ", " + m3 + ")");
         }
         return new LinkInertia(m, com, t);
     }

@@ -15,15 +15,6 @@ public record LinkInertia(double mass, double[] com, double[] inertia) {
         inertia = inertia.clone();
     }
 
-    /** @return the 3×3 inertia matrix about the centre of mass (row-major, a new array). */
-    public double[][] inertiaMatrix() {
-        double[] i = inertia;
-        return new double[][] {
-            {i[XX], i[XY], i[XZ]},
-            {i[XY], i[YY], i[YZ]},
-            {i[XZ], i[YZ], i[ZZ]}};
-    }
-
     @Override
     public double[] com() { return com.clone(); }
 

@@ -2,6 +2,7 @@ package org.handsim.kinematics;
 
 import org.handsim.hand.FingerDescription;
 import org.handsim.hand.HandDescription;
+import org.handsim.math.Vec3;
 
 /**
  * The motor counts whose fingertip comes closest to a target, for a FREE finger. Because one
@@ -44,9 +45,7 @@ public final class CoupledReach {
 
     /** Closest counts for a target in {k0} (metres). */
     public Result closest(double[] target) {
-        for (int i = 0; i < 3; i++) {
-            if (!Double.isFinite(target[i])) throw new IllegalArgumentException("target coordinate " + "xyz".charAt(i) + " = " + target[i] + " is not finite");
-        }
+        InverseKinematics.checkTarget(target);
         double px = target[0], py = target[1], pz = target[2];
         double rho = Math.hypot(px, py);
         double psi = rho == 0 ? 0 : Math.atan2(py, px);
@@ -86,7 +85,7 @@ public final class CoupledReach {
         }
         double[] joints = transmission.joints(finger.finger(), bestQ, bestQ4, null);
         double[] tip = fk.fingertip(joints);
-        double err = Math.sqrt((tip[0] - px) * (tip[0] - px) + (tip[1] - py) * (tip[1] - py) + (tip[2] - pz) * (tip[2] - pz));
+        double err = Vec3.distance(tip, target);
         return new Result(bestQ, bestQ4, joints, tip, err);
     }
 

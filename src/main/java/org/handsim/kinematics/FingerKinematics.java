@@ -26,6 +26,7 @@ public final class FingerKinematics {
     private final FingerDescription finger;
     private final DhRow r1, r2, r3;
     private final double[] base = new double[12];
+    private final double ca1, sa1, ca2, sa2, ca3, sa3;   // cos and sin of the constant twists
 
     public FingerKinematics(FingerDescription finger) {
         this.finger = finger;
@@ -33,6 +34,12 @@ public final class FingerKinematics {
         this.r2 = finger.dh(1);
         this.r3 = finger.dh(2);
         finger.baseInPalm().copyTo(base, 0);
+        ca1 = Math.cos(r1.alpha());
+        sa1 = Math.sin(r1.alpha());
+        ca2 = Math.cos(r2.alpha());
+        sa2 = Math.sin(r2.alpha());
+        ca3 = Math.cos(r3.alpha());
+        sa3 = Math.sin(r3.alpha());
     }
 
     /** Finger k of the BarrettHand. */
@@ -55,9 +62,8 @@ public final class FingerKinematics {
         out[0] = 1; out[1] = 0; out[2] = 0; out[3] = 0;
         out[4] = 0; out[5] = 1; out[6] = 0; out[7] = 0;
         out[8] = 0; out[9] = 0; out[10] = 1; out[11] = 0;
-        RigidTransform.dhInto(joints[0] + r1.thetaOffset(), r1.d(), r1.a(), r1.alpha(), out, 12);
-        RigidTransform.multiplyDh(out, 12, joints[1] + r2.thetaOffset(), r2.d(), r2.a(), r2.alpha(), out, 24);
-        RigidTransform.multiplyDh(out, 24, joints[2] + r3.thetaOffset(), r3.d(), r3.a(), r3.alpha(), out, 36);
+        RigidTransform.dhInto(joints[0] + r1.thetaOffset(), r1.d(), r1.a(), ca1, sa1, out, 12);
+        appendLinks2And3(joints, out);
     }
 
     /**
@@ -65,11 +71,7 @@ public final class FingerKinematics {
      * (allocation-free: {k0} is the base placement, then each DH link is appended).
      */
     public void framesInPalm(double[] joints, double[] out) {
-        checkJoints(joints);
-        System.arraycopy(base, 0, out, 0, 12);
-        RigidTransform.multiplyDh(out, 0, joints[0] + r1.thetaOffset(), r1.d(), r1.a(), r1.alpha(), out, 12);
-        RigidTransform.multiplyDh(out, 12, joints[1] + r2.thetaOffset(), r2.d(), r2.a(), r2.alpha(), out, 24);
-        RigidTransform.multiplyDh(out, 24, joints[2] + r3.thetaOffset(), r3.d(), r3.a(), r3.alpha(), out, 36);
+        framesFrom(base, joints, out);
     }
 
     /**
@@ -79,9 +81,14 @@ public final class FingerKinematics {
     public void framesFrom(double[] base, double[] joints, double[] out) {
         checkJoints(joints);
         System.arraycopy(base, 0, out, 0, 12);
-        RigidTransform.multiplyDh(out, 0, joints[0] + r1.thetaOffset(), r1.d(), r1.a(), r1.alpha(), out, 12);
-        RigidTransform.multiplyDh(out, 12, joints[1] + r2.thetaOffset(), r2.d(), r2.a(), r2.alpha(), out, 24);
-        RigidTransform.multiplyDh(out, 24, joints[2] + r3.thetaOffset(), r3.d(), r3.a(), r3.alpha(), out, 36);
+        RigidTransform.multiplyDh(out, 0, joints[0] + r1.thetaOffset(), r1.d(), r1.a(), ca1, sa1, out, 12);
+        appendLinks2And3(joints, out);
+    }
+
+    /** Frames {k2}, {k3} at out[24..47] from {k1} at out[12..23]. */
+    private void appendLinks2And3(double[] joints, double[] out) {
+        RigidTransform.multiplyDh(out, 12, joints[1] + r2.thetaOffset(), r2.d(), r2.a(), ca2, sa2, out, 24);
+        RigidTransform.multiplyDh(out, 24, joints[2] + r3.thetaOffset(), r3.d(), r3.a(), ca3, sa3, out, 36);
     }
 
     /** The fingertip (origin of {k3}) in {k0}, metres (closed form, allocation-free). */

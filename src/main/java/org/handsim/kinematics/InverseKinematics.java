@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.handsim.hand.FingerDescription;
 import org.handsim.hand.HandDescription;
+import org.handsim.math.Vec3;
 
 /**
  * Closed-form inverse kinematics of one finger (paper Section II.B, eqs 5–7), with joint
@@ -114,30 +115,41 @@ public final class InverseKinematics {
             if (b.withinLimits()) {
                 double[] j = b.joints();
                 double[] tip = fk.fingertip(j);
-                double err = dist(tip, target);
+                double err = Vec3.distance(tip, target);
                 if (err <= REACH_TOLERANCE_M) return new IkResult(true, j, tip, err, branches);
             }
         }
         double[] best = closest(px, py, pz, rho, psi);
         double[] tip = fk.fingertip(best);
-        double err = dist(tip, target);
+        double err = Vec3.distance(tip, target);
         return new IkResult(err <= REACH_TOLERANCE_M, best, tip, err, branches);
     }
 
     /** Adds the elbow branches of eqs (6)–(7) for the plane at θk1 with signed radius r. */
     private void addBranches(List<IkSolution> out, double theta1, double r, double z) {
-        double u = r - a1;
-        double c = (u * u + z * z - a2 * a2 - a3 * a3) / (2 * a2 * a3);
-        if (Math.abs(c) > 1 + ACOS_SLACK) return;
-        double phi3abs = Math.acos(Math.max(-1, Math.min(1, c)));
+        double phi3abs = elbowAbs(r, z);
+        if (Double.isNaN(phi3abs)) return;
         for (int sign = 1; sign >= -1; sign -= 2) {
-            double p3 = sign * phi3abs;
-            double p2 = Math.atan2(z, u) - Math.atan2(a3 * Math.sin(p3), a2 + a3 * Math.cos(p3));
-            double[] j = {theta1, wrap(p2 - phi2), wrap(p3 - phi3)};
+            double[] j = {theta1, 0, 0};
+            elbowJoints(r, z, sign * phi3abs, j, 1);
             boolean ok = clampIfClose(j);
             out.add(new IkSolution(j, ok));
             if (phi3abs == 0) break; // the two branches coincide
         }
+    }
+
+    /** |φ3| of eq (6) for the point (r, z) of the finger plane (r signed), or NaN when no elbow angle reaches it. */
+    private double elbowAbs(double r, double z) {
+        double u = r - a1;
+        double c = (u * u + z * z - a2 * a2 - a3 * a3) / (2 * a2 * a3);
+        return Math.abs(c) > 1 + ACOS_SLACK ? Double.NaN : Math.acos(Math.max(-1, Math.min(1, c)));
+    }
+
+    /** The joint angles {θk2, θk3} of the elbow branch φ3 = p3 (eq 7) into out[off], out[off + 1]. */
+    private void elbowJoints(double r, double z, double p3, double[] out, int off) {
+        double p2 = Math.atan2(z, r - a1) - Math.atan2(a3 * Math.sin(p3), a2 + a3 * Math.cos(p3));
+        out[off] = wrap(p2 - phi2);
+        out[off + 1] = wrap(p3 - phi3);
     }
 
     /** Snaps joints lying within LIMIT_SLACK outside a limit onto it; returns true if all within. */
@@ -187,14 +199,11 @@ public final class InverseKinematics {
      * distance (0 when inside W).
      */
     double planarClosest(double x, double z, double[] out) {
-        double u = x - a1;
-        double c = (u * u + z * z - a2 * a2 - a3 * a3) / (2 * a2 * a3);
-        if (Math.abs(c) <= 1 + ACOS_SLACK) {
-            double phi3abs = Math.acos(Math.max(-1, Math.min(1, c)));
+        double phi3abs = elbowAbs(x, z);
+        if (!Double.isNaN(phi3abs)) {
             for (int sign = 1; sign >= -1; sign -= 2) {
-                double p3 = sign * phi3abs;
-                double p2 = Math.atan2(z, u) - Math.atan2(a3 * Math.sin(p3), a2 + a3 * Math.cos(p3));
-                double t2 = wrap(p2 - phi2), t3 = wrap(p3 - phi3);
+                elbowJoints(x, z, sign * phi3abs, out, 0);
+                double t2 = out[0], t3 = out[1];
                 if (t2 >= t2lo - LIMIT_SLACK && t2 <= t2hi + LIMIT_SLACK && t3 >= t3lo - LIMIT_SLACK && t3 <= t3hi + LIMIT_SLACK) {
                     out[0] = Math.max(t2lo, Math.min(t2hi, t2));
                     out[1] = Math.max(t3lo, Math.min(t3hi, t3));
@@ -259,11 +268,8 @@ public final class InverseKinematics {
         return w <= -Math.PI ? w + 2 * Math.PI : w;
     }
 
-    private static double dist(double[] a, double[] b) {
-        return Math.sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-    }
-
-    private static double[] checkTarget(double[] t) {
+    /** @throws IllegalArgumentException naming the coordinate, unless {@code t} is a finite 3-vector */
+    static double[] checkTarget(double[] t) {
         if (t == null || t.length != 3) throw new IllegalArgumentException("target must have 3 coordinates");
         for (int i = 0; i < 3; i++) {
             if (!Double.isFinite(t[i])) {

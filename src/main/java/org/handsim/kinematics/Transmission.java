@@ -21,12 +21,9 @@ import org.handsim.hand.HandDescription;
  */
 public final class Transmission {
     private final HandDescription hand;
-    private final double innerDegPerCount, outerDegPerCount;
 
     public Transmission(HandDescription hand) {
         this.hand = hand;
-        this.innerDegPerCount = 1.0 / hand.innerCountsPerDeg();
-        this.outerDegPerCount = 1.0 / hand.outerCountsPerDeg();
     }
 
     /** The BarrettHand's transmission. */
@@ -87,7 +84,7 @@ public final class Transmission {
 
     /** dθk2/dq_Mk in rad/count (eq 3). */
     public double innerRadPerCount() {
-        return Math.toRadians(innerDegPerCount);
+        return Math.toRadians(1.0 / hand.innerCountsPerDeg());
     }
 
     /** θk1 in radians for the spread motor's q_M4 counts, eqs (1), (2); 0 for finger 3. */

@@ -87,8 +87,16 @@ public final class RigidTransform {
 
     /** Writes the DH transform's 12 values into {@code out[off..off+11]} (allocation-free). */
     public static void dhInto(double theta, double d, double a, double alpha, double[] out, int off) {
+        dhInto(theta, d, a, Math.cos(alpha), Math.sin(alpha), out, off);
+    }
+
+    /**
+     * As {@link #dhInto(double, double, double, double, double[], int)} with the twist given as
+     * {@code cos α} and {@code sin α}, precomputed by callers whose twists are constant (two
+     * trigonometric calls per link instead of four; allocation-free).
+     */
+    public static void dhInto(double theta, double d, double a, double ca, double sa, double[] out, int off) {
         double ct = Math.cos(theta), st = Math.sin(theta);
-        double ca = Math.cos(alpha), sa = Math.sin(alpha);
         out[off] = ct;      out[off + 1] = -st * ca; out[off + 2] = st * sa;  out[off + 3] = a * ct;
         out[off + 4] = st;  out[off + 5] = ct * ca;  out[off + 6] = -ct * sa; out[off + 7] = a * st;
         out[off + 8] = 0;   out[off + 9] = sa;       out[off + 10] = ca;      out[off + 11] = d;
@@ -100,8 +108,17 @@ public final class RigidTransform {
      */
     public static void multiplyDh(double[] a, int ao, double theta, double d, double len, double alpha,
                                   double[] out, int oo) {
+        multiplyDh(a, ao, theta, d, len, Math.cos(alpha), Math.sin(alpha), out, oo);
+    }
+
+    /**
+     * As {@link #multiplyDh(double[], int, double, double, double, double, double[], int)} with
+     * the twist given as {@code cos α} and {@code sin α}, precomputed by callers whose twists are
+     * constant (allocation-free).
+     */
+    public static void multiplyDh(double[] a, int ao, double theta, double d, double len, double ca, double sa,
+                                  double[] out, int oo) {
         double ct = Math.cos(theta), st = Math.sin(theta);
-        double ca = Math.cos(alpha), sa = Math.sin(alpha);
         double c1x = -st * ca, c1y = ct * ca, c1z = sa;
         double c2x = st * sa, c2y = -ct * sa, c2z = ca;
         double c3x = len * ct, c3y = len * st, c3z = d;

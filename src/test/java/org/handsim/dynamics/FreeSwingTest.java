@@ -34,11 +34,11 @@ class FreeSwingTest {
             int n = ode.dof();
             double[] y = n == 3 ? new double[] {0.2, 0.5, 0.4, 1.5, -2, 3} : new double[] {0.5, 0.4, -2, 3};
             double e0 = ode.energy(y);
-            EnergyGuard guard = new EnergyGuard(ode, G, y);
+            EnergyGuard guard = new EnergyGuard(ode, y);
             double[] worst = {0, Math.abs(e0)}; // worst |E − E0|, scale
             double[] q = new double[n], qd = new double[n];
             long[] count = {0};
-            FreeSwing.Result r = FreeSwing.run(ode, G, new RungeKutta4(2 * n), y, 1e-4, 1.0, (step, t, s, e) -> {
+            FreeSwing.Result r = FreeSwing.run(ode, new RungeKutta4(2 * n), y, 1e-4, 1.0, (step, t, s, e) -> {
                 assertEquals(count[0]++, step);
                 assertEquals(Math.min(step * 1e-4, 1.0), t, 1e-15);
                 worst[0] = Math.max(worst[0], Math.abs(e - e0));
@@ -68,11 +68,11 @@ class FreeSwingTest {
     void explicitEulerAtALargeStepIsStoppedWhereTheEnergyPassesTheBound() {
         FingerDynamicsOde ode = ode(1, G);
         double[] y = new double[6];
-        EnergyGuard guard = new EnergyGuard(ode, G, y);
+        EnergyGuard guard = new EnergyGuard(ode, y);
         assertEquals(0.5 * guard.scale() + EnergyGuard.FLOOR_J, guard.bound());
         List<Double> energies = new ArrayList<>();
         IntegrationStoppedException e = assertThrows(IntegrationStoppedException.class,
-            () -> FreeSwing.run(ode, G, new ExplicitEuler(6), y, 0.05, 1.0, (step, t, s, en) -> energies.add(en), null));
+            () -> FreeSwing.run(ode, new ExplicitEuler(6), y, 0.05, 1.0, (step, t, s, en) -> energies.add(en), null));
         assertEquals(IntegrationStoppedException.Reason.ENERGY_GROWTH, e.reason());
         assertEquals(10, e.step());
         assertEquals(0.5, e.time(), 1e-15);
@@ -89,9 +89,9 @@ class FreeSwingTest {
     @Test
     void rk4AtTheSameStepIsNotStopped() {
         FingerDynamicsOde ode = ode(1, G);
-        FreeSwing.Result r = FreeSwing.run(ode, G, new RungeKutta4(6), new double[6], 0.05, 1.0, null, null);
+        FreeSwing.Result r = FreeSwing.run(ode, new RungeKutta4(6), new double[6], 0.05, 1.0, null, null);
         assertEquals(20, r.steps());
-        assertTrue(r.worstGrowth() < 0.05 * new EnergyGuard(ode, G, new double[6]).scale(), "growth " + r.worstGrowth());
+        assertTrue(r.worstGrowth() < 0.05 * new EnergyGuard(ode, new double[6]).scale(), "growth " + r.worstGrowth());
     }
 
     private static Integrator faulty(boolean nan) {
@@ -116,7 +116,7 @@ class FreeSwingTest {
         FingerDynamicsOde ode = ode(1, G);
         double[] y = {0.1, 0.2, 0.3, 0, 0, 0};
         IntegrationStoppedException nan = assertThrows(IntegrationStoppedException.class,
-            () -> FreeSwing.run(ode, G, faulty(true), y, 0.01, 1.0, null, null));
+            () -> FreeSwing.run(ode, faulty(true), y, 0.01, 1.0, null, null));
         assertEquals(IntegrationStoppedException.Reason.NON_FINITE, nan.reason());
         assertEquals(3, nan.step());
         assertEquals(0.03, nan.time(), 1e-15);
@@ -124,7 +124,7 @@ class FreeSwingTest {
         assertTrue(nan.getMessage().contains("qd2"), nan.getMessage());
         for (double v : y) assertFalse(Double.isNaN(v), "the NaN state was not kept");
         IntegrationStoppedException failed = assertThrows(IntegrationStoppedException.class,
-            () -> FreeSwing.run(ode, G, faulty(false), new double[] {0.1, 0.2, 0.3, 0, 0, 0}, 0.01, 1.0, null, null));
+            () -> FreeSwing.run(ode, faulty(false), new double[] {0.1, 0.2, 0.3, 0, 0, 0}, 0.01, 1.0, null, null));
         assertEquals(IntegrationStoppedException.Reason.STEP_FAILED, failed.reason());
         assertEquals(3, failed.step());
         assertTrue(failed.getMessage().startsWith("stopped at step 3 (t = 0.03 s): faulty could not take the step"), failed.getMessage());
@@ -136,7 +136,7 @@ class FreeSwingTest {
         assertEquals(1000, FreeSwing.steps(0.001, 1.0));
         assertEquals(3, FreeSwing.steps(0.1, 0.3));
         List<Double> times = new ArrayList<>();
-        FreeSwing.run(ode(2, G), G, new RungeKutta4(6), new double[6], 0.3, 1.0, (s, t, y, e) -> times.add(t), null);
+        FreeSwing.run(ode(2, G), new RungeKutta4(6), new double[6], 0.3, 1.0, (s, t, y, e) -> times.add(t), null);
         assertEquals(List.of(0.0, 0.3, 0.6, 0.8999999999999999, 1.0), times);
         assertThrows(IllegalArgumentException.class, () -> FreeSwing.steps(0, 1));
     }
@@ -147,8 +147,8 @@ class FreeSwingTest {
         double[] g0 = new double[3];
         FingerDynamicsOde ode = ode(1, g0);
         double[] y = {0.3, 0.4, 0.5, 0, 0, 0};
-        assertEquals(0.0, new EnergyGuard(ode, g0, y).scale());
-        FreeSwing.Result r = FreeSwing.run(ode, g0, new ExplicitEuler(6), y, 0.01, 1.0, null, null);
+        assertEquals(0.0, new EnergyGuard(ode, y).scale());
+        FreeSwing.Result r = FreeSwing.run(ode, new ExplicitEuler(6), y, 0.01, 1.0, null, null);
         assertTrue(r.finalEnergy() == 0, "energy " + r.finalEnergy());
         assertEquals(0.3, y[0]);
     }

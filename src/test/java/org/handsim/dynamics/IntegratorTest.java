@@ -183,6 +183,38 @@ class IntegratorTest {
         }
     }
 
+    /**
+     * A failure after accepted internal steps: Dormand–Prince must restore the state of the
+     * call's start, not keep the part of the interval it had covered (f undefined from
+     * t = 0.08; the call covers 0.01 to 0.11 and accepts a step before it reaches 0.08).
+     */
+    @Test
+    void dormandPrinceRollsBackItsAcceptedInternalStepsWhenALaterOneFails() {
+        Ode failing = new Ode() {
+            @Override
+            public int dimension() {
+                return 2;
+            }
+
+            @Override
+            public boolean derivative(double t, double[] y, double[] yDot) {
+                yDot[0] = y[1];
+                yDot[1] = -y[0];
+                return t < 0.08;
+            }
+        };
+        DormandPrince54 dp = new DormandPrince54(2, 1e-8, 1e-8);
+        double[] y = {1, 0.5};
+        assertTrue(dp.step(failing, 0, y, 0.01));
+        double[] before = y.clone();
+        long accepted = dp.acceptedSteps();
+        assertFalse(dp.step(failing, 0.01, y, 0.1));
+        assertTrue(dp.acceptedSteps() > accepted, "an internal step was accepted before the failure");
+        assertArrayEquals(before, y, "state of the call's start restored");
+        // and the remembered stage is not reused: a fresh call from there succeeds on a defined interval
+        assertTrue(dp.step(failing, 0.01, y, 0.05));
+    }
+
     @Test
     void misuseIsAnException() {
         RungeKutta4 rk = new RungeKutta4(2);
