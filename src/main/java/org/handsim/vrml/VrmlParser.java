@@ -343,15 +343,26 @@ final class VrmlParser {
         throw lx.error("expected TRUE or FALSE for " + what(field, node, FieldType.SFBool) + ", found " + lx.describe());
     }
 
+    /**
+     * In a list whose '[' is at {@code open}: true if an element follows, false (the ']'
+     * consumed) at its end; an error if the file ends first.
+     */
+    private boolean listContinues(int open, String what) {
+        int c = lx.skip();
+        if (c == ']') {
+            lx.pos++;
+            return false;
+        }
+        if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        return true;
+    }
+
     private int[] mfInt(String what) {
         int open = skipPos();
         if (!lx.accept('[')) return new int[] {lx.readInt(what)};
         int[] a = new int[16];
         int n = 0;
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             if (n == a.length) a = Arrays.copyOf(a, n * 2);
             a[n++] = lx.readInt(what);
         }
@@ -367,10 +378,7 @@ final class VrmlParser {
         }
         float[] a = new float[16 * k];
         int n = 0;
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             if (n + k > a.length) a = Arrays.copyOf(a, a.length * 2);
             for (int j = 0; j < k; j++) a[n++] = lx.readFloat(what);
         }
@@ -382,10 +390,7 @@ final class VrmlParser {
         if (!lx.accept('[')) return new double[] {lx.readDouble(what)};
         double[] a = new double[8];
         int n = 0;
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             if (n == a.length) a = Arrays.copyOf(a, n * 2);
             a[n++] = lx.readDouble(what);
         }
@@ -396,10 +401,7 @@ final class VrmlParser {
         int open = skipPos();
         if (!lx.accept('[')) return new String[] {lx.string(what)};
         List<String> l = new ArrayList<>();
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             l.add(lx.string(what));
         }
         return l.toArray(new String[0]);
