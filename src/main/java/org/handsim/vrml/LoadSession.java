@@ -219,13 +219,7 @@ final class LoadSession {
                 continue;
             }
             Resolved res = (Resolved) r;
-            int saved = activeDepth;
-            ParsedFile f;
-            try {
-                f = parseFile(res, from, offset);
-            } finally {
-                activeDepth = saved;
-            }
+            ParsedFile f = parseFile(res, from, offset);
             String want = res.fragment != null && !res.fragment.isEmpty() ? res.fragment : null;
             for (ProtoDecl d : f.protos) {
                 if (want == null || d.iface.name.equals(want)) {

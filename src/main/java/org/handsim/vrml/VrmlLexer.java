@@ -348,12 +348,5 @@ final class VrmlLexer {
         return text.error(pos, message);
     }
 
-    /** Sets the position (used to re-read a field's values to locate an element). */
-    void seek(int offset) {
-        pos = offset;
-    }
-
     int end() { return end; }
-
-    byte byteAt(int p) { return buf[p]; }
 }

@@ -291,7 +291,7 @@ final class VrmlParser {
         if (lx.atWord("IS")) {
             lx.identifier("IS");
             int isAt = skipPos();
-            String target = lx.identifier("an interface name after IS");
+            lx.identifier("an interface name after IS");
             if (scope.inProto == null || !scope.inBody) throw text.error(isAt, "IS is only allowed inside a PROTO body");
             return;
         }
@@ -497,7 +497,7 @@ final class VrmlParser {
             session.warn(text, at, "PROTO '" + name + "' redefines the built-in node " + name + " in this file");
         }
         NodeType iface = interfaceOf("PROTO", name, at, true);
-        ProtoDecl decl = new ProtoDecl(iface, text, at);
+        ProtoDecl decl = new ProtoDecl(iface);
         iface.proto = decl;
         decl.defining = true;
         scope.protos.put(name, iface);
@@ -578,7 +578,7 @@ final class VrmlParser {
         NodeType iface = interfaceOf("EXTERNPROTO", name, at, false);
         int urlAt = skipPos();
         String[] urls = mfString("the URL list of EXTERNPROTO " + name);
-        ProtoDecl decl = new ProtoDecl(iface, text, at);
+        ProtoDecl decl = new ProtoDecl(iface);
         decl.urls = urls;
         iface.proto = decl;
         int savedDepth = session.activeDepth;
