@@ -75,7 +75,6 @@ final class SceneBuilder {
     private final IdentityHashMap<VrmlNode, SharedGroup> shared = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Object> built = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Geometry> geometries = new IdentityHashMap<>();
-    private final IdentityHashMap<VrmlNode, Boolean> solidOf = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Appearance[]> appearances = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Material> materials = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Boolean> texturesChecked = new IdentityHashMap<>();
@@ -331,7 +330,7 @@ final class SceneBuilder {
         if (g == null) return null;
         Geometry geom = geometry(g);
         if (geom == null) return null;
-        Appearance ap = appearance(n.getNode("appearance"), solidOf.getOrDefault(g, Boolean.TRUE));
+        Appearance ap = appearance(n.getNode("appearance"), solid(g));
         Shape3D sh = new Shape3D(geom, ap);
         sh.setCapability(Shape3D.ALLOW_GEOMETRY_READ);
         sh.setCapability(Shape3D.ALLOW_APPEARANCE_READ);
@@ -342,12 +341,10 @@ final class SceneBuilder {
         if (geometries.containsKey(g)) return geometries.get(g);
         TriGeometry t = null;
         Geometry out = null;
-        boolean solid = true;
         int div = s.divisions;
         switch (g.type.name) {
             case "IndexedFaceSet":
                 t = geo.indexedFaceSet(g);
-                solid = g.getBool("solid");
                 break;
             case "Box": {
                 float[] sz = g.getFloats("size");
@@ -365,11 +362,9 @@ final class SceneBuilder {
                 break;
             case "ElevationGrid":
                 t = geo.elevationGrid(g);
-                solid = g.getBool("solid");
                 break;
             case "Extrusion":
                 t = geo.extrusion(g);
-                solid = g.getBool("solid");
                 break;
             case "IndexedLineSet":
                 out = geo.indexedLineSet(g);
@@ -392,9 +387,14 @@ final class SceneBuilder {
         }
         if (out != null && g.defName != null) out.setName(g.defName);
         geometries.put(g, out);
-        solidOf.put(g, solid);
         if (out != null) built.put(g, out);
         return out;
+    }
+
+    /** The {@code solid} field of IndexedFaceSet, ElevationGrid and Extrusion; the primitives are solid. */
+    private static boolean solid(VrmlNode g) {
+        int i = g.type.indexOf("solid");
+        return i < 0 || (Boolean) g.get(i);
     }
 
     private Appearance appearance(VrmlNode a, boolean solid) {
