@@ -201,6 +201,19 @@ final class LoadSession {
         return new Resolved(real, display, fragment);
     }
 
+    /**
+     * The first of {@code urls} that {@link #resolve resolves}, or null if none does; the
+     * reasons for the ones refused before it are added to {@code reasons}.
+     */
+    Resolved resolveFirst(VrmlText from, String[] urls, List<String> reasons) {
+        for (String url : urls) {
+            Object r = resolve(from, url);
+            if (r instanceof Resolved) return (Resolved) r;
+            reasons.add((String) r);
+        }
+        return null;
+    }
+
     private String sandboxName() {
         return sandbox == null ? "the allowed folder" : sandbox.toString();
     }

@@ -468,13 +468,8 @@ final class SceneBuilder {
             s.warn(tex.text, tex.offset, "texture of Appearance is a " + t + ", not a texture node; ignored");
             return;
         }
-        String[] urls = tex.getStrings("url");
         List<String> reasons = new ArrayList<>();
-        for (String u : urls) {
-            Object r = s.resolve(tex.text, u);
-            if (r instanceof LoadSession.Resolved) return;
-            reasons.add((String) r);
-        }
+        if (s.resolveFirst(tex.text, tex.getStrings("url"), reasons) != null) return;
         s.warn(tex.text, tex.offsetOf("url"), "texture not available (" + (reasons.isEmpty() ? "no url" : String.join("; ", reasons))
             + "); the shape loads without it");
     }
@@ -556,15 +551,7 @@ final class SceneBuilder {
             return;
         }
         List<String> reasons = new ArrayList<>();
-        LoadSession.Resolved r = null;
-        for (String u : urls) {
-            Object o = s.resolve(n.text, u);
-            if (o instanceof LoadSession.Resolved) {
-                r = (LoadSession.Resolved) o;
-                break;
-            }
-            reasons.add((String) o);
-        }
+        LoadSession.Resolved r = s.resolveFirst(n.text, urls, reasons);
         int at = n.offsetOf("url");
         if (r == null) throw n.text.error(at, "Inline " + String.join("; ", reasons));
         if (p.ancestry.contains(r.real)) {
