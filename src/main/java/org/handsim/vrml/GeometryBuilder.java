@@ -96,18 +96,10 @@ final class GeometryBuilder {
         TriGeometry t = new TriGeometry();
         t.fpoints = pts;
         t.coordIndex = cidx;
-        if (session.normals) {
-            VrmlNode nn = g.getNode("normal");
-            if (nn != null && !explicitNormals(g, nn, t, pos, tri.face, m)) {
-                nn = null;
-            }
-            if (nn == null) {
-                if (!g.getBool("ccw")) t.flip();
-                Normals.generate(t, g.getFloat("creaseAngle"));
-                return t;
-            }
-        }
+        VrmlNode nn = g.getNode("normal");
+        boolean generate = session.normals && (nn == null || !explicitNormals(g, nn, t, pos, tri.face, m));
         if (!g.getBool("ccw")) t.flip();
+        if (generate) Normals.generate(t, g.getFloat("creaseAngle"));
         return t;
     }
 
