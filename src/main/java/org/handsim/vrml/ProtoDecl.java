@@ -24,6 +24,11 @@ final class ProtoDecl {
     /** Nodes one instance creates when expanded (computed once; -1: not yet). */
     long expandedSize = -1;
 
+    /** The declaration whose body instances copy: the PROTO an EXTERNPROTO resolved to, else this. */
+    ProtoDecl definition() {
+        return resolvedFrom != null ? resolvedFrom : this;
+    }
+
     ProtoDecl(NodeType iface) {
         this.iface = iface;
     }
