@@ -84,17 +84,8 @@ final class SceneBuilder {
     private int sharedLevel;
     private List<Path> ancestry = new ArrayList<>();
 
-    private static final class Pending {
-        final Group slot;
-        final VrmlNode inline;
-        final List<Path> ancestry;
-
-        Pending(Group slot, VrmlNode inline, List<Path> ancestry) {
-            this.slot = slot;
-            this.inline = inline;
-            this.ancestry = ancestry;
-        }
-    }
+    /** An Inline waiting to be built: the empty Group it fills, and the files inlined above it. */
+    private record Pending(Group slot, VrmlNode inline, List<Path> ancestry) {}
 
     SceneBuilder(LoadSession s, VrmlScene scene) {
         this.s = s;
@@ -107,9 +98,9 @@ final class SceneBuilder {
         BranchGroup root = new BranchGroup();
         allowRead(root);
         root.setCapability(BranchGroup.ALLOW_DETACH);
-        if (top.text.path != null) ancestry.add(top.text.path);
-        addAll(root, top.roots);
-        for (Map.Entry<String, VrmlNode> e : top.defs.entrySet()) {
+        if (top.text().path != null) ancestry.add(top.text().path);
+        addAll(root, top.roots());
+        for (Map.Entry<String, VrmlNode> e : top.defs().entrySet()) {
             Object o = e.getValue() == null ? null : built.get(e.getValue());
             if (o != null) scene.addNamedObject(e.getKey(), o);
         }
@@ -544,7 +535,7 @@ final class SceneBuilder {
     // ------------------------------------------------------------------ Inline
 
     private void inline(Pending p) {
-        VrmlNode n = p.inline;
+        VrmlNode n = p.inline();
         String[] urls = n.getStrings("url");
         if (urls.length == 0) {
             s.warn(n.text, n.offset, "Inline without url; empty");
@@ -554,26 +545,26 @@ final class SceneBuilder {
         LoadSession.Resolved r = s.resolveFirst(n.text, urls, reasons);
         int at = n.offsetOf("url");
         if (r == null) throw n.text.error(at, "Inline " + String.join("; ", reasons));
-        if (p.ancestry.contains(r.real)) {
-            throw n.text.error(at, "Inline cycle: '" + r.display + "' is already being inlined on this path");
+        if (p.ancestry().contains(r.real())) {
+            throw n.text.error(at, "Inline cycle: '" + r.display() + "' is already being inlined on this path");
         }
-        SharedGroup sg = inlineGroups.get(r.real);
+        SharedGroup sg = inlineGroups.get(r.real());
         if (sg == null) {
             LoadSession.ParsedFile f = s.parseFile(r, n.text, at);
             sg = new SharedGroup();
             allowRead(sg);
-            inlineGroups.put(r.real, sg);
+            inlineGroups.put(r.real(), sg);
             List<Path> saved = ancestry;
-            ancestry = new ArrayList<>(p.ancestry);
-            ancestry.add(r.real);
+            ancestry = new ArrayList<>(p.ancestry());
+            ancestry.add(r.real());
             try {
-                addAll(sg, f.roots);
+                addAll(sg, f.roots());
             } finally {
                 ancestry = saved;
             }
         }
         Link l = new Link(sg);
         l.setCapability(Link.ALLOW_SHARED_GROUP_READ);
-        p.slot.addChild(l);
+        p.slot().addChild(l);
     }
 }
