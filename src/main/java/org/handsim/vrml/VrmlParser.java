@@ -624,7 +624,7 @@ final class VrmlParser {
     /** Parses the interface text of the built-in nodes ({@link Builtins}): {@code Name [ decls ]*}. */
     static List<NodeType> parseInterfaces(String spec) {
         byte[] b = spec.getBytes(java.nio.charset.StandardCharsets.UTF_8);
-        VrmlText t = new VrmlText("<builtins>", b, b.length);
+        VrmlText t = new VrmlText("<builtins>", b);
         VrmlParser p = new VrmlParser(t, 0, new LoadSession());
         List<NodeType> out = new ArrayList<>();
         while (!p.lx.atEnd()) {
