@@ -78,9 +78,4 @@ final class Builtins {
     static NodeType get(String name) {
         return TYPES.get(name);
     }
-
-    /** Number of built-in types (54). */
-    static int count() {
-        return TYPES.size();
-    }
 }

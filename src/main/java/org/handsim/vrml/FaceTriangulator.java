@@ -78,7 +78,7 @@ final class FaceTriangulator {
                 int len = i - start;
                 if (len >= 3) {
                     if (len == 3) emit(start, start + 1, start + 2, f);
-                    else polygon(pts, idx, start, len, f, null);
+                    else polygon(pts, idx, start, len, f);
                 } else if (len > 0) {
                     shortFaces++;
                 }
@@ -98,26 +98,16 @@ final class FaceTriangulator {
         count++;
     }
 
-    /**
-     * Triangulates one polygon whose corners are {@code idx[start .. start+n-1]} (or, if
-     * {@code direct} is non-null, the points {@code direct[0..n-1]} themselves, positions then
-     * being 0..n-1 plus {@code start}).
-     */
-    void polygon(float[] pts, int[] idx, int start, int n, int f, double[] direct) {
+    /** Triangulates one polygon whose corners are the points {@code idx[start .. start+n-1]}. */
+    void polygon(float[] pts, int[] idx, int start, int n, int f) {
         ensure(n);
         // Newell normal
         double nx = 0, ny = 0, nz = 0;
         for (int k = 0; k < n; k++) {
             int kk = k + 1 == n ? 0 : k + 1;
-            double x0, y0, z0, x1, y1, z1;
-            if (direct != null) {
-                x0 = direct[3 * k]; y0 = direct[3 * k + 1]; z0 = direct[3 * k + 2];
-                x1 = direct[3 * kk]; y1 = direct[3 * kk + 1]; z1 = direct[3 * kk + 2];
-            } else {
-                int p = 3 * idx[start + k], q = 3 * idx[start + kk];
-                x0 = pts[p]; y0 = pts[p + 1]; z0 = pts[p + 2];
-                x1 = pts[q]; y1 = pts[q + 1]; z1 = pts[q + 2];
-            }
+            int p = 3 * idx[start + k], q = 3 * idx[start + kk];
+            double x0 = pts[p], y0 = pts[p + 1], z0 = pts[p + 2];
+            double x1 = pts[q], y1 = pts[q + 1], z1 = pts[q + 2];
             nx += (y0 - y1) * (z0 + z1);
             ny += (z0 - z1) * (x0 + x1);
             nz += (x0 - x1) * (y0 + y1);
@@ -126,7 +116,7 @@ final class FaceTriangulator {
         if (!(len > 0)) {
             // zero area vector: all points collinear (any split has zero area) or a face that
             // crosses itself so its parts cancel (a bow tie): fan it, and count the latter
-            if (!collinear(pts, idx, start, n, direct)) fannedConcave++;
+            if (!collinear(pts, idx, start, n)) fannedConcave++;
             for (int k = 1; k + 1 < n; k++) emit(start, start + k, start + k + 1, f);
             return;
         }
@@ -138,13 +128,8 @@ final class FaceTriangulator {
         ux /= ul; uy /= ul; uz /= ul;
         double vx = ny * uz - nz * uy, vy = nz * ux - nx * uz, vz = nx * uy - ny * ux;
         for (int k = 0; k < n; k++) {
-            double px, py, pz;
-            if (direct != null) {
-                px = direct[3 * k]; py = direct[3 * k + 1]; pz = direct[3 * k + 2];
-            } else {
-                int p = 3 * idx[start + k];
-                px = pts[p]; py = pts[p + 1]; pz = pts[p + 2];
-            }
+            int p = 3 * idx[start + k];
+            double px = pts[p], py = pts[p + 1], pz = pts[p + 2];
             x[k] = px * ux + py * uy + pz * uz;
             y[k] = px * vx + py * vy + pz * vz;
         }
@@ -157,17 +142,17 @@ final class FaceTriangulator {
     }
 
     /** True if every point lies on the line through the first point and the farthest one. */
-    private static boolean collinear(float[] pts, int[] idx, int start, int n, double[] direct) {
-        double[] p0 = point(pts, idx, start, 0, direct), far = p0;
+    private static boolean collinear(float[] pts, int[] idx, int start, int n) {
+        double[] p0 = point(pts, idx, start, 0), far = p0;
         double best = 0;
         for (int k = 1; k < n; k++) {
-            double[] q = point(pts, idx, start, k, direct);
+            double[] q = point(pts, idx, start, k);
             double d = (q[0] - p0[0]) * (q[0] - p0[0]) + (q[1] - p0[1]) * (q[1] - p0[1]) + (q[2] - p0[2]) * (q[2] - p0[2]);
             if (d > best) { best = d; far = q; }
         }
         double ux = far[0] - p0[0], uy = far[1] - p0[1], uz = far[2] - p0[2];
         for (int k = 1; k < n; k++) {
-            double[] q = point(pts, idx, start, k, direct);
+            double[] q = point(pts, idx, start, k);
             double wx = q[0] - p0[0], wy = q[1] - p0[1], wz = q[2] - p0[2];
             double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
             if (cx != 0 || cy != 0 || cz != 0) return false;
@@ -175,8 +160,7 @@ final class FaceTriangulator {
         return true;
     }
 
-    private static double[] point(float[] pts, int[] idx, int start, int k, double[] direct) {
-        if (direct != null) return new double[] {direct[3 * k], direct[3 * k + 1], direct[3 * k + 2]};
+    private static double[] point(float[] pts, int[] idx, int start, int k) {
         int p = 3 * idx[start + k];
         return new double[] {pts[p], pts[p + 1], pts[p + 2]};
     }

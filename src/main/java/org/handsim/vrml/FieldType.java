@@ -33,27 +33,6 @@ enum FieldType {
         this.components = components;
     }
 
-    /** True for the MF types. */
-    boolean isMulti() {
-        return name().charAt(0) == 'M';
-    }
-
-    /** True for SFNode and MFNode. */
-    boolean isNode() {
-        return this == SFNode || this == MFNode;
-    }
-
-    /** True for the types stored as {@code float[]}. */
-    boolean isFloat() {
-        switch (this) {
-            case SFFloat: case SFVec2f: case SFVec3f: case SFColor: case SFRotation:
-            case MFFloat: case MFVec2f: case MFVec3f: case MFColor: case MFRotation:
-                return true;
-            default:
-                return false;
-        }
-    }
-
     /** The type named {@code s}, or null if {@code s} is not a VRML97 field type. */
     static FieldType byName(String s) {
         for (FieldType t : values()) {

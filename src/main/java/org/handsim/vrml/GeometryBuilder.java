@@ -96,18 +96,10 @@ final class GeometryBuilder {
         TriGeometry t = new TriGeometry();
         t.fpoints = pts;
         t.coordIndex = cidx;
-        if (session.normals) {
-            VrmlNode nn = g.getNode("normal");
-            if (nn != null && !explicitNormals(g, nn, t, pos, tri.face, m)) {
-                nn = null;
-            }
-            if (nn == null) {
-                if (!g.getBool("ccw")) t.flip();
-                Normals.generate(t, g.getFloat("creaseAngle"));
-                return t;
-            }
-        }
+        VrmlNode nn = g.getNode("normal");
+        boolean generate = session.normals && (nn == null || !explicitNormals(g, nn, t, pos, tri.face, m));
         if (!g.getBool("ccw")) t.flip();
+        if (generate) Normals.generate(t, g.getFloat("creaseAngle"));
         return t;
     }
 
@@ -272,15 +264,10 @@ final class GeometryBuilder {
      * cap forwards: then every cap edge meets its body edge in the opposite direction.
      */
     private int cap(float[] p, int base, int capN, boolean reverse, int[] ci, int o) {
-        double[] poly = new double[3 * capN];
         int[] ring = new int[capN];
-        for (int k = 0; k < capN; k++) {
-            int v = base + (reverse ? capN - 1 - k : k);
-            ring[k] = v;
-            poly[3 * k] = p[3 * v]; poly[3 * k + 1] = p[3 * v + 1]; poly[3 * k + 2] = p[3 * v + 2];
-        }
+        for (int k = 0; k < capN; k++) ring[k] = base + (reverse ? capN - 1 - k : k);
         tri.reset();
-        tri.polygon(null, null, 0, capN, 0, poly);
+        tri.polygon(p, ring, 0, capN, 0);
         for (int k = 0; k < 3 * tri.count; k++) ci[o++] = ring[tri.tri[k]];
         return o;
     }

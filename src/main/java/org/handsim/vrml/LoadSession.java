@@ -55,32 +55,10 @@ final class LoadSession {
     long ifsTriangles;
 
     /** A parsed file. */
-    static final class ParsedFile {
-        final VrmlText text;
-        final List<VrmlNode> roots;
-        final Map<String, VrmlNode> defs;
-        final List<ProtoDecl> protos;
-
-        ParsedFile(VrmlText text, List<VrmlNode> roots, Map<String, VrmlNode> defs, List<ProtoDecl> protos) {
-            this.text = text;
-            this.roots = roots;
-            this.defs = defs;
-            this.protos = protos;
-        }
-    }
+    record ParsedFile(VrmlText text, List<VrmlNode> roots, Map<String, VrmlNode> defs, List<ProtoDecl> protos) {}
 
     /** A URL resolved to a local file. */
-    static final class Resolved {
-        final Path real;
-        final String display;
-        final String fragment;
-
-        Resolved(Path real, String display, String fragment) {
-            this.real = real;
-            this.display = display;
-            this.fragment = fragment;
-        }
-    }
+    record Resolved(Path real, String display, String fragment) {}
 
     private final java.util.Set<String> warned = new java.util.HashSet<>();
 
@@ -109,21 +87,21 @@ final class LoadSession {
      *         inside the file for its own errors
      */
     ParsedFile parseFile(Resolved r, VrmlText from, int offset) {
-        ParsedFile f = parsed.get(r.real);
+        ParsedFile f = parsed.get(r.real());
         if (f != null) return f;
-        if (parsing.contains(r.real)) {
-            throw from.error(offset, "'" + r.display + "' includes itself (EXTERNPROTO/Inline cycle)");
+        if (parsing.contains(r.real())) {
+            throw from.error(offset, "'" + r.display() + "' includes itself (EXTERNPROTO/Inline cycle)");
         }
         if (parsing.size() >= MAX_FILE_NESTING) {
             throw from.error(offset, "files nested more than " + MAX_FILE_NESTING + " levels deep through EXTERNPROTO/Inline");
         }
         VrmlText t;
         try {
-            t = VrmlText.read(r.display, r.real);
+            t = VrmlText.read(r.display(), r.real());
         } catch (IOException e) {
-            throw from.error(offset, "cannot read '" + r.display + "': " + e);
+            throw from.error(offset, "cannot read '" + r.display() + "': " + e);
         }
-        parsing.push(r.real);
+        parsing.push(r.real());
         try {
             return parse(t);
         } finally {
@@ -201,6 +179,19 @@ final class LoadSession {
         return new Resolved(real, display, fragment);
     }
 
+    /**
+     * The first of {@code urls} that {@link #resolve resolves}, or null if none does; the
+     * reasons for the ones refused before it are added to {@code reasons}.
+     */
+    Resolved resolveFirst(VrmlText from, String[] urls, List<String> reasons) {
+        for (String url : urls) {
+            Object r = resolve(from, url);
+            if (r instanceof Resolved) return (Resolved) r;
+            reasons.add((String) r);
+        }
+        return null;
+    }
+
     private String sandboxName() {
         return sandbox == null ? "the allowed folder" : sandbox.toString();
     }
@@ -219,15 +210,9 @@ final class LoadSession {
                 continue;
             }
             Resolved res = (Resolved) r;
-            int saved = activeDepth;
-            ParsedFile f;
-            try {
-                f = parseFile(res, from, offset);
-            } finally {
-                activeDepth = saved;
-            }
-            String want = res.fragment != null && !res.fragment.isEmpty() ? res.fragment : null;
-            for (ProtoDecl d : f.protos) {
+            ParsedFile f = parseFile(res, from, offset);
+            String want = res.fragment() != null && !res.fragment().isEmpty() ? res.fragment() : null;
+            for (ProtoDecl d : f.protos()) {
                 if (want == null || d.iface.name.equals(want)) {
                     if (d.body == null) break; // an EXTERNPROTO that is itself unresolved
                     return d;

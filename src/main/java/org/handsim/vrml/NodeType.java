@@ -22,8 +22,6 @@ final class NodeType {
     private final Map<String, Integer> index = new HashMap<>();
     /** Non-null for PROTO and EXTERNPROTO types. */
     ProtoDecl proto;
-    /** For EXTERNPROTO: the URLs, to name them in warnings. */
-    boolean isExtern;
     /** Script nodes may declare their own fields and events in their body. */
     final boolean allowsDeclarations;
 

@@ -25,12 +25,7 @@ final class Normals {
             double vx = px(g, c, 0) - ax, vy = px(g, c, 1) - ay, vz = px(g, c, 2) - az;
             double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
             weight[3 * t] = nx; weight[3 * t + 1] = ny; weight[3 * t + 2] = nz;
-            double l = Math.sqrt(nx * nx + ny * ny + nz * nz);
-            if (l > 0) {
-                face[3 * t] = (float) (nx / l); face[3 * t + 1] = (float) (ny / l); face[3 * t + 2] = (float) (nz / l);
-            } else {
-                face[3 * t + 1] = 1; // any unit vector for a zero-area triangle
-            }
+            unit(nx, ny, nz, face, 3 * t); // +y for a zero-area triangle
         }
         if (!(creaseAngle > 1e-6)) {
             int[] ni = new int[3 * m];
@@ -84,6 +79,7 @@ final class Normals {
         return g.fpoints != null ? g.fpoints[3 * i + k] : g.dpoints[3 * i + k];
     }
 
+    /** Writes (x, y, z) normalised to out[o..o+2], or +y for a zero vector. */
     private static void unit(double x, double y, double z, float[] out, int o) {
         double l = Math.sqrt(x * x + y * y + z * z);
         if (l > 0) {

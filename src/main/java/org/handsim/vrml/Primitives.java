@@ -37,12 +37,7 @@ final class Primitives {
             ci[o + 3] = q[0]; ci[o + 4] = q[2]; ci[o + 5] = q[3];
             for (int k = 0; k < 6; k++) ni[o + k] = f;
         }
-        TriGeometry g = new TriGeometry();
-        g.dpoints = p;
-        g.coordIndex = ci;
-        g.normals = normals;
-        g.normalIndex = ni;
-        return g;
+        return mesh(p, ci, normals, ni);
     }
 
     /** Sphere of radius r with {@code n} segments around and max(2, n/2) bands. */
@@ -87,12 +82,7 @@ final class Primitives {
             int k1 = (k + 1) % n;
             ci[o++] = last + k; ci[o++] = south; ci[o++] = last + k1;
         }
-        TriGeometry g = new TriGeometry();
-        g.dpoints = p;
-        g.coordIndex = ci;
-        g.normals = nor;
-        g.normalIndex = ci.clone();
-        return g;
+        return mesh(p, ci, nor, ci.clone());
     }
 
     /** Cylinder of radius r and height h; each part optional. Null if no part is on. */
@@ -137,12 +127,7 @@ final class Primitives {
                 ci[o] = n + k; ni[o++] = n + 1;
             }
         }
-        TriGeometry g = new TriGeometry();
-        g.dpoints = p;
-        g.coordIndex = ci;
-        g.normals = nor;
-        g.normalIndex = ni;
-        return g;
+        return mesh(p, ci, nor, ni);
     }
 
     /** Cone with base radius rb and height h (apex at +h/2); each part optional. Null if none. */
@@ -182,11 +167,15 @@ final class Primitives {
                 ci[o] = 1 + k; ni[o++] = 2 * n;
             }
         }
+        return mesh(p, ci, nor, ni);
+    }
+
+    private static TriGeometry mesh(double[] points, int[] coordIndex, float[] normals, int[] normalIndex) {
         TriGeometry g = new TriGeometry();
-        g.dpoints = p;
-        g.coordIndex = ci;
-        g.normals = nor;
-        g.normalIndex = ni;
+        g.dpoints = points;
+        g.coordIndex = coordIndex;
+        g.normals = normals;
+        g.normalIndex = normalIndex;
         return g;
     }
 }

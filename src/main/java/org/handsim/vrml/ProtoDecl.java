@@ -13,9 +13,6 @@ final class ProtoDecl {
     final NodeType iface;
     /** Body nodes; the first is the one an instance turns into. Null for an unresolved EXTERNPROTO. */
     List<VrmlNode> body;
-    /** Where it was declared (for messages). */
-    final VrmlText text;
-    final int offset;
     /** Set while the body is being parsed, to detect a PROTO instantiated inside itself. */
     boolean defining;
     /** For an unresolved EXTERNPROTO: whether its warning was already given for an instance. */
@@ -27,9 +24,12 @@ final class ProtoDecl {
     /** Nodes one instance creates when expanded (computed once; -1: not yet). */
     long expandedSize = -1;
 
-    ProtoDecl(NodeType iface, VrmlText text, int offset) {
+    /** The declaration whose body instances copy: the PROTO an EXTERNPROTO resolved to, else this. */
+    ProtoDecl definition() {
+        return resolvedFrom != null ? resolvedFrom : this;
+    }
+
+    ProtoDecl(NodeType iface) {
         this.iface = iface;
-        this.text = text;
-        this.offset = offset;
     }
 }

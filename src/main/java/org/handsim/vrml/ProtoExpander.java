@@ -31,7 +31,7 @@ final class ProtoExpander {
      */
     VrmlNode instantiate(VrmlNode inst, int depth) {
         ProtoDecl decl = inst.type.proto;
-        ProtoDecl def = decl.resolvedFrom != null ? decl.resolvedFrom : decl;
+        ProtoDecl def = decl.definition();
         if (def.body == null) {
             if (!decl.warnedUnresolved) {
                 decl.warnedUnresolved = true;
@@ -82,8 +82,7 @@ final class ProtoExpander {
             if (seen.put(n, Boolean.TRUE) != null) continue;
             total = Math.min(LARGE, total + 1);
             if (n.type.proto != null) {
-                ProtoDecl d = n.type.proto;
-                ProtoDecl dd = d.resolvedFrom != null ? d.resolvedFrom : d;
+                ProtoDecl dd = n.type.proto.definition();
                 if (dd.body != null) total = Math.min(LARGE, total + sizeOf(dd));
             }
             for (int i = 0; i < n.type.size(); i++) {

@@ -75,7 +75,6 @@ final class SceneBuilder {
     private final IdentityHashMap<VrmlNode, SharedGroup> shared = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Object> built = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Geometry> geometries = new IdentityHashMap<>();
-    private final IdentityHashMap<VrmlNode, Boolean> solidOf = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Appearance[]> appearances = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Material> materials = new IdentityHashMap<>();
     private final IdentityHashMap<VrmlNode, Boolean> texturesChecked = new IdentityHashMap<>();
@@ -85,17 +84,8 @@ final class SceneBuilder {
     private int sharedLevel;
     private List<Path> ancestry = new ArrayList<>();
 
-    private static final class Pending {
-        final Group slot;
-        final VrmlNode inline;
-        final List<Path> ancestry;
-
-        Pending(Group slot, VrmlNode inline, List<Path> ancestry) {
-            this.slot = slot;
-            this.inline = inline;
-            this.ancestry = ancestry;
-        }
-    }
+    /** An Inline waiting to be built: the empty Group it fills, and the files inlined above it. */
+    private record Pending(Group slot, VrmlNode inline, List<Path> ancestry) {}
 
     SceneBuilder(LoadSession s, VrmlScene scene) {
         this.s = s;
@@ -108,9 +98,9 @@ final class SceneBuilder {
         BranchGroup root = new BranchGroup();
         allowRead(root);
         root.setCapability(BranchGroup.ALLOW_DETACH);
-        if (top.text.path != null) ancestry.add(top.text.path);
-        addAll(root, top.roots);
-        for (Map.Entry<String, VrmlNode> e : top.defs.entrySet()) {
+        if (top.text().path != null) ancestry.add(top.text().path);
+        addAll(root, top.roots());
+        for (Map.Entry<String, VrmlNode> e : top.defs().entrySet()) {
             Object o = e.getValue() == null ? null : built.get(e.getValue());
             if (o != null) scene.addNamedObject(e.getKey(), o);
         }
@@ -331,7 +321,7 @@ final class SceneBuilder {
         if (g == null) return null;
         Geometry geom = geometry(g);
         if (geom == null) return null;
-        Appearance ap = appearance(n.getNode("appearance"), solidOf.getOrDefault(g, Boolean.TRUE));
+        Appearance ap = appearance(n.getNode("appearance"), solid(g));
         Shape3D sh = new Shape3D(geom, ap);
         sh.setCapability(Shape3D.ALLOW_GEOMETRY_READ);
         sh.setCapability(Shape3D.ALLOW_APPEARANCE_READ);
@@ -342,12 +332,10 @@ final class SceneBuilder {
         if (geometries.containsKey(g)) return geometries.get(g);
         TriGeometry t = null;
         Geometry out = null;
-        boolean solid = true;
         int div = s.divisions;
         switch (g.type.name) {
             case "IndexedFaceSet":
                 t = geo.indexedFaceSet(g);
-                solid = g.getBool("solid");
                 break;
             case "Box": {
                 float[] sz = g.getFloats("size");
@@ -365,11 +353,9 @@ final class SceneBuilder {
                 break;
             case "ElevationGrid":
                 t = geo.elevationGrid(g);
-                solid = g.getBool("solid");
                 break;
             case "Extrusion":
                 t = geo.extrusion(g);
-                solid = g.getBool("solid");
                 break;
             case "IndexedLineSet":
                 out = geo.indexedLineSet(g);
@@ -392,9 +378,14 @@ final class SceneBuilder {
         }
         if (out != null && g.defName != null) out.setName(g.defName);
         geometries.put(g, out);
-        solidOf.put(g, solid);
         if (out != null) built.put(g, out);
         return out;
+    }
+
+    /** The {@code solid} field of IndexedFaceSet, ElevationGrid and Extrusion; the primitives are solid. */
+    private static boolean solid(VrmlNode g) {
+        int i = g.type.indexOf("solid");
+        return i < 0 || (Boolean) g.get(i);
     }
 
     private Appearance appearance(VrmlNode a, boolean solid) {
@@ -468,13 +459,8 @@ final class SceneBuilder {
             s.warn(tex.text, tex.offset, "texture of Appearance is a " + t + ", not a texture node; ignored");
             return;
         }
-        String[] urls = tex.getStrings("url");
         List<String> reasons = new ArrayList<>();
-        for (String u : urls) {
-            Object r = s.resolve(tex.text, u);
-            if (r instanceof LoadSession.Resolved) return;
-            reasons.add((String) r);
-        }
+        if (s.resolveFirst(tex.text, tex.getStrings("url"), reasons) != null) return;
         s.warn(tex.text, tex.offsetOf("url"), "texture not available (" + (reasons.isEmpty() ? "no url" : String.join("; ", reasons))
             + "); the shape loads without it");
     }
@@ -549,44 +535,36 @@ final class SceneBuilder {
     // ------------------------------------------------------------------ Inline
 
     private void inline(Pending p) {
-        VrmlNode n = p.inline;
+        VrmlNode n = p.inline();
         String[] urls = n.getStrings("url");
         if (urls.length == 0) {
             s.warn(n.text, n.offset, "Inline without url; empty");
             return;
         }
         List<String> reasons = new ArrayList<>();
-        LoadSession.Resolved r = null;
-        for (String u : urls) {
-            Object o = s.resolve(n.text, u);
-            if (o instanceof LoadSession.Resolved) {
-                r = (LoadSession.Resolved) o;
-                break;
-            }
-            reasons.add((String) o);
-        }
+        LoadSession.Resolved r = s.resolveFirst(n.text, urls, reasons);
         int at = n.offsetOf("url");
         if (r == null) throw n.text.error(at, "Inline " + String.join("; ", reasons));
-        if (p.ancestry.contains(r.real)) {
-            throw n.text.error(at, "Inline cycle: '" + r.display + "' is already being inlined on this path");
+        if (p.ancestry().contains(r.real())) {
+            throw n.text.error(at, "Inline cycle: '" + r.display() + "' is already being inlined on this path");
         }
-        SharedGroup sg = inlineGroups.get(r.real);
+        SharedGroup sg = inlineGroups.get(r.real());
         if (sg == null) {
             LoadSession.ParsedFile f = s.parseFile(r, n.text, at);
             sg = new SharedGroup();
             allowRead(sg);
-            inlineGroups.put(r.real, sg);
+            inlineGroups.put(r.real(), sg);
             List<Path> saved = ancestry;
-            ancestry = new ArrayList<>(p.ancestry);
-            ancestry.add(r.real);
+            ancestry = new ArrayList<>(p.ancestry());
+            ancestry.add(r.real());
             try {
-                addAll(sg, f.roots);
+                addAll(sg, f.roots());
             } finally {
                 ancestry = saved;
             }
         }
         Link l = new Link(sg);
         l.setCapability(Link.ALLOW_SHARED_GROUP_READ);
-        p.slot.addChild(l);
+        p.slot().addChild(l);
     }
 }

@@ -51,6 +51,8 @@ final class VrmlLexer {
     private final int end;
     /** Offset of the next unread byte. */
     int pos;
+    /** Offset of the number {@link #readDouble} read last (where a float range error points). */
+    private int numberStart;
 
     VrmlLexer(VrmlText text, int start) {
         this.text = text;
@@ -182,10 +184,9 @@ final class VrmlLexer {
 
     /** Reads a float (SFFloat component); fails if it is not a number or out of float range. */
     float readFloat(String what) {
-        int start = pos;
         double d = readDouble(what);
         float f = (float) d;
-        if (Float.isInfinite(f)) throw text.error(start, "number " + d + " is out of the single-precision range (" + what + ")");
+        if (Float.isInfinite(f)) throw text.error(numberStart, "number " + d + " is out of the single-precision range (" + what + ")");
         return f;
     }
 
@@ -263,6 +264,7 @@ final class VrmlLexer {
             v = Double.parseDouble(new String(b, start, p - start, StandardCharsets.ISO_8859_1));
         }
         pos = p;
+        numberStart = start;
         return v;
     }
 
@@ -348,12 +350,5 @@ final class VrmlLexer {
         return text.error(pos, message);
     }
 
-    /** Sets the position (used to re-read a field's values to locate an element). */
-    void seek(int offset) {
-        pos = offset;
-    }
-
     int end() { return end; }
-
-    byte byteAt(int p) { return buf[p]; }
 }

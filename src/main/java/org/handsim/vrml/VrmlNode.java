@@ -43,12 +43,6 @@ final class VrmlNode {
         return get(type.require(name));
     }
 
-    /** True if the file gave a value for {@code name}. */
-    boolean isSet(String name) {
-        int i = type.indexOf(name);
-        return i >= 0 && values[i] != null;
-    }
-
     /** Offset of the value of {@code name} if given, else of the node. */
     int offsetOf(String name) {
         int i = type.indexOf(name);

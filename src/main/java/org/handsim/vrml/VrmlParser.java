@@ -221,7 +221,7 @@ final class VrmlParser {
             if (lx.atWord("ROUTE")) { route(); continue; }
             int fieldAt = lx.pos;
             String fname = lx.identifier("a field name");
-            if (type.allowsDeclarations && isDeclKind(fname)) {
+            if (type.allowsDeclarations && kindOf(fname) >= 0) {
                 scriptDeclaration(fname, fieldAt);
                 continue;
             }
@@ -282,10 +282,6 @@ final class VrmlParser {
         n.valueOffsets[i] = at;
     }
 
-    private static boolean isDeclKind(String w) {
-        return w.equals("field") || w.equals("exposedField") || w.equals("eventIn") || w.equals("eventOut");
-    }
-
     /** In a Script body: eventIn/eventOut/field declarations (parsed, then ignored). */
     private void scriptDeclaration(String kind, int at) {
         String tname = lx.identifier("a field type after " + kind);
@@ -295,7 +291,7 @@ final class VrmlParser {
         if (lx.atWord("IS")) {
             lx.identifier("IS");
             int isAt = skipPos();
-            String target = lx.identifier("an interface name after IS");
+            lx.identifier("an interface name after IS");
             if (scope.inProto == null || !scope.inBody) throw text.error(isAt, "IS is only allowed inside a PROTO body");
             return;
         }
@@ -347,15 +343,26 @@ final class VrmlParser {
         throw lx.error("expected TRUE or FALSE for " + what(field, node, FieldType.SFBool) + ", found " + lx.describe());
     }
 
+    /**
+     * In a list whose '[' is at {@code open}: true if an element follows, false (the ']'
+     * consumed) at its end; an error if the file ends first.
+     */
+    private boolean listContinues(int open, String what) {
+        int c = lx.skip();
+        if (c == ']') {
+            lx.pos++;
+            return false;
+        }
+        if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        return true;
+    }
+
     private int[] mfInt(String what) {
         int open = skipPos();
         if (!lx.accept('[')) return new int[] {lx.readInt(what)};
         int[] a = new int[16];
         int n = 0;
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             if (n == a.length) a = Arrays.copyOf(a, n * 2);
             a[n++] = lx.readInt(what);
         }
@@ -371,10 +378,7 @@ final class VrmlParser {
         }
         float[] a = new float[16 * k];
         int n = 0;
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             if (n + k > a.length) a = Arrays.copyOf(a, a.length * 2);
             for (int j = 0; j < k; j++) a[n++] = lx.readFloat(what);
         }
@@ -386,10 +390,7 @@ final class VrmlParser {
         if (!lx.accept('[')) return new double[] {lx.readDouble(what)};
         double[] a = new double[8];
         int n = 0;
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             if (n == a.length) a = Arrays.copyOf(a, n * 2);
             a[n++] = lx.readDouble(what);
         }
@@ -400,10 +401,7 @@ final class VrmlParser {
         int open = skipPos();
         if (!lx.accept('[')) return new String[] {lx.string(what)};
         List<String> l = new ArrayList<>();
-        while (true) {
-            int c = lx.skip();
-            if (c == ']') { lx.pos++; break; }
-            if (c < 0) throw text.error(open, "list of " + what + " is not closed: missing ']' before the end of the file");
+        while (listContinues(open, what)) {
             l.add(lx.string(what));
         }
         return l.toArray(new String[0]);
@@ -498,40 +496,8 @@ final class VrmlParser {
         if (Builtins.get(name) != null) {
             session.warn(text, at, "PROTO '" + name + "' redefines the built-in node " + name + " in this file");
         }
-        lx.expect('[', "to open the interface of PROTO " + name);
-        List<String> names = new ArrayList<>();
-        List<FieldType> types = new ArrayList<>();
-        List<Integer> kinds = new ArrayList<>();
-        List<Object> defaults = new ArrayList<>();
-        // the declaration exists (for IS and recursion checks) before its defaults are parsed
-        while (!lx.accept(']')) {
-            if (lx.atEnd()) throw text.error(at, "interface of PROTO " + name + " is not closed: missing ']'");
-            int declAt = skipPos();
-            String kind = lx.identifier("field, exposedField, eventIn or eventOut");
-            int k = kindOf(kind);
-            if (k < 0) throw text.error(declAt, "expected field, exposedField, eventIn or eventOut in PROTO " + name + ", found '" + kind + "'");
-            String tname = lx.identifier("a field type");
-            FieldType t = FieldType.byName(tname);
-            if (t == null) throw text.error(declAt, "unknown field type '" + tname + "' in PROTO " + name);
-            String fname = lx.identifier("a field name");
-            if (names.contains(fname)) throw text.error(declAt, "PROTO " + name + " declares '" + fname + "' twice");
-            Object dflt = null;
-            if (k == NodeType.FIELD || k == NodeType.EXPOSED_FIELD) {
-                Scope saved = scope;
-                scope = new Scope(saved, null, false); // a default value has its own DEF scope
-                try {
-                    dflt = value(t, fname, "PROTO " + name);
-                } finally {
-                    scope = saved;
-                }
-            }
-            names.add(fname);
-            types.add(t);
-            kinds.add(k);
-            defaults.add(dflt);
-        }
-        NodeType iface = newType(name, names, types, kinds, defaults);
-        ProtoDecl decl = new ProtoDecl(iface, text, at);
+        NodeType iface = interfaceOf("PROTO", name, at, true);
+        ProtoDecl decl = new ProtoDecl(iface);
         iface.proto = decl;
         decl.defining = true;
         scope.protos.put(name, iface);
@@ -562,41 +528,57 @@ final class VrmlParser {
         return -1;
     }
 
-    private static NodeType newType(String name, List<String> names, List<FieldType> types, List<Integer> kinds, List<Object> defaults) {
-        int n = names.size();
-        int[] k = new int[n];
-        for (int i = 0; i < n; i++) k[i] = kinds.get(i);
-        return new NodeType(name, names.toArray(new String[0]), types.toArray(new FieldType[0]), k, defaults.toArray());
+    /**
+     * The interface {@code [ (field|exposedField|eventIn|eventOut) type name [default] ... ]} of
+     * {@code what} ("PROTO", "EXTERNPROTO", or a built-in node) named {@code name} declared at
+     * {@code at}; the defaults of fields are parsed only if {@code withDefaults}, each in its
+     * own DEF scope.
+     */
+    private NodeType interfaceOf(String what, String name, int at, boolean withDefaults) {
+        lx.expect('[', "to open the interface of " + what + " " + name);
+        List<String> names = new ArrayList<>();
+        List<FieldType> types = new ArrayList<>();
+        List<Integer> kinds = new ArrayList<>();
+        List<Object> defaults = new ArrayList<>();
+        while (!lx.accept(']')) {
+            if (lx.atEnd()) throw text.error(at, "interface of " + what + " " + name + " is not closed: missing ']'");
+            int declAt = skipPos();
+            String kind = lx.identifier("field, exposedField, eventIn or eventOut");
+            int k = kindOf(kind);
+            if (k < 0) throw text.error(declAt, "expected field, exposedField, eventIn or eventOut in " + what + " " + name + ", found '" + kind + "'");
+            String tname = lx.identifier("a field type");
+            FieldType t = FieldType.byName(tname);
+            if (t == null) throw text.error(declAt, "unknown field type '" + tname + "' in " + what + " " + name);
+            String fname = lx.identifier("a field name");
+            if (names.contains(fname)) throw text.error(declAt, what + " " + name + " declares '" + fname + "' twice");
+            Object dflt = null;
+            if (withDefaults && (k == NodeType.FIELD || k == NodeType.EXPOSED_FIELD)) {
+                Scope saved = scope;
+                scope = new Scope(saved, null, false); // a default value has its own DEF scope
+                try {
+                    dflt = value(t, fname, what + " " + name);
+                } finally {
+                    scope = saved;
+                }
+            }
+            names.add(fname);
+            types.add(t);
+            kinds.add(k);
+            defaults.add(dflt);
+        }
+        int[] kindArray = new int[kinds.size()];
+        for (int i = 0; i < kindArray.length; i++) kindArray[i] = kinds.get(i);
+        return new NodeType(name, names.toArray(new String[0]), types.toArray(new FieldType[0]), kindArray, defaults.toArray());
     }
 
     private void externProto(boolean top) {
         int at = lx.pos;
         lx.identifier("EXTERNPROTO");
         String name = lx.identifier("an EXTERNPROTO name");
-        lx.expect('[', "to open the interface of EXTERNPROTO " + name);
-        List<String> names = new ArrayList<>();
-        List<FieldType> types = new ArrayList<>();
-        List<Integer> kinds = new ArrayList<>();
-        List<Object> defaults = new ArrayList<>();
-        while (!lx.accept(']')) {
-            if (lx.atEnd()) throw text.error(at, "interface of EXTERNPROTO " + name + " is not closed: missing ']'");
-            int declAt = skipPos();
-            String kind = lx.identifier("field, exposedField, eventIn or eventOut");
-            int k = kindOf(kind);
-            if (k < 0) throw text.error(declAt, "expected field, exposedField, eventIn or eventOut in EXTERNPROTO " + name + ", found '" + kind + "'");
-            String tname = lx.identifier("a field type");
-            FieldType t = FieldType.byName(tname);
-            if (t == null) throw text.error(declAt, "unknown field type '" + tname + "' in EXTERNPROTO " + name);
-            names.add(lx.identifier("a field name"));
-            types.add(t);
-            kinds.add(k);
-            defaults.add(null);
-        }
+        NodeType iface = interfaceOf("EXTERNPROTO", name, at, false);
         int urlAt = skipPos();
         String[] urls = mfString("the URL list of EXTERNPROTO " + name);
-        NodeType iface = newType(name, names, types, kinds, defaults);
-        iface.isExtern = true;
-        ProtoDecl decl = new ProtoDecl(iface, text, at);
+        ProtoDecl decl = new ProtoDecl(iface);
         decl.urls = urls;
         iface.proto = decl;
         int savedDepth = session.activeDepth;
@@ -642,28 +624,12 @@ final class VrmlParser {
     /** Parses the interface text of the built-in nodes ({@link Builtins}): {@code Name [ decls ]*}. */
     static List<NodeType> parseInterfaces(String spec) {
         byte[] b = spec.getBytes(java.nio.charset.StandardCharsets.UTF_8);
-        VrmlText t = new VrmlText("<builtins>", b, b.length);
+        VrmlText t = new VrmlText("<builtins>", b);
         VrmlParser p = new VrmlParser(t, 0, new LoadSession());
         List<NodeType> out = new ArrayList<>();
         while (!p.lx.atEnd()) {
-            String name = p.lx.identifier("a node name");
-            p.lx.expect('[', "");
-            List<String> names = new ArrayList<>();
-            List<FieldType> types = new ArrayList<>();
-            List<Integer> kinds = new ArrayList<>();
-            List<Object> defaults = new ArrayList<>();
-            while (!p.lx.accept(']')) {
-                int k = kindOf(p.lx.identifier("kind"));
-                FieldType ft = FieldType.byName(p.lx.identifier("type"));
-                String fname = p.lx.identifier("name");
-                Object d = null;
-                if (k == NodeType.FIELD || k == NodeType.EXPOSED_FIELD) d = p.value(ft, fname, name);
-                names.add(fname);
-                types.add(ft);
-                kinds.add(k);
-                defaults.add(d);
-            }
-            out.add(newType(name, names, types, kinds, defaults));
+            int at = p.skipPos();
+            out.add(p.interfaceOf("built-in node", p.lx.identifier("a node name"), at, true));
         }
         return out;
     }

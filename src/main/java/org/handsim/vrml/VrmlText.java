@@ -37,10 +37,10 @@ final class VrmlText {
     final int length;
     private int[] lineStarts;
 
-    VrmlText(String name, byte[] buf, int length) {
+    VrmlText(String name, byte[] buf) {
         this.name = name;
         this.buf = buf;
-        this.length = length;
+        this.length = buf.length;
     }
 
     /** Reads a file (gzip detected by content) without checking the header. */
@@ -59,9 +59,9 @@ final class VrmlText {
     static VrmlText fromBytes(String name, byte[] raw) throws IOException {
         if (raw.length >= 2 && (raw[0] & 0xff) == 0x1f && (raw[1] & 0xff) == 0x8b) {
             byte[] plain = gunzip(name, raw);
-            return new VrmlText(name, plain, plain.length);
+            return new VrmlText(name, plain);
         }
-        return new VrmlText(name, raw, raw.length);
+        return new VrmlText(name, raw);
     }
 
     private static byte[] gunzip(String name, byte[] raw) {

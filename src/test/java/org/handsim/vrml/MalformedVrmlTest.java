@@ -75,12 +75,15 @@ class MalformedVrmlTest {
         return tests;
     }
 
-    private static Path generated(String name, String text) throws IOException {
+    /** Writes a generated bad file under build/tmp/vrml-bad. */
+    private static Path generated(String name, byte[] bytes) throws IOException {
         Path dir = TestPaths.root().resolve("build/tmp/vrml-bad");
         Files.createDirectories(dir);
-        Path p = dir.resolve(name);
-        Files.write(p, text.getBytes(StandardCharsets.UTF_8));
-        return p;
+        return Files.write(dir.resolve(name), bytes);
+    }
+
+    private static Path generated(String name, String text) throws IOException {
+        return generated(name, text.getBytes(StandardCharsets.UTF_8));
     }
 
     @Test
@@ -166,10 +169,7 @@ class MalformedVrmlTest {
         byte[] all = new byte[head.length + junk.length];
         System.arraycopy(head, 0, all, 0, head.length);
         System.arraycopy(junk, 0, all, head.length, junk.length);
-        Path dir = TestPaths.root().resolve("build/tmp/vrml-bad");
-        Files.createDirectories(dir);
-        Path p = dir.resolve("junk-after-header.wrl");
-        Files.write(p, all);
+        Path p = generated("junk-after-header.wrl", all);
         VrmlParseException e = refused(p);
         assertTrue(e.getMessage().startsWith(p + ":2:"), e.getMessage());
     }

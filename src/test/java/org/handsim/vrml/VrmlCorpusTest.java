@@ -59,17 +59,7 @@ class VrmlCorpusTest {
         return dir;
     }
 
-    private static final class Entry {
-        final int number;
-        final String file;
-        final long ifsTriangles;
-
-        Entry(int number, String file, long ifsTriangles) {
-            this.number = number;
-            this.file = file;
-            this.ifsTriangles = ifsTriangles;
-        }
-    }
+    private record Entry(int number, String file, long ifsTriangles) {}
 
     /** Rows "| # | `file` | origin | license | files/bytes | IFS triangles (...) | what |". */
     private static List<Entry> entries(Path dir) throws IOException {
@@ -88,14 +78,14 @@ class VrmlCorpusTest {
         Path dir = corpus();
         List<DynamicTest> tests = new ArrayList<>();
         for (Entry e : entries(dir)) {
-            tests.add(DynamicTest.dynamicTest("#" + e.number + " " + e.file, () -> {
-                VrmlScene scene = new VrmlLoader().load(dir.resolve(e.file));
-                assertEquals(e.ifsTriangles, scene.writtenIfsTriangles(), "IndexedFaceSet triangles as written (manifest count)");
+            tests.add(DynamicTest.dynamicTest("#" + e.number() + " " + e.file(), () -> {
+                VrmlScene scene = new VrmlLoader().load(dir.resolve(e.file()));
+                assertEquals(e.ifsTriangles(), scene.writtenIfsTriangles(), "IndexedFaceSet triangles as written (manifest count)");
                 TessellationWalk.Result r = new TessellationWalk().run(scene.getSceneGroup());
                 TriangleMesh m = r.merged();
-                if (e.ifsTriangles > 0) assertTrue(m.triangleCount() > 0, "triangles from the walk");
-                if (PLAIN_IFS.contains(e.file)) {
-                    assertEquals(e.ifsTriangles, m.triangleCount() + r.degenerate, "walk triangles + dropped zero-area = manifest count");
+                if (e.ifsTriangles() > 0) assertTrue(m.triangleCount() > 0, "triangles from the walk");
+                if (PLAIN_IFS.contains(e.file())) {
+                    assertEquals(e.ifsTriangles(), m.triangleCount() + r.degenerate, "walk triangles + dropped zero-area = manifest count");
                 }
                 for (double[] b : m.bounds()) for (double x : b) assertTrue(Double.isFinite(x), "finite bounds");
                 for (String w : scene.warnings()) assertTrue(w.contains(": warning: "), w);

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 class VrmlLexerTest {
     private static VrmlLexer lexer(String s) {
         byte[] b = s.getBytes(StandardCharsets.UTF_8);
-        return new VrmlLexer(new VrmlText("t.wrl", b, b.length), 0);
+        return new VrmlLexer(new VrmlText("t.wrl", b), 0);
     }
 
     @Test

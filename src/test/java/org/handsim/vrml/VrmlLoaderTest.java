@@ -2,6 +2,7 @@ package org.handsim.vrml;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -18,6 +19,7 @@ import org.handsim.mesh.TriangleMesh;
 import org.jogamp.java3d.BranchGroup;
 import org.jogamp.java3d.Link;
 import org.jogamp.java3d.Material;
+import org.jogamp.java3d.PolygonAttributes;
 import org.jogamp.java3d.Shape3D;
 import org.jogamp.java3d.SharedGroup;
 import org.jogamp.java3d.Switch;
@@ -78,6 +80,18 @@ class VrmlLoaderTest {
         Color3f c = new Color3f();
         a.getAppearance().getMaterial().getDiffuseColor(c);
         assertEquals(new Color3f(1, 0, 0), c);
+    }
+
+    @Test
+    void solidFalseShowsBackFacesAndPrimitivesStaySolid() {
+        VrmlScene s = VrmlTesting.load("Shape { geometry DEF G IndexedFaceSet { solid FALSE coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] }"
+            + " coordIndex [ 0 1 2 ] } }\nShape { geometry USE G }\n" + BOX + "\n");
+        Shape3D open = (Shape3D) s.getSceneGroup().getChild(0);
+        Shape3D reused = (Shape3D) s.getSceneGroup().getChild(1);
+        Shape3D box = (Shape3D) s.getSceneGroup().getChild(2);
+        assertEquals(PolygonAttributes.CULL_NONE, open.getAppearance().getPolygonAttributes().getCullFace());
+        assertSame(open.getAppearance(), reused.getAppearance(), "a USE of the geometry is two-sided too");
+        assertNull(box.getAppearance().getPolygonAttributes(), "Box: Java3D's default back-face culling");
     }
 
     // ------------------------------------------------------------------ PROTO
