@@ -237,12 +237,4 @@ public final class SceneGeometry implements LinkContacts {
         }
         return np;
     }
-
-    @Override
-    public boolean intersects(int finger, int link, double[] worldFromLink) {
-        if (apart(link, worldFromLink)) return false;
-        poseOfObjectInLink(worldFromLink);
-        RigidTransform p = RigidTransform.of(pose);
-        return query.intersects(linkTrees[link - 1], objectTree, p, result);
-    }
 }
