@@ -65,10 +65,10 @@ public final class SceneGeometry implements LinkContacts {
             linkTrees[j - 1] = tree(f, 32, 1.0, k, linkMeshes[j - 1]);
         }
         object.worldFromObject().copyTo(worldFromObject, 0);
-        double[] os = sphere(objectMesh);
+        double[] os = boundingSphere(objectMesh);
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
-        for (int j = 0; j < 3; j++) linkSpheres[j] = sphere(linkMeshes[j]);
+        for (int j = 0; j < 3; j++) linkSpheres[j] = boundingSphere(linkMeshes[j]);
         double diag = 0;
         for (TriangleMesh m : new TriangleMesh[] {objectMesh, linkMeshes[0], linkMeshes[1], linkMeshes[2]}) {
             double[][] b = m.bounds();
@@ -189,8 +189,11 @@ public final class SceneGeometry implements LinkContacts {
         RigidTransform.multiply(linkFromWorld, 0, worldFromObject, 0, pose, 0);
     }
 
-    /** Bounding sphere {cx, cy, cz, r} of a mesh in its own frame (centre of its bounding box). */
-    private static double[] sphere(TriangleMesh m) {
+    /**
+     * Bounding sphere {cx, cy, cz, r} of a mesh in its own frame, metres: centred at the centre
+     * of its bounding box, the radius reaching the farthest vertex.
+     */
+    public static double[] boundingSphere(TriangleMesh m) {
         double[][] b = m.bounds();
         double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]), cz = 0.5 * (b[0][2] + b[1][2]);
         double r = 0;
