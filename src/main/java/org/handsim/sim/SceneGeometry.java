@@ -33,6 +33,8 @@ import org.handsim.vrml.VrmlParseException;
 public final class SceneGeometry implements LinkContacts {
     /** Default k of the k-DOPs (issue 5's default; see docs/BENCHMARKS.md for the others). */
     public static final int DEFAULT_K = 18;
+    /** Divisions the hand's link meshes are loaded at. */
+    public static final int LINK_DIVISIONS = 32;
 
     private static final Map<String, TriangleMesh> MESHES = new ConcurrentHashMap<>();
     private static final Map<String, KdopTree> TREES = new ConcurrentHashMap<>();
@@ -61,8 +63,8 @@ public final class SceneGeometry implements LinkContacts {
         objectTree = tree(object.file(), object.divisions(), object.scale(), k, objectMesh);
         for (int j = 1; j <= 3; j++) {
             Path f = linkFile(j);
-            linkMeshes[j - 1] = mesh(f, 32, 1.0);
-            linkTrees[j - 1] = tree(f, 32, 1.0, k, linkMeshes[j - 1]);
+            linkMeshes[j - 1] = mesh(f, LINK_DIVISIONS, 1.0);
+            linkTrees[j - 1] = tree(f, LINK_DIVISIONS, 1.0, k, linkMeshes[j - 1]);
         }
         object.worldFromObject().copyTo(worldFromObject, 0);
         double[] os = boundingSphere(objectMesh);
