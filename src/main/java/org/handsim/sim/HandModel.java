@@ -70,10 +70,10 @@ public final class HandModel {
     private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
     private final double[][] framesWorld = new double[3][48];
     private final ContactSet[][] linkContacts = new ContactSet[3][3];   // per finger and link
+    // work saving (lazy): the inputs each result was last computed from; NaN (equal to nothing) until then
     private final double[][][] linkCollidedAt = new double[3][3][3];    // joints of each link's last query
-    private final boolean[][] linkValid = new boolean[3][3];
     private final double[][] dynAt = new double[3][9];        // q, qd, qdd of the last dynamics call
-    private final boolean[] dynValid = new boolean[3];
+    private final double[][] lastInput = new double[3][7];    // what drives each finger at its last update (idle)
     // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
     private final double[] lastT = new double[3], lastQ = new double[3], lastTau = new double[3];
     // results
@@ -85,8 +85,6 @@ public final class HandModel {
     private final ContactForces solver = new ContactForces();
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
-    private final double[][] lastInput = new double[3][7];
-    private final boolean[] inputValid = new boolean[3];
     private boolean lazy = true;
     private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
@@ -141,13 +139,13 @@ public final class HandModel {
             motorVel[i] = sample[1];
             motorAcc[i] = sample[2];
             for (int j = 0; j < 3; j++) {
-                linkValid[i][j] = false;
+                java.util.Arrays.fill(linkCollidedAt[i][j], Double.NaN);
                 if (linkContacts[i][j] == null) linkContacts[i][j] = new ContactSet();
                 linkContacts[i][j].clear();
             }
             contacts[i].clear();
-            dynValid[i] = false;
-            inputValid[i] = false;
+            java.util.Arrays.fill(dynAt[i], Double.NaN);
+            java.util.Arrays.fill(lastInput[i], Double.NaN);
             breakTime[i] = Double.NaN;
             breakTorque[i] = Double.NaN;
             breakForce[i] = Double.NaN;
@@ -235,9 +233,8 @@ public final class HandModel {
         double sr = hand.finger(k).spreadRadPerCount();
         double s0 = clutch[i].motor(), s1 = motorVel[i], s2 = motorAcc[i];
         double s3 = sr * spread, s4 = sr * spreadVel, s5 = sr * spreadAcc, s6 = clutch[i].state().ordinal();
-        boolean same = inputValid[i] && in[0] == s0 && in[1] == s1 && in[2] == s2 && in[3] == s3 && in[4] == s4 && in[5] == s5 && in[6] == s6;
+        boolean same = in[0] == s0 && in[1] == s1 && in[2] == s2 && in[3] == s3 && in[4] == s4 && in[5] == s5 && in[6] == s6;
         in[0] = s0; in[1] = s1; in[2] = s2; in[3] = s3; in[4] = s4; in[5] = s5; in[6] = s6;
-        inputValid[i] = true;
         return same;
     }
 
@@ -277,7 +274,7 @@ public final class HandModel {
         boolean changed = false;
         for (int j = 1; j <= 3; j++) {
             double[] at = linkCollidedAt[i][j - 1];
-            boolean same = lazy && linkValid[i][j - 1];
+            boolean same = lazy;
             for (int m = 0; m < j && same; m++) same = at[m] == q[i][m];
             if (same) {
                 counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
@@ -289,7 +286,6 @@ public final class HandModel {
             objectContacts.collide(k, j, linkScratch, lc);
             counters[Counter.COLLISION_QUERIES.ordinal()]++;
             System.arraycopy(q[i], 0, at, 0, 3);
-            linkValid[i][j - 1] = true;
             changed = true;
         }
         if (changed) {
@@ -408,7 +404,7 @@ public final class HandModel {
         int i = k - 1;
         if (scenario.computeTorques()) {
             double[] a = dynAt[i];
-            boolean same = lazy && dynValid[i];
+            boolean same = lazy;
             for (int j = 0; j < 3 && same; j++) {
                 same = a[j] == q[i][j] && a[3 + j] == qd[i][j] && a[6 + j] == qdd[i][j];
             }
@@ -418,7 +414,6 @@ public final class HandModel {
                 dynamics.inverseDynamics(k, q[i], qd[i], qdd[i], gravityK0[i], tauDyn[i]);
                 counters[Counter.DYNAMICS_CALLS.ordinal()]++;
                 for (int j = 0; j < 3; j++) { a[j] = q[i][j]; a[3 + j] = qd[i][j]; a[6 + j] = qdd[i][j]; }
-                dynValid[i] = true;
             }
         }
         clutch[i].transmittedTorque(transmitted);
