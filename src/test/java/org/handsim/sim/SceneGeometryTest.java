@@ -42,7 +42,6 @@ class SceneGeometryTest {
         // centres of the bounding spheres (radii 0.048 and 0.052) are 0.065 apart.
         assertEquals(0, g.collide(1, 2, linkAt(0.03, 0.045, 0.046), cs));
         assertEquals(1, g.lastResult().kdopTests, "one root-against-root test");
-        assertTrue(g.lastResult().kdopTests <= 1, "k-DOP tests " + g.lastResult().kdopTests);
         assertEquals(0, g.lastResult().triangleTests);
     }
 
