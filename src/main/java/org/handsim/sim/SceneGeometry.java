@@ -1,5 +1,6 @@
 package org.handsim.sim;
 
+import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -12,6 +13,7 @@ import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.vrml.VrmlLoader;
 import org.handsim.vrml.VrmlParseException;
+import org.handsim.vrml.VrmlScene;
 
 /**
  * The geometry of a scene and its collision back end: the hand's link meshes
@@ -156,14 +158,27 @@ public final class SceneGeometry implements LinkContacts {
         TriangleMesh m = MESHES.get(key);
         if (m != null) return m;
         try {
-            var scene = new VrmlLoader().divisions(divisions).normals(false).load(file);
-            m = new TessellationWalk().scale(scale).name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
+            m = walk(new VrmlLoader().divisions(divisions).normals(false).load(file), file.getFileName().toString(), scale);
         } catch (VrmlParseException e) {
             throw new ScenarioException(e.getMessage(), e);
         }
         if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
         MESHES.putIfAbsent(key, m);
         return MESHES.get(key);
+    }
+
+    /**
+     * Loads VRML text the way {@link #mesh(Path, int, double)} loads a file, not cached (the
+     * tradeoff studies' generated objects).
+     *
+     * @throws VrmlParseException naming {@code name}, line and column
+     */
+    public static TriangleMesh mesh(String name, Reader vrml, int divisions, double scale) {
+        return walk(new VrmlLoader().divisions(divisions).normals(false).load(name, vrml), name, scale);
+    }
+
+    private static TriangleMesh walk(VrmlScene scene, String name, double scale) {
+        return new TessellationWalk().scale(scale).name(name).run(scene.getSceneGroup()).merged();
     }
 
     private static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {

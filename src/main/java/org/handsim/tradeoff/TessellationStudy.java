@@ -148,8 +148,7 @@ public final class TessellationStudy implements Study {
 
     /** Loads VRML text as {@link SceneGeometry#mesh} loads a scenario's object file. */
     static TriangleMesh mesh(String name, String vrml, int divisions) {
-        var scene = new VrmlLoader().divisions(divisions).normals(false).load(name, new StringReader(vrml));
-        return new TessellationWalk().name(name).run(scene.getSceneGroup()).merged();
+        return SceneGeometry.mesh(name, new StringReader(vrml), divisions, 1.0);
     }
 
     /** A cube of edge {@code edge} centred at the origin, each face an n × n grid of squares, as an IndexedFaceSet. */
