@@ -337,7 +337,7 @@ public final class HandModel {
         for (int s = 1; s < n; s++) {
             double qs = qBefore + (qNow - qBefore) * s / n;
             counters[Counter.SWEPT_SUBSTEPS.ordinal()]++;
-            if (touchesAt(k, qs, eventJoints, innerCounts) != 0) {
+            if (touchesAt(k, qs, innerCounts) != 0) {
                 counters[Counter.TUNNELLING_CAUGHT.ordinal()]++;
                 locate(k, qBefore + (qNow - qBefore) * (s - 1) / n, qs, innerCounts);
                 return true;
@@ -354,12 +354,11 @@ public final class HandModel {
         int i = k - 1;
         FingerClutch c = clutch[i];
         double qNow = c.motor(), qBefore = motorPrev[i];
-        double[] joints = eventJoints;
         for (int it = 0; it < 60 && hi - lo > LOCATE_COUNTS; it++) {
             double mid = 0.5 * (lo + hi);
-            if (touchesAt(k, mid, joints, innerCounts) != 0) hi = mid; else lo = mid;
+            if (touchesAt(k, mid, innerCounts) != 0) hi = mid; else lo = mid;
         }
-        int which = touchesAt(k, hi, joints, innerCounts);
+        int which = touchesAt(k, hi, innerCounts);
         if (which == 0) which = innerCounts ? 2 : 3;
         double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
         if (which == 2) {
@@ -378,12 +377,12 @@ public final class HandModel {
      * count q (state unchanged), else 0. Uses the full contact query, so that the held pose the
      * bisection ends on is one where the contact exists.
      */
-    private int touchesAt(int k, double qm, double[] joints, boolean innerCounts) {
+    private int touchesAt(int k, double qm, boolean innerCounts) {
         int i = k - 1;
-        joints[0] = q[i][0];
-        joints[1] = clutch[i].theta2For(qm);
-        joints[2] = clutch[i].theta3For(qm);
-        framesInWorld(k, joints, frameScratch);
+        eventJoints[0] = q[i][0];
+        eventJoints[1] = clutch[i].theta2For(qm);
+        eventJoints[2] = clutch[i].theta3For(qm);
+        framesInWorld(k, eventJoints, frameScratch);
         counters[Counter.EVENT_QUERIES.ordinal()] += 2;
         eventContacts.clear();
         if (innerCounts) {
