@@ -3,6 +3,7 @@ package org.handsim.chart;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.util.function.IntToDoubleFunction;
 import org.handsim.sim.Recorder;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.NumberAxis;
@@ -43,8 +44,8 @@ public final class PaperCharts {
 
     private static XYPlot panel(Recorder r, int k, int c2, int c3, String label, double scale, double tb, boolean legend) {
         XYSeriesCollection data = new XYSeriesCollection();
-        data.addSeries(series(r, k, c2, "joint " + k + "2", scale));
-        data.addSeries(series(r, k, c3, "joint " + k + "3", scale));
+        data.addSeries(series(r, "joint " + k + "2", row -> r.get(k, c2, row) * scale));
+        data.addSeries(series(r, "joint " + k + "3", row -> r.get(k, c3, row) * scale));
         NumberAxis y = new NumberAxis(label);
         y.setAutoRangeIncludesZero(true);
         XYLineAndShapeRenderer rr = renderer();
@@ -58,11 +59,7 @@ public final class PaperCharts {
     /** Fig. 8: total contact force on finger k against time. */
     public static JFreeChart figure8(Recorder r, int k, double breakawayTime, String title) {
         XYSeriesCollection data = new XYSeriesCollection();
-        XYSeries s = new XYSeries("contact force, finger " + k, false, true);
-        int step = Math.max(1, r.rows() / MAX_POINTS);
-        for (int row = 0; row < r.rows(); row += step) s.add(r.time(row), r.force(k, row), false);
-        if (r.rows() > 0) s.add(r.time(r.rows() - 1), r.force(k, r.rows() - 1), false);
-        data.addSeries(s);
+        data.addSeries(series(r, "contact force, finger " + k, row -> r.force(k, row)));
         NumberAxis x = new NumberAxis("time t (s)");
         NumberAxis y = new NumberAxis("contact force (N)");
         XYPlot p = new XYPlot(data, x, y, renderer());
@@ -73,11 +70,12 @@ public final class PaperCharts {
         return chart;
     }
 
-    private static XYSeries series(Recorder r, int k, int c, String name, double scale) {
+    /** A recorded value against time, thinned to every n-th row (at most {@value #MAX_POINTS}), keeping the last. */
+    private static XYSeries series(Recorder r, String name, IntToDoubleFunction valueAtRow) {
         XYSeries s = new XYSeries(name, false, true);
         int step = Math.max(1, r.rows() / MAX_POINTS);
-        for (int row = 0; row < r.rows(); row += step) s.add(r.time(row), r.get(k, c, row) * scale, false);
-        if (r.rows() > 0) s.add(r.time(r.rows() - 1), r.get(k, c, r.rows() - 1) * scale, false);
+        for (int row = 0; row < r.rows(); row += step) s.add(r.time(row), valueAtRow.applyAsDouble(row), false);
+        if (r.rows() > 0) s.add(r.time(r.rows() - 1), valueAtRow.applyAsDouble(r.rows() - 1), false);
         return s;
     }
 

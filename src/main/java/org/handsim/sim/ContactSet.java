@@ -51,17 +51,6 @@ public final class ContactSet {
         }
     }
 
-    /** Copies another set into this one. */
-    public void copyFrom(ContactSet o) {
-        clear();
-        for (int i = 0; i < o.n; i++) {
-            int j = add(o.links[i], o.points[3 * i], o.points[3 * i + 1], o.points[3 * i + 2],
-                o.normals[3 * i], o.normals[3 * i + 1], o.normals[3 * i + 2], o.areas[i]);
-            forces[j] = o.forces[i];
-            undetermined[j] = o.undetermined[i];
-        }
-    }
-
     public int size() { return n; }
     public int link(int i) { return links[i]; }
     public double force(int i) { return forces[i]; }

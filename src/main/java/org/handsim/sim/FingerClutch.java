@@ -50,12 +50,6 @@ public final class FingerClutch {
     /** The motor's actual position (counts): the set-point, except while STALLED when closing. */
     public double motor() { return motor; }
 
-    /** Motor count where the inner link met the object (NaN if none yet). */
-    public double qContact() { return qContact; }
-
-    /** Motor count of the breakaway (NaN if none). */
-    public double qBreak() { return qBreak; }
-
     /**
      * Advances with the motor set-point; handles re-engagement on opening.
      *
@@ -95,7 +89,7 @@ public final class FingerClutch {
             default:
                 throw new IllegalStateException();
         }
-        if (state == ClutchState.BROKEN && outerAngleRaw() > theta3Max) stall(ClutchState.BROKEN, qAtOuterLimit());
+        if (state == ClutchState.BROKEN && outerAngleRaw() > theta3Max) stall(qAtOuterLimit());
     }
 
     private double qStallMotorLimit() {
@@ -133,14 +127,14 @@ public final class FingerClutch {
     /** The outer link met the object at motor count q: FREE or BROKEN → STALLED. */
     public void outerContact(double q) {
         if (state != ClutchState.FREE && state != ClutchState.BROKEN) return;
-        stall(state, q);
+        stall(q);
     }
 
-    private void stall(ClutchState from, double q) {
-        double t3 = Math.min(theta3Max, theta3At(from, q));
-        heldTheta2 = theta2At(from, q);
-        heldTheta3 = t3;
-        beforeStall = from;
+    /** FREE or BROKEN → STALLED at motor count q: the links held where the current state puts them at q. */
+    private void stall(double q) {
+        heldTheta2 = theta2For(q);
+        heldTheta3 = Math.min(theta3Max, theta3For(q));
+        beforeStall = state;
         qStall = q;
         motor = Math.min(motor, qStallMotorLimit());
         state = ClutchState.STALLED;
@@ -156,15 +150,7 @@ public final class FingerClutch {
         theta3AtBreak = heldTheta3;
         this.tauAtBreak = tauAtBreak;
         state = ClutchState.BROKEN;
-        if (outerAngleRaw() > theta3Max) stall(ClutchState.BROKEN, qAtOuterLimit());
-    }
-
-    private double theta2At(ClutchState s, double q) {
-        return s == ClutchState.FREE ? tr.innerAngle(clampCounts(q)) : heldTheta2;
-    }
-
-    private double theta3At(ClutchState s, double q) {
-        return s == ClutchState.BROKEN ? brokenOuterAngle(q) : tr.outerAngle(clampCounts(q));
+        if (outerAngleRaw() > theta3Max) stall(qAtOuterLimit());
     }
 
     private double clampCounts(double q) {
@@ -173,16 +159,12 @@ public final class FingerClutch {
 
     /** θk2 in radians now. */
     public double theta2() {
-        return state == ClutchState.FREE ? tr.innerAngle(clampCounts(motor)) : heldTheta2;
+        return theta2For(motor);
     }
 
     /** θk3 in radians now. */
     public double theta3() {
-        switch (state) {
-            case FREE: return tr.outerAngle(clampCounts(motor));
-            case BROKEN: return brokenOuterAngle(motor);
-            default: return heldTheta3;
-        }
+        return theta3For(motor);
     }
 
     /** θk2 for a hypothetical motor position q in the current state (for event location). */

@@ -70,10 +70,10 @@ public final class HandModel {
     private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
     private final double[][] framesWorld = new double[3][48];
     private final ContactSet[][] linkContacts = new ContactSet[3][3];   // per finger and link
+    // work saving (lazy): the inputs each result was last computed from; NaN (equal to nothing) until then
     private final double[][][] linkCollidedAt = new double[3][3][3];    // joints of each link's last query
-    private final boolean[][] linkValid = new boolean[3][3];
     private final double[][] dynAt = new double[3][9];        // q, qd, qdd of the last dynamics call
-    private final boolean[] dynValid = new boolean[3];
+    private final double[][] lastInput = new double[3][7];    // what drives each finger at its last update (idle)
     // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
     private final double[] lastT = new double[3], lastQ = new double[3], lastTau = new double[3];
     // results
@@ -85,8 +85,6 @@ public final class HandModel {
     private final ContactForces solver = new ContactForces();
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
-    private final double[][] lastInput = new double[3][7];
-    private final boolean[] inputValid = new boolean[3];
     private boolean lazy = true;
     private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
@@ -141,13 +139,13 @@ public final class HandModel {
             motorVel[i] = sample[1];
             motorAcc[i] = sample[2];
             for (int j = 0; j < 3; j++) {
-                linkValid[i][j] = false;
+                java.util.Arrays.fill(linkCollidedAt[i][j], Double.NaN);
                 if (linkContacts[i][j] == null) linkContacts[i][j] = new ContactSet();
                 linkContacts[i][j].clear();
             }
             contacts[i].clear();
-            dynValid[i] = false;
-            inputValid[i] = false;
+            java.util.Arrays.fill(dynAt[i], Double.NaN);
+            java.util.Arrays.fill(lastInput[i], Double.NaN);
             breakTime[i] = Double.NaN;
             breakTorque[i] = Double.NaN;
             breakForce[i] = Double.NaN;
@@ -235,9 +233,8 @@ public final class HandModel {
         double sr = hand.finger(k).spreadRadPerCount();
         double s0 = clutch[i].motor(), s1 = motorVel[i], s2 = motorAcc[i];
         double s3 = sr * spread, s4 = sr * spreadVel, s5 = sr * spreadAcc, s6 = clutch[i].state().ordinal();
-        boolean same = inputValid[i] && in[0] == s0 && in[1] == s1 && in[2] == s2 && in[3] == s3 && in[4] == s4 && in[5] == s5 && in[6] == s6;
+        boolean same = in[0] == s0 && in[1] == s1 && in[2] == s2 && in[3] == s3 && in[4] == s4 && in[5] == s5 && in[6] == s6;
         in[0] = s0; in[1] = s1; in[2] = s2; in[3] = s3; in[4] = s4; in[5] = s5; in[6] = s6;
-        inputValid[i] = true;
         return same;
     }
 
@@ -277,7 +274,7 @@ public final class HandModel {
         boolean changed = false;
         for (int j = 1; j <= 3; j++) {
             double[] at = linkCollidedAt[i][j - 1];
-            boolean same = lazy && linkValid[i][j - 1];
+            boolean same = lazy;
             for (int m = 0; m < j && same; m++) same = at[m] == q[i][m];
             if (same) {
                 counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
@@ -289,7 +286,6 @@ public final class HandModel {
             objectContacts.collide(k, j, linkScratch, lc);
             counters[Counter.COLLISION_QUERIES.ordinal()]++;
             System.arraycopy(q[i], 0, at, 0, 3);
-            linkValid[i][j - 1] = true;
             changed = true;
         }
         if (changed) {
@@ -341,7 +337,7 @@ public final class HandModel {
         for (int s = 1; s < n; s++) {
             double qs = qBefore + (qNow - qBefore) * s / n;
             counters[Counter.SWEPT_SUBSTEPS.ordinal()]++;
-            if (touchesAt(k, qs, eventJoints, innerCounts) != 0) {
+            if (touchesAt(k, qs, innerCounts) != 0) {
                 counters[Counter.TUNNELLING_CAUGHT.ordinal()]++;
                 locate(k, qBefore + (qNow - qBefore) * (s - 1) / n, qs, innerCounts);
                 return true;
@@ -358,12 +354,11 @@ public final class HandModel {
         int i = k - 1;
         FingerClutch c = clutch[i];
         double qNow = c.motor(), qBefore = motorPrev[i];
-        double[] joints = eventJoints;
         for (int it = 0; it < 60 && hi - lo > LOCATE_COUNTS; it++) {
             double mid = 0.5 * (lo + hi);
-            if (touchesAt(k, mid, joints, innerCounts) != 0) hi = mid; else lo = mid;
+            if (touchesAt(k, mid, innerCounts) != 0) hi = mid; else lo = mid;
         }
-        int which = touchesAt(k, hi, joints, innerCounts);
+        int which = touchesAt(k, hi, innerCounts);
         if (which == 0) which = innerCounts ? 2 : 3;
         double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
         if (which == 2) {
@@ -382,12 +377,12 @@ public final class HandModel {
      * count q (state unchanged), else 0. Uses the full contact query, so that the held pose the
      * bisection ends on is one where the contact exists.
      */
-    private int touchesAt(int k, double qm, double[] joints, boolean innerCounts) {
+    private int touchesAt(int k, double qm, boolean innerCounts) {
         int i = k - 1;
-        joints[0] = q[i][0];
-        joints[1] = clutch[i].theta2For(qm);
-        joints[2] = clutch[i].theta3For(qm);
-        framesInWorld(k, joints, frameScratch);
+        eventJoints[0] = q[i][0];
+        eventJoints[1] = clutch[i].theta2For(qm);
+        eventJoints[2] = clutch[i].theta3For(qm);
+        framesInWorld(k, eventJoints, frameScratch);
         counters[Counter.EVENT_QUERIES.ordinal()] += 2;
         eventContacts.clear();
         if (innerCounts) {
@@ -408,7 +403,7 @@ public final class HandModel {
         int i = k - 1;
         if (scenario.computeTorques()) {
             double[] a = dynAt[i];
-            boolean same = lazy && dynValid[i];
+            boolean same = lazy;
             for (int j = 0; j < 3 && same; j++) {
                 same = a[j] == q[i][j] && a[3 + j] == qd[i][j] && a[6 + j] == qdd[i][j];
             }
@@ -418,7 +413,6 @@ public final class HandModel {
                 dynamics.inverseDynamics(k, q[i], qd[i], qdd[i], gravityK0[i], tauDyn[i]);
                 counters[Counter.DYNAMICS_CALLS.ordinal()]++;
                 for (int j = 0; j < 3; j++) { a[j] = q[i][j]; a[3 + j] = qd[i][j]; a[6 + j] = qdd[i][j]; }
-                dynValid[i] = true;
             }
         }
         clutch[i].transmittedTorque(transmitted);

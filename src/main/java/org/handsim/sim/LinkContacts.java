@@ -21,10 +21,4 @@ public interface LinkContacts {
     default double minThickness() {
         return Double.POSITIVE_INFINITY;
     }
-
-    /** True when the link placed there intersects the object (may be cheaper than collide). */
-    default boolean intersects(int finger, int link, double[] worldFromLink) {
-        ContactSet tmp = new ContactSet();
-        return collide(finger, link, worldFromLink, tmp) > 0;
-    }
 }

@@ -46,6 +46,9 @@ import org.handsim.util.JsonObject;
  * Motors M1–M3 drive fingers 1–3 (counts in [0, 17 500]); M4 is the spread (counts in [0, 3 150]).
  */
 public final class Scenario implements Cloneable {
+    /** The object's {@code divisions} when the file does not give it. */
+    public static final int DEFAULT_DIVISIONS = 24;
+
     // effectively immutable: only the with...() copies below assign after construction
     private String name, description;
     private Path file;
@@ -83,7 +86,7 @@ public final class Scenario implements Cloneable {
             Path f = dir.resolve(o.string("file")).normalize();
             if (!Files.isRegularFile(f)) throw o.error("file", "no such file: " + f);
             double scale = o.has("scale") ? o.positive("scale") : 1.0;
-            int div = o.has("divisions") ? o.integer("divisions") : 24;
+            int div = o.has("divisions") ? o.integer("divisions") : DEFAULT_DIVISIONS;
             if (div < 3 || div > 1024) throw o.error("divisions", "must be in [3, 1024], got " + div);
             object = new ObjectPlacement(f, pose(o), scale, div);
         } else {

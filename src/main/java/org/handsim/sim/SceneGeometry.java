@@ -1,5 +1,6 @@
 package org.handsim.sim;
 
+import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -12,6 +13,7 @@ import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.vrml.VrmlLoader;
 import org.handsim.vrml.VrmlParseException;
+import org.handsim.vrml.VrmlScene;
 
 /**
  * The geometry of a scene and its collision back end: the hand's link meshes
@@ -33,6 +35,8 @@ import org.handsim.vrml.VrmlParseException;
 public final class SceneGeometry implements LinkContacts {
     /** Default k of the k-DOPs (issue 5's default; see docs/BENCHMARKS.md for the others). */
     public static final int DEFAULT_K = 18;
+    /** Divisions the hand's link meshes are loaded at. */
+    public static final int LINK_DIVISIONS = 32;
 
     private static final Map<String, TriangleMesh> MESHES = new ConcurrentHashMap<>();
     private static final Map<String, KdopTree> TREES = new ConcurrentHashMap<>();
@@ -61,14 +65,14 @@ public final class SceneGeometry implements LinkContacts {
         objectTree = tree(object.file(), object.divisions(), object.scale(), k, objectMesh);
         for (int j = 1; j <= 3; j++) {
             Path f = linkFile(j);
-            linkMeshes[j - 1] = mesh(f, 32, 1.0);
-            linkTrees[j - 1] = tree(f, 32, 1.0, k, linkMeshes[j - 1]);
+            linkMeshes[j - 1] = mesh(f, LINK_DIVISIONS, 1.0);
+            linkTrees[j - 1] = tree(f, LINK_DIVISIONS, 1.0, k, linkMeshes[j - 1]);
         }
         object.worldFromObject().copyTo(worldFromObject, 0);
-        double[] os = sphere(objectMesh);
+        double[] os = boundingSphere(objectMesh);
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
-        for (int j = 0; j < 3; j++) linkSpheres[j] = sphere(linkMeshes[j]);
+        for (int j = 0; j < 3; j++) linkSpheres[j] = boundingSphere(linkMeshes[j]);
         double diag = 0;
         for (TriangleMesh m : new TriangleMesh[] {objectMesh, linkMeshes[0], linkMeshes[1], linkMeshes[2]}) {
             diag = Math.max(diag, m.diagonal());
@@ -153,14 +157,27 @@ public final class SceneGeometry implements LinkContacts {
         TriangleMesh m = MESHES.get(key);
         if (m != null) return m;
         try {
-            var scene = new VrmlLoader().divisions(divisions).normals(false).load(file);
-            m = new TessellationWalk().scale(scale).name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
+            m = walk(new VrmlLoader().divisions(divisions).normals(false).load(file), file.getFileName().toString(), scale);
         } catch (VrmlParseException e) {
             throw new ScenarioException(e.getMessage(), e);
         }
         if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
         MESHES.putIfAbsent(key, m);
         return MESHES.get(key);
+    }
+
+    /**
+     * Loads VRML text the way {@link #mesh(Path, int, double)} loads a file, not cached (the
+     * tradeoff studies' generated objects).
+     *
+     * @throws VrmlParseException naming {@code name}, line and column
+     */
+    public static TriangleMesh mesh(String name, Reader vrml, int divisions, double scale) {
+        return walk(new VrmlLoader().divisions(divisions).normals(false).load(name, vrml), name, scale);
+    }
+
+    private static TriangleMesh walk(VrmlScene scene, String name, double scale) {
+        return new TessellationWalk().scale(scale).name(name).run(scene.getSceneGroup()).merged();
     }
 
     private static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {
@@ -188,8 +205,11 @@ public final class SceneGeometry implements LinkContacts {
         RigidTransform.multiply(linkFromWorld, 0, worldFromObject, 0, pose, 0);
     }
 
-    /** Bounding sphere {cx, cy, cz, r} of a mesh in its own frame (centre of its bounding box). */
-    private static double[] sphere(TriangleMesh m) {
+    /**
+     * Bounding sphere {cx, cy, cz, r} of a mesh in its own frame, metres: centred at the centre
+     * of its bounding box, the radius reaching the farthest vertex.
+     */
+    public static double[] boundingSphere(TriangleMesh m) {
         double[][] b = m.bounds();
         double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]), cz = 0.5 * (b[0][2] + b[1][2]);
         double r = 0;
@@ -235,13 +255,5 @@ public final class SceneGeometry implements LinkContacts {
             out.add(link, px, py, pz, nx, ny, nz, patches.area(i));
         }
         return np;
-    }
-
-    @Override
-    public boolean intersects(int finger, int link, double[] worldFromLink) {
-        if (apart(link, worldFromLink)) return false;
-        poseOfObjectInLink(worldFromLink);
-        RigidTransform p = RigidTransform.of(pose);
-        return query.intersects(linkTrees[link - 1], objectTree, p, result);
     }
 }

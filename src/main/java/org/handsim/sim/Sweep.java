@@ -58,7 +58,7 @@ public final class Sweep {
                 String label = run.string("label");
                 JsonObject set = run.has("set") ? run.object("set") : null;
                 Map<String, Object> overrides = new LinkedHashMap<>();
-                if (set != null) for (String k : set.keys()) overrides.put(k, rawValue(set, k));
+                if (set != null) for (String k : set.keys()) overrides.put(k, set.raw(k));
                 String text = baseText;
                 runs.add(new Run(label, () -> Scenario.parse(base, applyOverrides(base, text, overrides))));
             }
@@ -73,10 +73,6 @@ public final class Sweep {
             }
         }
         if (runs.isEmpty()) throw r.error("runs", "the sweep has no runs and no scenarios");
-    }
-
-    private static Object rawValue(JsonObject o, String key) {
-        return o.raw(key);
     }
 
     /** Applies dotted-path overrides to scenario JSON text and returns the new text. */

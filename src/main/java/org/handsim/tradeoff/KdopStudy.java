@@ -15,6 +15,7 @@ import org.handsim.collision.Kdop;
 import org.handsim.collision.KdopTree;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
+import org.handsim.hand.HandDescription;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.sim.HandModel;
@@ -42,8 +43,6 @@ import org.handsim.sim.Simulation;
 public final class KdopStudy implements Study {
     /** Gap between the object's lowest point and the plane of the finger bases, m. */
     static final double CLEARANCE_M = 0.005;
-    /** Height of the finger base frames above the palm frame (hand description Dw), m. */
-    static final double BASE_HEIGHT_M = 0.084;
     /** Timing rounds (round-robin over the settings; the quietest median of each is kept). */
     static final int ROUNDS = 5;
     /** The all-pairs setting's k in the table. */
@@ -73,10 +72,11 @@ public final class KdopStudy implements Study {
 
     /** The grasp scenario of an object (see the class comment). */
     static Scenario graspScenario(Path object) {
-        TriangleMesh m = SceneGeometry.mesh(object, 24, 1.0);
+        TriangleMesh m = SceneGeometry.mesh(object, Scenario.DEFAULT_DIVISIONS, 1.0);
         double[][] b = m.bounds();
         double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]);
-        double z = BASE_HEIGHT_M + CLEARANCE_M - b[0][2];
+        // the finger bases stand Dw above the palm frame
+        double z = HandDescription.barrettHand().palmDw() + CLEARANCE_M - b[0][2];
         String name = object.getFileName().toString().replace(".wrl", "");
         String close = "[{\"type\": \"trapezoid\", \"to\": 17500, \"v_max\": 8000, \"a_max\": 40000}]";
         String json = String.format(Locale.ROOT, "{\"name\": \"grasp-%s\", \"description\": \"all fingers close on %s (chart 3-kdop)\","
@@ -100,7 +100,7 @@ public final class KdopStudy implements Study {
             double[] frames = model.framesWorld(k);
             for (int j = 1; j <= 3; j++) {
                 RigidTransform worldFromLink = RigidTransform.of(java.util.Arrays.copyOfRange(frames, 12 * j, 12 * j + 12));
-                links[3 * (k - 1) + j - 1] = SceneGeometry.mesh(SceneGeometry.linkFile(j), 32, 1.0);
+                links[3 * (k - 1) + j - 1] = SceneGeometry.mesh(SceneGeometry.linkFile(j), SceneGeometry.LINK_DIVISIONS, 1.0);
                 poses[3 * (k - 1) + j - 1] = worldFromLink.inverse().compose(worldFromObject);
             }
         }

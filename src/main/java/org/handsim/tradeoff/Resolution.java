@@ -144,7 +144,7 @@ public final class Resolution {
     static Choice choose(List<Entry> table, Path file, double scale, double tolerance) {
         int coarsest = table.get(0).divisions(), finest = table.get(table.size() - 1).divisions();
         TriangleMesh fine = SceneGeometry.mesh(file, finest, scale), coarse = SceneGeometry.mesh(file, coarsest, scale);
-        double size = boundingRadius(fine);
+        double size = SceneGeometry.boundingSphere(fine)[3];
         if (fine.triangleCount() == coarse.triangleCount() && Arrays.equals(fine.vertices(), coarse.vertices())) {
             return new Choice(true, fine.triangleCount(), size, true, -1, Double.NaN);
         }
@@ -161,19 +161,6 @@ public final class Resolution {
             }
         }
         return new Choice(false, triangles.applyAsInt(best.divisions()), size, false, best.divisions(), best.relativeError() * size);
-    }
-
-    /** Radius of the sphere about the bounding box's centre that holds every vertex, m. */
-    static double boundingRadius(TriangleMesh m) {
-        double[][] b = m.bounds();
-        double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]), cz = 0.5 * (b[0][2] + b[1][2]);
-        double r = 0;
-        double[] v = m.vertices();
-        for (int i = 0; i < v.length; i += 3) {
-            double dx = v[i] - cx, dy = v[i + 1] - cy, dz = v[i + 2] - cz;
-            r = Math.max(r, dx * dx + dy * dy + dz * dz);
-        }
-        return Math.sqrt(r);
     }
 
     /** A length for messages: millimetres with three significant digits. */

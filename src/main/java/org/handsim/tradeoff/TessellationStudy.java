@@ -14,6 +14,7 @@ import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.sim.Scenario;
 import org.handsim.sim.SceneGeometry;
 import org.handsim.vrml.VrmlLoader;
 
@@ -73,8 +74,8 @@ public final class TessellationStudy implements Study {
 
     /** One test object: its name, size, VRML text at a resolution, default resolution and pose rule. */
     enum Shape {
-        SPHERE("sphere", 0.04, 24, 11),
-        CYLINDER("cylinder", 0.03, 24, 12),
+        SPHERE("sphere", 0.04, Scenario.DEFAULT_DIVISIONS, 11),
+        CYLINDER("cylinder", 0.03, Scenario.DEFAULT_DIVISIONS, 12),
         CUBE("cube", 0.03, 1, 13);
 
         final String label;
@@ -102,7 +103,7 @@ public final class TessellationStudy implements Study {
         /** The object's mesh at a resolution, through the scenario objects' loading path. */
         TriangleMesh mesh(int divisions) {
             // the cube's grid is in its text; the loader's divisions (curved primitives only) stay at the default
-            return TessellationStudy.mesh(label + "-" + divisions, vrml(divisions), this == CUBE ? 24 : divisions);
+            return TessellationStudy.mesh(label + "-" + divisions, vrml(divisions), this == CUBE ? Scenario.DEFAULT_DIVISIONS : divisions);
         }
 
         /**
@@ -147,8 +148,7 @@ public final class TessellationStudy implements Study {
 
     /** Loads VRML text as {@link SceneGeometry#mesh} loads a scenario's object file. */
     static TriangleMesh mesh(String name, String vrml, int divisions) {
-        var scene = new VrmlLoader().divisions(divisions).normals(false).load(name, new StringReader(vrml));
-        return new TessellationWalk().name(name).run(scene.getSceneGroup()).merged();
+        return SceneGeometry.mesh(name, new StringReader(vrml), divisions, 1.0);
     }
 
     /** A cube of edge {@code edge} centred at the origin, each face an n × n grid of squares, as an IndexedFaceSet. */
