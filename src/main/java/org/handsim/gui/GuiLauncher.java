@@ -50,7 +50,7 @@ public final class GuiLauncher {
         try {
             MeshSource.Model[] hand = HandSimWindow.loadHand();   // off the EDT (MeshSource)
             ScriptRunner.edt(() -> {
-                HandSimWindow w = new HandSimWindow(o.scenario(), hand, errors, !o.scripted());
+                HandSimWindow w = new HandSimWindow(o.scenario(), hand, !o.scripted());
                 if (o.speed() != null) w.setSpeed(o.speed());
                 errors.onError(m -> SwingUtilities.invokeLater(() -> w.status(m, true)));
                 w.show();
