@@ -1,26 +1,17 @@
 package org.handsim.cli;
 
+import static org.handsim.cli.CliTesting.run;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.handsim.cli.CliTesting.Run;
 import org.junit.jupiter.api.Test;
 
 class KinematicsCommandsTest {
-    /** Exit code, standard output and standard error of one command. */
-    record Run(int code, String out, String err) {}
-
-    static Run run(String... args) {
-        StringWriter o = new StringWriter(), e = new StringWriter();
-        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
-        return new Run(code, o.toString().trim(), e.toString().trim());
-    }
-
     @Test
     void fkPrintsTheContractJson() {
         Run r = run("fk", "--finger", "3", "--joints", "0,1.5275,0.6981317007977318");
