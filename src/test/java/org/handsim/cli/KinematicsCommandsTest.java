@@ -34,6 +34,38 @@ class KinematicsCommandsTest {
         assertTrue(r.out().matches("\\{\"reachable\":(true|false),\"joints\":\\[.*\\],\"fingertip\":\\[.*\\],\"error_m\":.*\\}"), r.out());
     }
 
+    /** {@code --frame palm}: fk's points and ik's target in {P}, through the finger's base placement. */
+    @Test
+    @SuppressWarnings("unchecked")
+    void frameOptionPutsPointsInThePalmFrame() {
+        double[] joints = {0.2, 0.5, 0.3};
+        Run base = run("fk", "--finger", "2", "--joints", "0.2,0.5,0.3");
+        Run palm = run("fk", "--finger", "2", "--joints", "0.2,0.5,0.3", "--frame", "palm");
+        assertEquals(0, palm.code(), palm.err());
+        java.util.Map<String, Object> b = (java.util.Map<String, Object>) org.handsim.util.Json.parse("base", base.out());
+        java.util.Map<String, Object> p = (java.util.Map<String, Object>) org.handsim.util.Json.parse("palm", palm.out());
+        assertEquals("palm", p.get("frame"));
+        org.handsim.math.RigidTransform placement = org.handsim.kinematics.FingerKinematics.of(2).baseInPalm();
+        double[] tipBase = org.handsim.kinematics.FingerKinematics.of(2).fingertip(joints);
+        double[] want = placement.apply(tipBase);
+        List<Object> tipPalm = (List<Object>) p.get("fingertip"), tipInBase = (List<Object>) b.get("fingertip");
+        for (int i = 0; i < 3; i++) {
+            assertEquals(tipBase[i], ((Number) tipInBase.get(i)).doubleValue(), 1e-15);
+            assertEquals(want[i], ((Number) tipPalm.get(i)).doubleValue(), 1e-15);
+        }
+        // that palm-frame point is reachable by ik in the palm frame
+        String target = want[0] + "," + want[1] + "," + want[2];
+        Run ik = run("ik", "--finger", "2", "--target", target, "--frame", "palm");
+        assertEquals(0, ik.code(), ik.err());
+        assertTrue(ik.out().startsWith("{\"reachable\":true,"), ik.out());
+
+        for (Run r : new Run[] {run("fk", "--finger", "1", "--joints", "0,0,0", "--frame", "world"),
+            run("ik", "--finger", "1", "--target", "0,0,0", "--frame", "world")}) {
+            assertEquals(2, r.code(), r.err());
+            assertEquals("handsim: --frame must be base or palm, got 'world'", r.err());
+        }
+    }
+
     @Test
     void badArgumentsExitTwoWithOneLineNamingThem() {
         Run r = run("fk", "--finger", "4", "--joints", "0,0,0");
