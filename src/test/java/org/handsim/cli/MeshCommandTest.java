@@ -125,14 +125,12 @@ class MeshCommandTest {
     }
 
     @Test
-    void useBombIsRefusedQuickly() throws IOException {
+    void useBombIsRefusedBeforeExpanding() throws IOException {
         // each level USEs the previous one twice: 2^40 boxes from a 2 kB file
         StringBuilder sb = new StringBuilder("#VRML V2.0 utf8\nDEF L0 Shape { geometry Box { } }\n");
         for (int i = 1; i <= 40; i++) sb.append("DEF L").append(i).append(" Group { children [ USE L").append(i - 1).append(" USE L").append(i - 1).append(" ] }\n");
         Path p = file("bomb.wrl", sb.toString());
-        long t0 = System.nanoTime();
         assertEquals(3, run("mesh", p.toString()));
-        assertTrue(System.nanoTime() - t0 < 2_000_000_000L, "refused at once");
         assertTrue(err.startsWith(p + ":1:1: the scene expands to "), err);
         assertEquals(1, err.split("\n").length, err);
     }
