@@ -22,7 +22,6 @@ import picocli.CommandLine.Model.CommandSpec;
 public final class FkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,t1,t2,t3";
     static final String ADDED_HEADER = "o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
-    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 

@@ -22,7 +22,6 @@ import picocli.CommandLine.Model.CommandSpec;
 public final class IkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,x,y,z";
     static final String ADDED_HEADER = "reachable,t1,t2,t3,error_m";
-    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 

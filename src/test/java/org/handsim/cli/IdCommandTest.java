@@ -115,7 +115,7 @@ class IdCommandTest {
         assertEquals(0, run("id", "--input", in.toString(), "--output", outCsv.toString(), "--method", "ne"), err);
         List<String> lines = Files.readAllLines(outCsv);
         assertEquals(4, lines.size());
-        assertEquals(IdCommand.IN_HEADER + ",tau1,tau2,tau3", lines.get(0));
+        assertEquals("finger,q1,q2,q3,qd1,qd2,qd3,qdd1,qdd2,qdd3,gx,gy,gz,tau1,tau2,tau3", lines.get(0), "the README's header");
         HandDynamics hd = HandDynamics.of(HandDescription.barrettHand(), HandDynamics.Method.NEWTON_EULER);
         double[] tau = new double[3];
         hd.inverseDynamics(1, new double[] {0.1, 0.5, 0.3}, new double[] {1, 2, 3}, new double[] {4, -5, 6}, new double[] {0, 0, -9.81}, tau);

@@ -121,7 +121,7 @@ class KinematicsCommandsTest {
         Run r = run("fk", "--input", in.toString(), "--output", out.toString());
         assertEquals(0, r.code(), r.err());
         List<String> lines = Files.readAllLines(out);
-        assertEquals(FkCommand.OUT_HEADER, lines.get(0));
+        assertEquals("finger,t1,t2,t3,o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z", lines.get(0), "the README's header");
         assertEquals(4, lines.size());
         assertTrue(lines.get(1).startsWith("1,0,0,0,0.0,0.0,0.0,0.05,"), lines.get(1));
 

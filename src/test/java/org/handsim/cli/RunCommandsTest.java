@@ -89,7 +89,9 @@ class RunCommandsTest {
         CliTesting.Run r = CliTesting.run("sweep", sweep.toString(), "--out", dir.resolve("out").toString(), "--threads", "2");
         assertEquals(1, r.code(), r.err());
         List<String> rows = Files.readAllLines(dir.resolve("out").resolve("summary.csv"));
-        assertEquals(SweepCommand.HEADER, rows.get(0));
+        assertEquals("run,scenario,status,sim_time_s,steps,wall_time_s,final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
+            + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error",
+            rows.get(0), "the README's header");
         assertEquals(4, rows.size());
         assertTrue(rows.get(1).startsWith("as is,paper-breakaway,ok,"), rows.get(1));
         assertTrue(rows.get(1).contains(",1.800"), rows.get(1));
