@@ -27,6 +27,13 @@ final class Args {
         return out;
     }
 
+    /** Checks {@code --frame}: true for {@code palm}, false for {@code base}. */
+    static boolean palmFrame(String frame) {
+        if (frame.equals("palm")) return true;
+        if (frame.equals("base")) return false;
+        throw CliError.usage("handsim: --frame must be base or palm, got '" + frame + "'");
+    }
+
     /** Checks a finger number. */
     static int finger(Integer k) {
         if (k == null) throw CliError.usage("handsim: missing --finger (1, 2 or 3)");

@@ -22,7 +22,6 @@ import picocli.CommandLine.Model.CommandSpec;
 public final class FkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,t1,t2,t3";
     static final String ADDED_HEADER = "o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
-    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 
@@ -46,8 +45,8 @@ public final class FkCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (!frame.equals("base") && !frame.equals("palm")) throw CliError.usage("handsim: --frame must be base or palm, got '" + frame + "'");
-        if (input != null || output != null) return bulk();
+        boolean palm = Args.palmFrame(frame);
+        if (input != null || output != null) return bulk(palm);
         int k = Args.finger(finger);
         double[] j;
         if ((joints == null) == (counts == null)) throw CliError.usage("handsim: give exactly one of --joints or --counts");
@@ -66,7 +65,7 @@ public final class FkCommand implements Callable<Integer> {
         double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
         try {
             FingerKinematics fk = FingerKinematics.of(k);
-            if (frame.equals("palm")) fk.framesInPalm(j, frames); else fk.frames(j, frames);
+            if (palm) fk.framesInPalm(j, frames); else fk.frames(j, frames);
         } catch (IllegalArgumentException e) {
             throw CliError.usage("handsim: --joints: " + e.getMessage());
         }
@@ -82,7 +81,7 @@ public final class FkCommand implements Callable<Integer> {
         return 0;
     }
 
-    private int bulk() throws IOException {
+    private int bulk(boolean palm) throws IOException {
         FingerKinematics[] fks = {FingerKinematics.of(1), FingerKinematics.of(2), FingerKinematics.of(3)};
         double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
         double[] j = new double[3];
@@ -91,7 +90,7 @@ public final class FkCommand implements Callable<Integer> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) j[i] = in.number(i + 1);
                 try {
-                    if (frame.equals("palm")) fks[k - 1].framesInPalm(j, frames); else fks[k - 1].frames(j, frames);
+                    if (palm) fks[k - 1].framesInPalm(j, frames); else fks[k - 1].frames(j, frames);
                 } catch (IllegalArgumentException e) {
                     throw in.error(e.getMessage());
                 }

@@ -33,7 +33,6 @@ import picocli.CommandLine.Model.CommandSpec;
 public final class IdCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,q1,q2,q3,qd1,qd2,qd3,qdd1,qdd2,qdd3,gx,gy,gz";
     static final String ADDED_HEADER = "tau1,tau2,tau3";
-    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 

@@ -22,7 +22,6 @@ import picocli.CommandLine.Model.CommandSpec;
 public final class IkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,x,y,z";
     static final String ADDED_HEADER = "reachable,t1,t2,t3,error_m";
-    static final String OUT_HEADER = IN_HEADER + "," + ADDED_HEADER;
 
     @Spec CommandSpec spec;
 
@@ -43,12 +42,12 @@ public final class IkCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (!frame.equals("base") && !frame.equals("palm")) throw CliError.usage("handsim: --frame must be base or palm, got '" + frame + "'");
-        if (input != null || output != null) return bulk();
+        boolean palm = Args.palmFrame(frame);
+        if (input != null || output != null) return bulk(palm);
         int k = Args.finger(finger);
         double[] t = Args.numbers("--target", target, 3);
         InverseKinematics ik = InverseKinematics.of(k);
-        IkResult r = frame.equals("palm") ? ik.solveInPalm(t) : ik.solve(t);
+        IkResult r = palm ? ik.solveInPalm(t) : ik.solve(t);
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("reachable", r.reachable());
         out.put("joints", r.joints());
@@ -58,14 +57,14 @@ public final class IkCommand implements Callable<Integer> {
         return 0;
     }
 
-    private int bulk() throws IOException {
+    private int bulk(boolean palm) throws IOException {
         InverseKinematics[] iks = {InverseKinematics.of(1), InverseKinematics.of(2), InverseKinematics.of(3)};
         double[] t = new double[3];
         return BulkCsv.run(spec, "ik", input, output, finger != null || target != null, "--finger or --target",
             IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
-                IkResult r = frame.equals("palm") ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
+                IkResult r = palm ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
                 double[] j = r.joints();
                 sb.append(',').append(r.reachable()).append(',').append(Args.csv(j[0])).append(',').append(Args.csv(j[1]))
                     .append(',').append(Args.csv(j[2])).append(',').append(Args.csv(r.errorM()));

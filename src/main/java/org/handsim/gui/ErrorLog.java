@@ -40,13 +40,6 @@ public final class ErrorLog implements Thread.UncaughtExceptionHandler {
         }
     }
 
-    /** Records a failure that was caught but must still fail a scripted run. */
-    public void record(String message) {
-        synchronized (entries) {
-            entries.add(message);
-        }
-    }
-
     /** @return the entries so far */
     public List<String> entries() {
         synchronized (entries) {

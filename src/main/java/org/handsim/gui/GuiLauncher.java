@@ -50,7 +50,7 @@ public final class GuiLauncher {
         try {
             MeshSource.Model[] hand = HandSimWindow.loadHand();   // off the EDT (MeshSource)
             ScriptRunner.edt(() -> {
-                HandSimWindow w = new HandSimWindow(o.scenario(), hand, errors, !o.scripted());
+                HandSimWindow w = new HandSimWindow(o.scenario(), hand, !o.scripted());
                 if (o.speed() != null) w.setSpeed(o.speed());
                 errors.onError(m -> SwingUtilities.invokeLater(() -> w.status(m, true)));
                 w.show();
@@ -93,12 +93,7 @@ public final class GuiLauncher {
             if (o.object() != null) runner.importObject(o.object().toAbsolutePath());
             if (o.script() != null) runner.run(o.script());
             if (o.screenshot() != null) runner.screenshot(o.screenshot().toAbsolutePath());
-            if (o.measureFps() != null) {
-                double fps = w.view().measureFps(o.measureFps());
-                int[] info = ScriptRunner.edt(() -> new int[] {w.view().canvas().getWidth(), w.view().canvas().getHeight(), w.triangleCount()});
-                out.println(String.format(Locale.ROOT, "gui: fps %.1f (view %dx%d, %d triangles, %.1f s of continuous rendering)",
-                    fps, info[0], info[1], info[2], o.measureFps()));
-            }
+            if (o.measureFps() != null) runner.measureFps(o.measureFps());
         } catch (ScriptRunner.ScriptFailure f) {
             err.println("handsim gui: " + f.getMessage());
             code = f.exitCode();

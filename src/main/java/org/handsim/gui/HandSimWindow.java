@@ -72,7 +72,6 @@ public final class HandSimWindow {
     private final SceneView view;
     private final TraceCharts charts = new TraceCharts();
     private final SimulationRunner runner;
-    private final ErrorLog errors;
     private final boolean interactive;
     private final Scenario original;
     private Scenario scenario;
@@ -100,13 +99,11 @@ public final class HandSimWindow {
      *
      * @param scenario    the scenario to open
      * @param hand        the palm and link meshes ({@link #loadHand()}, read beforehand off this thread)
-     * @param errors      where uncaught exceptions are recorded
      * @param interactive false in scripted mode: no modal dialogs
      */
-    public HandSimWindow(Scenario scenario, MeshSource.Model[] hand, ErrorLog errors, boolean interactive) {
+    public HandSimWindow(Scenario scenario, MeshSource.Model[] hand, boolean interactive) {
         this.original = scenario;
         this.scenario = scenario;
-        this.errors = errors;
         this.interactive = interactive;
         // the Canvas3D is heavyweight: menus and tool tips must be too, or they hide behind it
         JPopupMenu.setDefaultLightWeightPopupEnabled(false);
@@ -225,8 +222,6 @@ public final class HandSimWindow {
     public SceneView view() { return view; }
     public TraceCharts charts() { return charts; }
     public SimulationRunner runner() { return runner; }
-    public ErrorLog errors() { return errors; }
-    public boolean interactive() { return interactive; }
     public DynamicsPanel dynamics() { return dynamics; }
     public KinematicsPanel kinematics() { return kinematics; }
     public ObjectsPanel objectsPanel() { return objects; }
@@ -424,12 +419,4 @@ public final class HandSimWindow {
         tick();
         charts.flush();
     }
-
-    /** Opens the tool panel with the given name (one of {@link #TOOLS}). */
-    public void openTool(String name) {
-        cards.show(toolPanel, name);
-    }
-
-    /** The component tree's root, for scripts that look components up by name. */
-    public java.awt.Container root() { return frame.getContentPane(); }
 }

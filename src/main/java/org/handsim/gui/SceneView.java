@@ -90,6 +90,7 @@ public final class SceneView {
     private final SpinBehavior spin = new SpinBehavior();
     private final OrbitBehavior orbit;
     private final Transform3D scratch = new Transform3D();
+    private final Vector3d scratchV = new Vector3d();
     private final double[] m16 = new double[16];
     private BranchGroup objectBranch;
     private boolean showContacts = true;
@@ -246,9 +247,7 @@ public final class SceneView {
         BitSet mask = new BitSet(MAX_CONTACTS + 1);
         double[] pts = p.contactPoints(), nrm = p.contactNormals();
         for (int i = 0; i < n; i++) {
-            scratch.setIdentity();
-            scratch.setTranslation(new Vector3d(pts[3 * i], pts[3 * i + 1], pts[3 * i + 2]));
-            contactTg[i].setTransform(scratch);
+            translate(contactTg[i], pts, 3 * i);
             mask.set(i);
             for (int c = 0; c < 3; c++) {
                 normalCoords[6 * i + c] = (float) pts[3 * i + c];
@@ -262,8 +261,8 @@ public final class SceneView {
         }
         contactSwitch.setChildMask(showContacts ? mask : new BitSet());
         BitSet markers = new BitSet(2);
-        if (p.target() != null) { translate(targetTg, p.target()); markers.set(0); }
-        if (p.closest() != null) { translate(closestTg, p.closest()); markers.set(1); }
+        if (p.target() != null) { translate(targetTg, p.target(), 0); markers.set(0); }
+        if (p.closest() != null) { translate(closestTg, p.closest(), 0); markers.set(1); }
         markerSwitch.setChildMask(markers);
     }
 
@@ -349,9 +348,11 @@ public final class SceneView {
         tg.setTransform(scratch);
     }
 
-    private void translate(TransformGroup tg, double[] p) {
+    /** Places {@code tg} at the point {@code p[off..off+2]}. */
+    private void translate(TransformGroup tg, double[] p, int off) {
         scratch.setIdentity();
-        scratch.setTranslation(new Vector3d(p[0], p[1], p[2]));
+        scratchV.set(p[off], p[off + 1], p[off + 2]);
+        scratch.setTranslation(scratchV);
         tg.setTransform(scratch);
     }
 

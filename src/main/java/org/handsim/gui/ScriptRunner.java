@@ -133,14 +133,7 @@ public final class ScriptRunner {
                 break;
             }
             case LOG: log(a.arg(0)); break;
-            case MEASURE_FPS: {
-                double seconds = Double.parseDouble(a.arg(0));
-                double fps = window.view().measureFps(seconds);
-                java.awt.Dimension d = edt(() -> window.view().canvas().getSize());
-                say(String.format(Locale.ROOT, "fps %.1f (view %dx%d, %d triangles, %.1f s of continuous rendering)",
-                    fps, d.width, d.height, edt(window::triangleCount), seconds));
-                break;
-            }
+            case MEASURE_FPS: measureFps(Double.parseDouble(a.arg(0))); break;
             default:
                 throw new AssertionError(a.verb());
         }
@@ -153,6 +146,17 @@ public final class ScriptRunner {
         window.runner().sync();
         edt(() -> { window.refreshNow(); return null; });
         say("imported " + f);
+    }
+
+    /**
+     * Renders continuously for {@code seconds} and prints {@code gui: fps F (view WxH, N triangles,
+     * S s of continuous rendering)}.
+     */
+    public void measureFps(double seconds) throws Exception {
+        double fps = window.view().measureFps(seconds);
+        int[] info = edt(() -> new int[] {window.view().canvas().getWidth(), window.view().canvas().getHeight(), window.triangleCount()});
+        say(String.format(Locale.ROOT, "fps %.1f (view %dx%d, %d triangles, %.1f s of continuous rendering)",
+            fps, info[0], info[1], info[2], seconds));
     }
 
     private void say(String line) {

@@ -129,7 +129,7 @@ public final class SimulationRunner implements AutoCloseable {
     public void step() {
         commands.add(() -> {
             playing = false;
-            if (model != null && model.running() && error == null) advance(1);
+            if (model != null && model.running() && error == null) advance();
             publish();
         });
     }
@@ -260,7 +260,7 @@ public final class SimulationRunner implements AutoCloseable {
         target = Math.min(target, stopAt);
         int steps = 0;
         while (model.running() && model.time() + 0.5 * model.scenario().dt() < target) {
-            if (!advance(1)) break;
+            if (!advance()) break;
             steps++;
             if ((steps & 15) == 0 && System.nanoTime() - start > BATCH_BUDGET_NS) break;
         }
@@ -269,18 +269,16 @@ public final class SimulationRunner implements AutoCloseable {
         if (playing && speed != 0 && steps == 0) Thread.sleep(2);
     }
 
-    /** Steps n times, recording trace rows; false if the run stopped with an error. */
-    private boolean advance(int n) {
+    /** One step, recording a trace row when one is due and clutch events; false if the run stopped with an error. */
+    private boolean advance() {
         try {
-            for (int i = 0; i < n; i++) {
-                model.step();
-                if (model.time() >= nextTraceTime - 1e-12) traceRow();
-                for (int k = 1; k <= 3; k++) {
-                    ClutchState c = model.state(k);
-                    if (c != lastClutch[k - 1]) {
-                        events.add(new Event(generation, model.time(), k, lastClutch[k - 1], c));
-                        lastClutch[k - 1] = c;
-                    }
+            model.step();
+            if (model.time() >= nextTraceTime - 1e-12) traceRow();
+            for (int k = 1; k <= 3; k++) {
+                ClutchState c = model.state(k);
+                if (c != lastClutch[k - 1]) {
+                    events.add(new Event(generation, model.time(), k, lastClutch[k - 1], c));
+                    lastClutch[k - 1] = c;
                 }
             }
             return true;

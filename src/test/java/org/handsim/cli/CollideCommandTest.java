@@ -1,11 +1,11 @@
 package org.handsim.cli;
 
+import static org.handsim.cli.CliTesting.run;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.util.Map;
+import org.handsim.cli.CliTesting.Run;
 import org.handsim.collision.TestMeshes;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
@@ -14,14 +14,6 @@ import org.junit.jupiter.api.Test;
 
 /** {@code handsim collide}: the JSON contract, the argument errors. */
 class CollideCommandTest {
-    record Run(int code, String out, String err) {}
-
-    static Run run(String... args) {
-        StringWriter o = new StringWriter(), e = new StringWriter();
-        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
-        return new Run(code, o.toString().trim(), e.toString().trim());
-    }
-
     /** The bench scenario sphere_overlap_rot at 320 triangles: FCL's 56 pairs, one patch (a circle). */
     @Test
     void jsonContractOnTheRotatedOverlap() {

@@ -5,16 +5,14 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Comparator;
 import java.util.List;
 import java.util.stream.Stream;
 import org.handsim.dynamics.HandDynamics;
 import org.handsim.hand.HandDescription;
 import org.handsim.util.Json;
+import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -30,17 +28,14 @@ class IdCommandTest {
 
     @AfterEach
     void removeDir() throws IOException {
-        try (Stream<Path> s = Files.walk(dir)) {
-            s.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
-        }
+        VrmlTesting.deleteTree(dir);
     }
 
     private int run(String... args) {
-        StringWriter o = new StringWriter(), e = new StringWriter();
-        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
-        out = o.toString();
-        err = e.toString();
-        return code;
+        CliTesting.Run r = CliTesting.run(args);
+        out = r.out();
+        err = r.err();
+        return r.code();
     }
 
     @SuppressWarnings("unchecked")
@@ -120,7 +115,7 @@ class IdCommandTest {
         assertEquals(0, run("id", "--input", in.toString(), "--output", outCsv.toString(), "--method", "ne"), err);
         List<String> lines = Files.readAllLines(outCsv);
         assertEquals(4, lines.size());
-        assertEquals(IdCommand.IN_HEADER + ",tau1,tau2,tau3", lines.get(0));
+        assertEquals("finger,q1,q2,q3,qd1,qd2,qd3,qdd1,qdd2,qdd3,gx,gy,gz,tau1,tau2,tau3", lines.get(0), "the README's header");
         HandDynamics hd = HandDynamics.of(HandDescription.barrettHand(), HandDynamics.Method.NEWTON_EULER);
         double[] tau = new double[3];
         hd.inverseDynamics(1, new double[] {0.1, 0.5, 0.3}, new double[] {1, 2, 3}, new double[] {4, -5, 6}, new double[] {0, 0, -9.81}, tau);

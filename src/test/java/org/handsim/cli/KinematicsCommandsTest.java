@@ -1,26 +1,18 @@
 package org.handsim.cli;
 
+import static org.handsim.cli.CliTesting.run;
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.handsim.cli.CliTesting.Run;
 import org.junit.jupiter.api.Test;
 
 class KinematicsCommandsTest {
-    /** Exit code, standard output and standard error of one command. */
-    record Run(int code, String out, String err) {}
-
-    static Run run(String... args) {
-        StringWriter o = new StringWriter(), e = new StringWriter();
-        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
-        return new Run(code, o.toString().trim(), e.toString().trim());
-    }
-
     @Test
     void fkPrintsTheContractJson() {
         Run r = run("fk", "--finger", "3", "--joints", "0,1.5275,0.6981317007977318");
@@ -29,18 +21,67 @@ class KinematicsCommandsTest {
         assertTrue(r.out().contains("\"fingertip\":["), r.out());
     }
 
-    @Test
-    void fkFromCountsMatchesJoints() {
-        Run a = run("fk", "--finger", "2", "--counts", "17500,3150");
-        assertEquals(0, a.code(), a.err());
-        assertTrue(a.out().contains("\"joints\":[3.14159265358979"), a.out());
+    /** The JSON object a command printed. */
+    @SuppressWarnings("unchecked")
+    private static java.util.Map<String, Object> json(Run r) {
+        assertEquals(0, r.code(), r.err());
+        return (java.util.Map<String, Object>) org.handsim.util.Json.parse("stdout", r.out());
     }
 
+    /** A JSON array of numbers. */
+    @SuppressWarnings("unchecked")
+    private static double[] doubles(Object o) {
+        List<Object> l = (List<Object>) o;
+        double[] v = new double[l.size()];
+        for (int i = 0; i < v.length; i++) v[i] = ((Number) l.get(i)).doubleValue();
+        return v;
+    }
+
+    /** Counts go through the transmission, paper eqs (1)-(4): θ21 = (2/35)·q_M4 °, θ22 = q_M2/125 °, θ23 = q_M2/375 °. */
+    @Test
+    void fkFromCountsMatchesJoints() {
+        java.util.Map<String, Object> byCounts = json(run("fk", "--finger", "2", "--counts", "17500,3150"));
+        double[] j = doubles(byCounts.get("joints"));
+        double[] paper = {Math.toRadians(2.0 / 35 * 3150), Math.toRadians(17500 / 125.0), Math.toRadians(17500 / 375.0)};
+        for (int i = 0; i < 3; i++) assertEquals(paper[i], j[i], 1e-12, "joint " + (i + 1));
+        java.util.Map<String, Object> byJoints = json(run("fk", "--finger", "2", "--joints", j[0] + "," + j[1] + "," + j[2]));
+        assertEquals(byJoints.get("origins"), byCounts.get("origins"));
+    }
+
+    /** ik's joints put the fingertip on the target by forward kinematics (the fk command, DH). */
     @Test
     void ikRoundTripThroughTheCommand() {
-        Run r = run("ik", "--finger", "1", "--target", "0.05,-0.09,0.08");
-        assertEquals(0, r.code(), r.err());
-        assertTrue(r.out().matches("\\{\"reachable\":(true|false),\"joints\":\\[.*\\],\"fingertip\":\\[.*\\],\"error_m\":.*\\}"), r.out());
+        double[] target = {0.05, -0.09, 0.08};
+        java.util.Map<String, Object> ik = json(run("ik", "--finger", "1", "--target", "0.05,-0.09,0.08"));
+        assertEquals(Boolean.TRUE, ik.get("reachable"));
+        assertTrue(((Number) ik.get("error_m")).doubleValue() < 1e-12, ik.toString());
+        double[] j = doubles(ik.get("joints"));
+        double[] tip = doubles(json(run("fk", "--finger", "1", "--joints", j[0] + "," + j[1] + "," + j[2])).get("fingertip"));
+        assertArrayEquals(target, tip, 1e-12);
+        assertArrayEquals(target, doubles(ik.get("fingertip")), 1e-12);
+    }
+
+    /** {@code --frame palm}: fk's points and ik's target in {P}, through the finger's base placement. */
+    @Test
+    void frameOptionPutsPointsInThePalmFrame() {
+        double[] joints = {0.2, 0.5, 0.3};
+        java.util.Map<String, Object> b = json(run("fk", "--finger", "2", "--joints", "0.2,0.5,0.3"));
+        java.util.Map<String, Object> p = json(run("fk", "--finger", "2", "--joints", "0.2,0.5,0.3", "--frame", "palm"));
+        assertEquals("palm", p.get("frame"));
+        double[] tipBase = org.handsim.kinematics.FingerKinematics.of(2).fingertip(joints);
+        double[] want = org.handsim.kinematics.FingerKinematics.of(2).baseInPalm().apply(tipBase);
+        assertArrayEquals(tipBase, doubles(b.get("fingertip")), 1e-15);
+        assertArrayEquals(want, doubles(p.get("fingertip")), 1e-15);
+        // ik takes that palm-frame point as a palm-frame target, and answers in that frame
+        java.util.Map<String, Object> ik = json(run("ik", "--finger", "2", "--target", want[0] + "," + want[1] + "," + want[2], "--frame", "palm"));
+        assertEquals(Boolean.TRUE, ik.get("reachable"));
+        assertArrayEquals(want, doubles(ik.get("fingertip")), 1e-12);
+
+        for (Run r : new Run[] {run("fk", "--finger", "1", "--joints", "0,0,0", "--frame", "world"),
+            run("ik", "--finger", "1", "--target", "0,0,0", "--frame", "world")}) {
+            assertEquals(2, r.code(), r.err());
+            assertEquals("handsim: --frame must be base or palm, got 'world'", r.err());
+        }
     }
 
     @Test
@@ -80,7 +121,7 @@ class KinematicsCommandsTest {
         Run r = run("fk", "--input", in.toString(), "--output", out.toString());
         assertEquals(0, r.code(), r.err());
         List<String> lines = Files.readAllLines(out);
-        assertEquals(FkCommand.OUT_HEADER, lines.get(0));
+        assertEquals("finger,t1,t2,t3,o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z", lines.get(0), "the README's header");
         assertEquals(4, lines.size());
         assertTrue(lines.get(1).startsWith("1,0,0,0,0.0,0.0,0.0,0.05,"), lines.get(1));
 

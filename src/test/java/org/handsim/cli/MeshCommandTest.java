@@ -4,14 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.handsim.util.Json;
+import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -28,17 +27,14 @@ class MeshCommandTest {
 
     @AfterEach
     void removeDir() throws IOException {
-        try (java.util.stream.Stream<Path> s = Files.walk(dir)) {
-            s.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
-        }
+        VrmlTesting.deleteTree(dir);
     }
 
     private int run(String... args) {
-        StringWriter o = new StringWriter(), e = new StringWriter();
-        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
-        out = o.toString();
-        err = e.toString();
-        return code;
+        CliTesting.Run r = CliTesting.run(args);
+        out = r.out();
+        err = r.err();
+        return r.code();
     }
 
     private Path file(String name, String text) throws IOException {
@@ -106,10 +102,9 @@ class MeshCommandTest {
         Path p = file("bad.wrl", "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet {\n coord Coordinate { point [ 0 0 0 ] }\n coordIndex [ 0 5 0 ] } }\n");
         assertEquals(3, run("mesh", p.toString()));
         assertEquals("", out);
-        assertEquals(p + ":4:17: coordIndex[1] = 5 in IndexedFaceSet is out of range: the Coordinate has 1 entry (0..0)\n",
-            err.replace("\r\n", "\n"));
+        assertEquals(p + ":4:17: coordIndex[1] = 5 in IndexedFaceSet is out of range: the Coordinate has 1 entry (0..0)", err);
         assertEquals(3, run("mesh", dir.resolve("absent.wrl").toString()));
-        assertEquals(dir.resolve("absent.wrl") + ":1:1: cannot read the file: no such file", err.trim());
+        assertEquals(dir.resolve("absent.wrl") + ":1:1: cannot read the file: no such file", err);
     }
 
     @Test
@@ -130,15 +125,13 @@ class MeshCommandTest {
     }
 
     @Test
-    void useBombIsRefusedQuickly() throws IOException {
+    void useBombIsRefusedBeforeExpanding() throws IOException {
         // each level USEs the previous one twice: 2^40 boxes from a 2 kB file
         StringBuilder sb = new StringBuilder("#VRML V2.0 utf8\nDEF L0 Shape { geometry Box { } }\n");
         for (int i = 1; i <= 40; i++) sb.append("DEF L").append(i).append(" Group { children [ USE L").append(i - 1).append(" USE L").append(i - 1).append(" ] }\n");
         Path p = file("bomb.wrl", sb.toString());
-        long t0 = System.nanoTime();
         assertEquals(3, run("mesh", p.toString()));
-        assertTrue(System.nanoTime() - t0 < 2_000_000_000L, "refused at once");
         assertTrue(err.startsWith(p + ":1:1: the scene expands to "), err);
-        assertEquals(1, err.trim().split("\n").length, err);
+        assertEquals(1, err.split("\n").length, err);
     }
 }

@@ -16,7 +16,7 @@ class RunCommandsTest {
     @Test
     void runWritesTheContractFiles() throws Exception {
         Path out = Files.createTempDirectory("handsim-run");
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", "--out", out.toString());
+        CliTesting.Run r = CliTesting.run("run", "--out", out.toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("finger 3: breakaway at t = 1.800"), r.out());
         List<String> trace = Files.readAllLines(out.resolve("trace.csv"));
@@ -48,7 +48,7 @@ class RunCommandsTest {
         assertTrue(text.contains("\"position_m\": [\n      0,\n      0,\n      0.125"), "the mug's position as the test expects it");
         text = text.replace("\"position_m\": [\n      0,\n      0,\n      0.125", "\"position_m\": [\n      0,\n      0,\n      0.12");
         Files.writeString(moved, text);
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", moved.toString(), "--no-charts", "--out", dir.resolve("out").toString());
+        CliTesting.Run r = CliTesting.run("run", moved.toString(), "--no-charts", "--out", dir.resolve("out").toString());
         assertEquals(0, r.code(), r.err());
         for (int k = 1; k <= 3; k++) {
             assertTrue(r.err().contains("handsim: warning: finger " + k + " starts in contact with the object"), r.err());
@@ -56,7 +56,7 @@ class RunCommandsTest {
         String summary = Files.readString(dir.resolve("out").resolve("summary.json"));
         assertTrue(summary.contains("\"warnings\": [\"finger 1 starts in contact"), summary);
         // the unmoved mug: no warning, an empty list
-        KinematicsCommandsTest.Run ok = KinematicsCommandsTest.run("run", Home.scenarios().resolve("mug-grasp.json").toString(), "--no-charts",
+        CliTesting.Run ok = CliTesting.run("run", Home.scenarios().resolve("mug-grasp.json").toString(), "--no-charts",
             "--out", dir.resolve("ok").toString());
         assertEquals(0, ok.code(), ok.err());
         assertFalse(ok.err().contains("warning"), ok.err());
@@ -69,7 +69,7 @@ class RunCommandsTest {
         Path bad = dir.resolve("bad.json");
         Files.writeString(bad, Files.readString(Home.paperScenario()).replace("\"dt_s\": 0.001", "\"dt_s\": -1")
             .replace("../vrml/objects/cube.wrl", Home.dir().resolve("vrml/objects/cube.wrl").toString().replace("\\", "/")));
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", bad.toString(), "--out", dir.resolve("out").toString());
+        CliTesting.Run r = CliTesting.run("run", bad.toString(), "--out", dir.resolve("out").toString());
         assertEquals(3, r.code());
         assertTrue(r.err().contains("field dt_s: must be > 0"), r.err());
         assertFalse(Files.exists(dir.resolve("out")));
@@ -86,10 +86,12 @@ class RunCommandsTest {
             + "{\"label\":\"as is\",\"set\":{}},"
             + "{\"label\":\"no cube\",\"set\":{\"object\":null,\"duration_s\":2.0}},"
             + "{\"label\":\"broken\",\"set\":{\"dt_s\":-1}}]}");
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("sweep", sweep.toString(), "--out", dir.resolve("out").toString(), "--threads", "2");
+        CliTesting.Run r = CliTesting.run("sweep", sweep.toString(), "--out", dir.resolve("out").toString(), "--threads", "2");
         assertEquals(1, r.code(), r.err());
         List<String> rows = Files.readAllLines(dir.resolve("out").resolve("summary.csv"));
-        assertEquals(SweepCommand.HEADER, rows.get(0));
+        assertEquals("run,scenario,status,sim_time_s,steps,wall_time_s,final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
+            + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error",
+            rows.get(0), "the README's header");
         assertEquals(4, rows.size());
         assertTrue(rows.get(1).startsWith("as is,paper-breakaway,ok,"), rows.get(1));
         assertTrue(rows.get(1).contains(",1.800"), rows.get(1));

@@ -30,7 +30,7 @@ class RunToleranceTest {
     void toleranceChoosesDivisionsAndRecordsThem() throws Exception {
         Path dir = Files.createTempDirectory("handsim-tol");
         Path s = scenario(dir, ball(dir));
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", s.toString(), "--tolerance", "0.5 mm", "--no-charts",
+        CliTesting.Run r = CliTesting.run("run", s.toString(), "--tolerance", "0.5 mm", "--no-charts",
             "--out", dir.resolve("out").toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().contains("tolerance 0.500 mm: divisions 32 (960 triangles), expected worst contact-centre error 0.303 mm"), r.out());
@@ -39,7 +39,7 @@ class RunToleranceTest {
         assertTrue(summary.contains("\"divisions\": 32"), summary);
         assertTrue(summary.contains("\"breakaway_time_s\""), "existing keys kept");
         // without --tolerance: neither key
-        KinematicsCommandsTest.Run plain = KinematicsCommandsTest.run("run", s.toString(), "--no-charts", "--out", dir.resolve("plain").toString());
+        CliTesting.Run plain = CliTesting.run("run", s.toString(), "--no-charts", "--out", dir.resolve("plain").toString());
         assertEquals(0, plain.code(), plain.err());
         String s2 = Files.readString(dir.resolve("plain/summary.json"));
         assertFalse(s2.contains("tolerance_m") || s2.contains("\"divisions\""), s2);
@@ -50,7 +50,7 @@ class RunToleranceTest {
         Path dir = Files.createTempDirectory("handsim-tol");
         Path s = scenario(dir, ball(dir));
         for (String bad : new String[] {"0.5furlong", "-1mm", "abc"}) {
-            KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", s.toString(), "--tolerance", bad, "--out", dir.resolve("out").toString());
+            CliTesting.Run r = CliTesting.run("run", s.toString(), "--tolerance", bad, "--out", dir.resolve("out").toString());
             assertEquals(2, r.code(), bad);
             assertTrue(r.err().contains("'" + bad + "'") && !r.err().contains("\n"), r.err());
             assertFalse(Files.exists(dir.resolve("out")));
@@ -61,7 +61,7 @@ class RunToleranceTest {
     void fixedMeshRunsAsIsWithANote() throws Exception {
         Path dir = Files.createTempDirectory("handsim-tol");
         Path s = scenario(dir, Home.dir().resolve("vrml/objects/cube.wrl").toAbsolutePath());
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", s.toString(), "--tolerance", "0.5mm", "--no-charts",
+        CliTesting.Run r = CliTesting.run("run", s.toString(), "--tolerance", "0.5mm", "--no-charts",
             "--out", dir.resolve("out").toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.err().contains("--tolerance has no effect: ") && r.err().contains("cube.wrl is a fixed mesh of 12 triangles"), r.err());
@@ -72,7 +72,7 @@ class RunToleranceTest {
     void unmeetableToleranceSaysTheBestAchievable() throws Exception {
         Path dir = Files.createTempDirectory("handsim-tol");
         Path s = scenario(dir, ball(dir));
-        KinematicsCommandsTest.Run r = KinematicsCommandsTest.run("run", s.toString(), "--tolerance", "1um", "--out", dir.resolve("out").toString());
+        CliTesting.Run r = CliTesting.run("run", s.toString(), "--tolerance", "1um", "--out", dir.resolve("out").toString());
         assertEquals(2, r.code());
         assertTrue(r.err().contains("cannot be met") && r.err().contains("best achievable worst contact-centre error is 0.0204 mm"), r.err());
         assertFalse(Files.exists(dir.resolve("out")));

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import static org.handsim.cli.CliTesting.run;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -14,10 +15,6 @@ import org.junit.jupiter.api.Test;
 
 /** `handsim swing`: the files it promises, the energy guard's stop, bad arguments. */
 class SwingCommandTest {
-    private static KinematicsCommandsTest.Run run(String... args) {
-        return KinematicsCommandsTest.run(args);
-    }
-
     private static List<String> names(Path dir) throws Exception {
         List<String> out = new ArrayList<>();
         try (var s = Files.list(dir)) {
@@ -29,7 +26,7 @@ class SwingCommandTest {
     @Test
     void theDefaultRk4RunWritesBothFilesAndConservesEnergy() throws Exception {
         Path out = Files.createTempDirectory("handsim-swing").resolve("a/b");
-        KinematicsCommandsTest.Run r = run("swing", "--out", out.toString());
+        CliTesting.Run r = run("swing", "--out", out.toString());
         assertEquals(0, r.code(), r.err());
         assertTrue(r.out().startsWith("finger 1, rk4, dt = 0.001 s: 1000 steps over 1.0 s"), r.out());
         List<String> csv = Files.readAllLines(out.resolve("swing.csv"));
@@ -68,7 +65,7 @@ class SwingCommandTest {
     @Test
     void finger3KeepsItsSpreadAtZero() throws Exception {
         Path out = Files.createTempDirectory("handsim-swing");
-        KinematicsCommandsTest.Run r = run("swing", "--finger", "3", "--q", "0,0.5,0.2", "--qd", "0,1,-1", "--integrator", "dopri",
+        CliTesting.Run r = run("swing", "--finger", "3", "--q", "0,0.5,0.2", "--qd", "0,1,-1", "--integrator", "dopri",
             "--duration", "0.2", "--out", out.toString());
         assertEquals(0, r.code(), r.err());
         List<String> csv = Files.readAllLines(out.resolve("swing.csv"));
@@ -86,7 +83,7 @@ class SwingCommandTest {
     void explicitEulerBlowingUpExits4AndWritesNothing() throws Exception {
         Path base = Files.createTempDirectory("handsim-swing");
         Path out = base.resolve("new/dir");
-        KinematicsCommandsTest.Run r = run("swing", "--integrator", "euler", "--dt", "0.05", "--out", out.toString());
+        CliTesting.Run r = run("swing", "--integrator", "euler", "--dt", "0.05", "--out", out.toString());
         assertEquals(4, r.code(), r.err());
         assertTrue(r.err().startsWith("handsim: swing stopped at step 10 (t = 0.5 s): energy 0.213"), r.err());
         assertTrue(r.err().contains("exceeds the initial -0.0170216 J by more than 50 %"), r.err());
@@ -104,7 +101,7 @@ class SwingCommandTest {
         Path out = Files.createTempDirectory("handsim-swing");
         assertEquals(0, run("swing", "--duration", "0.1", "--out", out.toString()).code());
         byte[] csv = Files.readAllBytes(out.resolve("swing.csv")), json = Files.readAllBytes(out.resolve("swing.json"));
-        KinematicsCommandsTest.Run r = run("swing", "--integrator", "euler", "--dt", "0.1", "--out", out.toString());
+        CliTesting.Run r = run("swing", "--integrator", "euler", "--dt", "0.1", "--out", out.toString());
         assertEquals(4, r.code(), r.err());
         assertTrue(r.err().startsWith("handsim: swing stopped at step 3 (t = 0.3 s): energy"), r.err());
         assertArrayEquals(csv, Files.readAllBytes(out.resolve("swing.csv")));
@@ -132,7 +129,7 @@ class SwingCommandTest {
         for (int i = 0; i < cases.length; i += 2) {
             List<String> args = new ArrayList<>(List.of("swing", "--out", out.toString()));
             args.addAll(List.of(cases[i]));
-            KinematicsCommandsTest.Run r = run(args.toArray(new String[0]));
+            CliTesting.Run r = run(args.toArray(new String[0]));
             assertEquals(2, r.code(), String.join(" ", cases[i]) + ": " + r.err());
             assertTrue(r.err().startsWith("handsim: ") && r.err().contains(cases[i + 1][0]), String.join(" ", cases[i]) + ": " + r.err());
         }
@@ -141,7 +138,7 @@ class SwingCommandTest {
 
     @Test
     void helpDescribesTheContract() {
-        KinematicsCommandsTest.Run r = run("swing", "--help");
+        CliTesting.Run r = run("swing", "--help");
         assertEquals(0, r.code(), r.err());
         for (String s : new String[] {"--finger", "--q", "--qd", "--gravity", "--integrator", "--dt", "--duration", "--out",
             "t_s,q1_rad,q2_rad,q3_rad,qd1_rad_s,qd2_rad_s,qd3_rad_s,energy_J", "exit 4"}) {

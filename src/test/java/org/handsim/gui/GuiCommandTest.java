@@ -1,13 +1,13 @@
 package org.handsim.gui;
 
+import static org.handsim.cli.CliTesting.run;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.handsim.cli.HandSim;
+import org.handsim.cli.CliTesting.Run;
+import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -15,21 +15,6 @@ import org.junit.jupiter.api.Test;
  * ({@code java.awt.headless=true} in the build), exactly the case of a machine without one.
  */
 class GuiCommandTest {
-    record Run(int code, String out, String err) {}
-
-    static Run run(String... args) {
-        StringWriter o = new StringWriter(), e = new StringWriter();
-        int code = HandSim.execute(new PrintWriter(o), new PrintWriter(e), args);
-        return new Run(code, o.toString().trim(), e.toString().trim());
-    }
-
-    static void delete(Path dir) throws Exception {
-        try (var files = Files.list(dir)) {
-            for (Path f : (Iterable<Path>) files::iterator) Files.delete(f);
-        }
-        Files.delete(dir);
-    }
-
     static Path scenario(Path dir) throws Exception {
         Path f = dir.resolve("s.json");
         Files.writeString(f, "{\"name\":\"s\",\"dt_s\":0.001,\"duration_s\":1.0}");
@@ -40,7 +25,7 @@ class GuiCommandTest {
     void withoutADisplayItExits2AndSaysToUseXvfb() throws Exception {
         Path dir = Files.createTempDirectory("handsim-gui-test");
         Run r = run("gui", scenario(dir).toString());
-        delete(dir);
+        VrmlTesting.deleteTree(dir);
         assertEquals(2, r.code(), r.err());
         assertEquals(1, r.err().lines().count(), "one line: " + r.err());
         assertTrue(r.err().contains("no display") && r.err().contains("xvfb-run") && r.err().contains("./handsim gui"), r.err());
@@ -52,7 +37,7 @@ class GuiCommandTest {
         Path script = dir.resolve("bad.txt");
         Files.writeString(script, "press Kinematics\nset fk3.counts 100\nfly away\n");
         Run r = run("gui", scenario(dir).toString(), "--script", script.toString());
-        delete(dir);
+        VrmlTesting.deleteTree(dir);
         assertEquals(2, r.code(), r.err());
         assertTrue(r.err().contains("bad.txt:3: unknown action 'fly'"), r.err());
     }

@@ -18,6 +18,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.handsim.TestPaths;
+import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 
@@ -191,7 +192,7 @@ class GuiWindowTest {
         }
         System.out.println("charts " + charts + ": " + red + " pixels in finger 3's colour");
         assertTrue(red >= MIN_TRACE_PIXELS, "the charts show no traces of finger 3 (" + red + " pixels)");
-        GuiCommandTest.delete(dir);   // kept when a check fails, for a look at the screenshots
+        VrmlTesting.deleteTree(dir);   // kept when a check fails, for a look at the screenshots
     }
 
     @Test
@@ -209,7 +210,7 @@ class GuiWindowTest {
         assertTrue(c.log().contains("coordIndex"), c.log());
         assertTrue(c.log().contains("broken.txt:2: import " + broken), "the script line is named:\n" + c.log());
         assertTrue(c.log().contains("gui: failed (exit code 1), 0 uncaught exceptions"), c.log());
-        GuiCommandTest.delete(dir);
+        VrmlTesting.deleteTree(dir);
     }
 
     /** The view and chart regions the program printed for a screenshot. */
