@@ -14,15 +14,13 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.dynamics.ChainDynamics;
 import org.handsim.dynamics.DormandPrince54;
-import org.handsim.dynamics.ExplicitEuler;
 import org.handsim.dynamics.FingerDynamicsOde;
 import org.handsim.dynamics.FreeSwing;
 import org.handsim.dynamics.HandDynamics;
 import org.handsim.dynamics.Integrator;
+import org.handsim.dynamics.IntegratorKind;
 import org.handsim.dynamics.IntegrationStoppedException;
 import org.handsim.dynamics.LinkChain;
-import org.handsim.dynamics.RungeKutta4;
-import org.handsim.dynamics.SemiImplicitEuler;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
@@ -186,19 +184,18 @@ public final class SwingCommand implements Callable<Integer> {
     }
 
     static Integrator integrator(String name, int n) {
-        switch (name) {
-            case "euler": return new ExplicitEuler(2 * n);
-            case "semi-implicit": return new SemiImplicitEuler(n);
-            case "rk4": return new RungeKutta4(2 * n);
-            case "dopri": return new DormandPrince54(2 * n, DOPRI_TOL, DOPRI_TOL);
-            default: throw CliError.usage("handsim: --integrator must be euler, semi-implicit, rk4 or dopri, got '" + name + "'");
+        try {
+            return IntegratorKind.named(name).create(n, DOPRI_TOL);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: --integrator must be euler, semi-implicit, rk4 or dopri, got '" + name + "'");
         }
     }
 
     private String hint(Integrator in, IntegrationStoppedException e) {
         if (e.reason() == IntegrationStoppedException.Reason.STEP_FAILED && in instanceof DormandPrince54) return " (try a larger tolerance or a smaller --dt)";
-        String what = in instanceof ExplicitEuler ? "explicit Euler" : in instanceof SemiImplicitEuler ? "semi-implicit Euler" : in.name();
-        String alt = in instanceof RungeKutta4 ? "dopri or a smaller --dt" : "rk4 or a smaller --dt";
+        IntegratorKind kind = IntegratorKind.named(integrator);
+        String what = kind == IntegratorKind.RK4 ? in.name() : kind.label();
+        String alt = kind == IntegratorKind.RK4 ? "dopri or a smaller --dt" : "rk4 or a smaller --dt";
         return " (" + what + " is unstable at dt = " + dt + " s; try " + alt + ")";
     }
 

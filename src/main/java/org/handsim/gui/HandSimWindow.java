@@ -63,8 +63,6 @@ public final class HandSimWindow {
     public static final int TICK_MS = 25;
     /** While the simulation plays the charts are redrawn every this many ticks (~8 Hz). */
     static final int CHART_TICKS = 5;
-    /** Curve segments for the hand's files (as {@code SceneGeometry} loads the links). */
-    static final int HAND_DIVISIONS = 32;
     /** The four buttons of the paper, in order. */
     public static final List<String> TOOLS = List.of("Kinematics", "Path Planning", "Dynamics", "Objects");
 
@@ -160,8 +158,8 @@ public final class HandSimWindow {
      */
     public static MeshSource.Model[] loadHand() throws IOException {
         MeshSource.Model[] m = new MeshSource.Model[4];
-        m[0] = MeshSource.load(SceneGeometry.palmFile(), HAND_DIVISIONS);
-        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(SceneGeometry.linkFile(j), HAND_DIVISIONS);
+        m[0] = MeshSource.load(SceneGeometry.palmFile(), SceneGeometry.LINK_DIVISIONS);
+        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(SceneGeometry.linkFile(j), SceneGeometry.LINK_DIVISIONS);
         return m;
     }
 

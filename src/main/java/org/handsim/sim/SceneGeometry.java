@@ -35,7 +35,7 @@ import org.handsim.vrml.VrmlScene;
 public final class SceneGeometry implements LinkContacts {
     /** Default k of the k-DOPs (issue 5's default; see docs/BENCHMARKS.md for the others). */
     public static final int DEFAULT_K = 18;
-    /** Divisions the hand's link meshes are loaded at. */
+    /** Divisions the hand's meshes (links and, in the window, the palm) are loaded at. */
     public static final int LINK_DIVISIONS = 32;
 
     private static final Map<String, TriangleMesh> MESHES = new ConcurrentHashMap<>();

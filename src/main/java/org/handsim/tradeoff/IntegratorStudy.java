@@ -7,12 +7,10 @@ import java.util.function.DoubleConsumer;
 import org.handsim.chart.StudyTable;
 import org.handsim.dynamics.ClosedFormFinger;
 import org.handsim.dynamics.DormandPrince54;
-import org.handsim.dynamics.ExplicitEuler;
 import org.handsim.dynamics.FingerDynamicsOde;
 import org.handsim.dynamics.Integrator;
+import org.handsim.dynamics.IntegratorKind;
 import org.handsim.dynamics.LinkChain;
-import org.handsim.dynamics.RungeKutta4;
-import org.handsim.dynamics.SemiImplicitEuler;
 
 /**
  * Chart 4: the forward-dynamics integrators (explicit Euler, semi-implicit Euler, RK4 and the
@@ -42,7 +40,8 @@ public final class IntegratorStudy implements Study {
     static final double OUTPUT_DT = DURATION;
     static final double DEFAULT_DT = 0.001;
 
-    static final String EULER = "explicit Euler", SEMI = "semi-implicit Euler", RK4 = "RK4", DOPRI = "Dormand-Prince 5(4)";
+    static final String EULER = IntegratorKind.EULER.label(), SEMI = IntegratorKind.SEMI_IMPLICIT.label(),
+        RK4 = IntegratorKind.RK4.label(), DOPRI = IntegratorKind.DOPRI.label();
     static final List<String> METHODS = List.of(EULER, SEMI, RK4, DOPRI);
     static final List<String> COLUMNS = List.of("dt_s", "tolerance", "steps", "evaluations", "wall_s", "drift", "worst_drift");
 
@@ -53,13 +52,7 @@ public final class IntegratorStudy implements Study {
 
     /** A fresh integrator: {@code setting} is dt for the fixed-step methods, the tolerance for Dormand–Prince. */
     static Integrator integrator(String method, double setting) {
-        switch (method) {
-            case EULER: return new ExplicitEuler(6);
-            case SEMI: return new SemiImplicitEuler(3);
-            case RK4: return new RungeKutta4(6);
-            case DOPRI: return new DormandPrince54(6, setting, setting);
-            default: throw new IllegalArgumentException("unknown method " + method);
-        }
+        return IntegratorKind.named(method).create(3, setting);
     }
 
     static FingerDynamicsOde freeFinger() {
