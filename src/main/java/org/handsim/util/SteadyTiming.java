@@ -1,0 +1,73 @@
+package org.handsim.util;
+
+import java.util.Arrays;
+import java.util.function.DoubleSupplier;
+
+/**
+ * Steady-state timing of one operation for the commands that print a time (issue 15: honest
+ * timings). The operation is first run until the JIT has compiled it — at least
+ * {@link #WARMUP_SECONDS} of wall time <em>and</em> at least {@link #WARMUP_CALLS} calls,
+ * whichever comes later, capped at {@link #WARMUP_CAP_SECONDS} for very slow operations — and
+ * then timed in {@code samples} batches; each batch runs enough calls to last about
+ * {@link #BATCH_SECONDS} (so nanosecond-scale operations are not swamped by the clock), and the
+ * median of the per-call times of the batches is reported. This is the scheme of the
+ * {@code gradle bench} harness, so a command's figure and the benchmark's agree within noise.
+ *
+ * <p>The operation returns a number that depends on its work; it is accumulated into a
+ * volatile sink so the JIT cannot drop the work.
+ */
+public final class SteadyTiming {
+    /** Minimum warm-up wall time, seconds. */
+    public static final double WARMUP_SECONDS = 0.5;
+    /** Minimum warm-up calls. */
+    public static final long WARMUP_CALLS = 10_000;
+    /** Warm-up never runs longer than this, seconds (an operation of 1 ms needs 10 s for 10 000 calls). */
+    public static final double WARMUP_CAP_SECONDS = 5.0;
+    /** Target duration of one timed batch, seconds. */
+    public static final double BATCH_SECONDS = 0.005;
+
+    /** Keeps results alive. */
+    public static volatile double sink;
+
+    /** The outcome: median seconds per call, the number of timed batches and calls, the warm-up. */
+    public record Result(double medianSeconds, int samples, long timedCalls, long warmupCalls, double warmupSeconds) {
+        /** @return the median in microseconds */
+        public double medianMicros() { return medianSeconds * 1e6; }
+    }
+
+    private SteadyTiming() {}
+
+    /**
+     * Warms up by time, then times {@code samples} batches and returns the median per call.
+     *
+     * @param samples number of timed batches (≥ 1)
+     */
+    public static Result median(DoubleSupplier op, int samples) {
+        if (samples < 1) throw new IllegalArgumentException("samples must be >= 1, got " + samples);
+        double acc = 0;
+        long calls = 0;
+        long start = System.nanoTime();
+        long minEnd = start + (long) (WARMUP_SECONDS * 1e9), cap = start + (long) (WARMUP_CAP_SECONDS * 1e9);
+        long now;
+        do {
+            acc += op.getAsDouble();
+            calls++;
+            now = System.nanoTime();
+        } while ((now < minEnd || calls < WARMUP_CALLS) && now < cap);
+        double warmSeconds = (now - start) / 1e9;
+        double perCall = warmSeconds / calls;
+        long batch = Math.max(1, (long) (BATCH_SECONDS / Math.max(perCall, 1e-9)));
+        double[] per = new double[samples];
+        long timed = 0;
+        for (int s = 0; s < samples; s++) {
+            long t0 = System.nanoTime();
+            for (long i = 0; i < batch; i++) acc += op.getAsDouble();
+            per[s] = (System.nanoTime() - t0) / 1e9 / batch;
+            timed += batch;
+        }
+        sink += acc;
+        Arrays.sort(per);
+        double med = samples % 2 == 1 ? per[samples / 2] : 0.5 * (per[samples / 2 - 1] + per[samples / 2]);
+        return new Result(med, samples, timed, calls, warmSeconds);
+    }
+}
