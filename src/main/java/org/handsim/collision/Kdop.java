@@ -60,6 +60,8 @@ public final class Kdop {
     private final int k;
     private final int m;
     final double[] dx, dy, dz;
+    /** 1/|dᵢ| per direction: a slab gap times this is a Euclidean distance. */
+    final double[] invLength;
     private final TransformedBounds.Facets facets;
 
     private Kdop(int k, double[][]... groups) {
@@ -68,12 +70,14 @@ public final class Kdop {
         dx = new double[m];
         dy = new double[m];
         dz = new double[m];
+        invLength = new double[m];
         int i = 0;
         for (double[][] g : groups) {
             for (double[] d : g) {
                 dx[i] = d[0];
                 dy[i] = d[1];
                 dz[i] = d[2];
+                invLength[i] = 1 / Math.sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
                 i++;
             }
         }
@@ -175,6 +179,21 @@ public final class Kdop {
             if (a[ao + j] > c[co + j + 1] || c[co + j] > a[ao + j + 1]) return false;
         }
         return true;
+    }
+
+    /**
+     * A lower bound on the Euclidean distance between the contents of two k-DOPs (same k, same
+     * frame): the widest gap between their slabs along one direction, divided by the
+     * direction's length; zero or negative when they overlap. All k/2 directions, no early exit
+     * (the coherent gathering of {@link NearPairs} wants the best bound).
+     */
+    public double separation(double[] a, int ao, double[] c, int co) {
+        double s = Double.NEGATIVE_INFINITY;
+        for (int j = 0, i = 0; j < k; j += 2, i++) {
+            double g = Math.max(a[ao + j] - c[co + j + 1], c[co + j] - a[ao + j + 1]) * invLength[i];
+            if (g > s) s = g;
+        }
+        return s;
     }
 
     /** True when the point's projections lie inside every slab (closed). */

@@ -102,6 +102,235 @@ public final class TreeQuery {
         return out.intersecting();
     }
 
+    // ------------------------------------------------------------------ temporal coherence
+
+    /**
+     * Gathers into {@code out} the triangle pairs of A and B (B placed in A's frame by the 12
+     * row-major values at {@code pose[off..]}) whose bounds are within {@code reach} metres of
+     * each other, and the clearance up to which they stand for the full query ({@link NearPairs}
+     * states the contract). The walk is the full query's, with each k-DOP overlap test replaced
+     * by the separation of the two k-DOPs ({@link Kdop#separation}) compared with the reach, and
+     * the triangle tests replaced by a test of the two triangles' axis-aligned boxes.
+     *
+     * @param reach metres, ≥ 0: pairs closer than this are kept; a larger reach keeps more pairs
+     *              and gives a clearance at least as large
+     * @return {@code out}
+     * @throws IllegalArgumentException if the trees have different k or reach is negative or NaN
+     */
+    public NearPairs near(KdopTree a, KdopTree b, double[] pose, int off, double reach, NearPairs out) {
+        if (a.k() != b.k()) throw new IllegalArgumentException("trees have different k: " + a.k() + " and " + b.k());
+        if (!(reach >= 0)) throw new IllegalArgumentException("reach must be >= 0, got " + reach);
+        System.arraycopy(pose, off, m, 0, 12);
+        out.clear();
+        out.reach = reach;
+        if (a.nodeCount == 0 || b.nodeCount == 0) {
+            out.clearance = Double.POSITIVE_INFINITY;
+            return out;
+        }
+        double margin = roundingMargin(a, b);
+        boolean identity = isIdentity(m);
+        if (!identity) {
+            double gap = rootBoxGap(a, b);
+            if (gap > reach) {
+                out.nodeTests = 1;
+                out.clearance = gap - margin;
+                return out;
+            }
+        }
+        place(b, identity, Placement.TRANSFORM, true);
+        out.clearance = gather(a, b, reach, out) - margin;
+        return out;
+    }
+
+    /**
+     * The full query's result at a pose the near pairs cover ({@link NearPairs#covers}), from
+     * the near pairs alone: each is tested as the full walk tests it, in the walk's order. The
+     * caller vouches for the cover (it measures the displacement); the node-test counter is 0.
+     *
+     * @param out cleared and filled
+     * @return {@code out}
+     */
+    public CollisionResult collide(KdopTree a, KdopTree b, double[] pose, int off, NearPairs near, CollisionResult out) {
+        System.arraycopy(pose, off, m, 0, 12);
+        testNear(a, b, near, out, false);
+        return out;
+    }
+
+    /** As {@link #collide(KdopTree, KdopTree, double[], int, NearPairs, CollisionResult)}, stopping at the first intersecting pair. */
+    public boolean intersects(KdopTree a, KdopTree b, double[] pose, int off, NearPairs near, CollisionResult out) {
+        System.arraycopy(pose, off, m, 0, 12);
+        testNear(a, b, near, out, true);
+        return out.intersecting();
+    }
+
+    private void testNear(KdopTree a, KdopTree b, NearPairs near, CollisionResult out, boolean stopAtFirst) {
+        if (a.k() != b.k()) throw new IllegalArgumentException("trees have different k: " + a.k() + " and " + b.k());
+        out.clear();
+        int n = near.count;
+        if (n == 0) return;
+        long exact0 = tt.predicates().exactCalls();
+        place(b, isIdentity(m), Placement.TRANSFORM, false);
+        final double[] va = a.vertices(), nA = a.triN, nAbsA = a.triNAbs;
+        final int[] trisA = a.tris, trisB = b.tris, nta = near.triA, ntb = near.triB;
+        final boolean placeNormals = !normalsPlaced;
+        int tested = 0;
+        for (int i = 0; i < n; i++) {
+            int ta = nta[i], tbi = ntb[i];
+            if (placeNormals) placeNormal(b, tbi);
+            tested++;
+            int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
+                vb, 3 * trisB[3 * tbi], 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
+            if (r != TriangleIntersector.DISJOINT) {
+                out.add(ta, tbi, tt, r);
+                if (stopAtFirst) break;
+            }
+        }
+        out.triangleTests = tested;
+        out.exactPredicates = tt.predicates().exactCalls() - exact0;
+    }
+
+    /**
+     * How much the clearance is lowered for rounding (metres): 10⁻⁹ of the coordinates'
+     * magnitude (A's root box, B's root box, the translation). The rounding it covers — of the
+     * placed vertices, of the bounds, of the caller's displacement bound — is about 10⁻¹⁵ of it.
+     */
+    private double roundingMargin(KdopTree a, KdopTree b) {
+        double s = 0;
+        for (int j = 0; j < 6; j++) s = Math.max(s, Math.max(Math.abs(a.bounds[j]), Math.abs(b.bounds[j])));
+        s += Math.max(Math.abs(m[3]), Math.max(Math.abs(m[7]), Math.abs(m[11])));
+        return 1e-9 * s;
+    }
+
+    /**
+     * The gap between A's root box and B's root box placed as an oriented box and bounded by an
+     * axis-aligned one (as {@link #rootBoxesMayOverlap}): the widest gap along one axis, a lower
+     * bound on the distance between the meshes; ≤ 0 when the boxes may overlap.
+     */
+    private double rootBoxGap(KdopTree a, KdopTree b) {
+        double[] ra = a.bounds, rb = b.bounds;
+        double cx = 0.5 * (rb[0] + rb[1]), cy = 0.5 * (rb[2] + rb[3]), cz = 0.5 * (rb[4] + rb[5]);
+        double ex = 0.5 * (rb[1] - rb[0]), ey = 0.5 * (rb[3] - rb[2]), ez = 0.5 * (rb[5] - rb[4]);
+        double gap = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < 3; i++) {
+            double r0 = m[4 * i], r1 = m[4 * i + 1], r2 = m[4 * i + 2], t = m[4 * i + 3];
+            double c = r0 * cx + r1 * cy + r2 * cz + t;
+            double e = Math.abs(r0) * ex + Math.abs(r1) * ey + Math.abs(r2) * ez;
+            double mg = 1e-12 * (Math.abs(r0 * cx) + Math.abs(r1 * cy) + Math.abs(r2 * cz) + Math.abs(t) + e);
+            gap = Math.max(gap, Math.max(c - e - mg - ra[2 * i + 1], ra[2 * i] - (c + e + mg)));
+        }
+        return gap;
+    }
+
+    /**
+     * The walk of {@link #walk} with separations instead of overlap tests: keeps the triangle
+     * pairs within {@code reach}, returns the smallest separation of what it dropped (+∞ if
+     * nothing). Counts its node tests into {@code out}.
+     */
+    private double gather(KdopTree a, KdopTree b, double reach, NearPairs out) {
+        final Kdop kd = a.kdop();
+        final int k = a.k();
+        final double[] ba = a.bounds, va = a.vertices();
+        final double[] bbl = bb;
+        final int[] childA = a.child, childB = b.child, sizeA = a.size, sizeB = b.size;
+        final int[] orderA = a.order, orderB = b.order, trisA = a.tris, trisB = b.tris;
+        final boolean[] degA = a.degenerate, degB = b.degenerate;
+        final boolean lz = lazy;
+        final double[] src = b.vertices();
+        int[] stk = stack;
+        int sp = 0;
+        long tests = 1;
+        double clear = Double.POSITIVE_INFINITY;
+        if (lz) placeNode(b, 0);
+        double s0 = kd.separation(ba, 0, bbl, 0);
+        if (s0 > reach) {
+            clear = s0;
+        } else {
+            stk[sp++] = 0;
+            stk[sp++] = 0;
+        }
+        while (sp > 0) {
+            int nb = stk[--sp], na = stk[--sp];
+            int ca = childA[na], cb = childB[nb];
+            if (ca < 0 && cb < 0) {
+                int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
+                for (int i = fa; i < ea; i++) {
+                    int ta = orderA[i];
+                    if (degA[ta]) continue;
+                    int a0 = 3 * trisA[3 * ta], a1 = 3 * trisA[3 * ta + 1], a2 = 3 * trisA[3 * ta + 2];
+                    for (int j = fb; j < eb; j++) {
+                        int tbi = orderB[j];
+                        if (degB[tbi]) continue;
+                        int b0 = 3 * trisB[3 * tbi], b1 = 3 * trisB[3 * tbi + 1], b2 = 3 * trisB[3 * tbi + 2];
+                        if (lz) {
+                            placeVertex(src, b0);
+                            placeVertex(src, b1);
+                            placeVertex(src, b2);
+                        }
+                        double gap = Double.NEGATIVE_INFINITY;
+                        for (int d = 0; d < 3; d++) {
+                            double amin = Math.min(va[a0 + d], Math.min(va[a1 + d], va[a2 + d]));
+                            double amax = Math.max(va[a0 + d], Math.max(va[a1 + d], va[a2 + d]));
+                            double bmin = Math.min(vb[b0 + d], Math.min(vb[b1 + d], vb[b2 + d]));
+                            double bmax = Math.max(vb[b0 + d], Math.max(vb[b1 + d], vb[b2 + d]));
+                            gap = Math.max(gap, Math.max(amin - bmax, bmin - amax));
+                        }
+                        if (gap > reach) {
+                            if (gap < clear) clear = gap;
+                        } else {
+                            out.add(ta, tbi);
+                        }
+                    }
+                }
+                continue;
+            }
+            if (sp + 4 > stk.length) {
+                stk = Arrays.copyOf(stk, 2 * stk.length);
+                stack = stk;
+            }
+            tests += 2;
+            if (cb < 0 || (ca >= 0 && sizeA[na] >= sizeB[nb])) {
+                int ob = nb * k;
+                double s1 = kd.separation(ba, ca * k, bbl, ob), s2 = kd.separation(ba, (na + 1) * k, bbl, ob);
+                if (s1 > reach) {
+                    if (s1 < clear) clear = s1;
+                } else {
+                    stk[sp++] = ca; stk[sp++] = nb;
+                }
+                if (s2 > reach) {
+                    if (s2 < clear) clear = s2;
+                } else {
+                    stk[sp++] = na + 1; stk[sp++] = nb;
+                }
+            } else {
+                int oa = na * k;
+                if (lz) {
+                    placeNode(b, cb);
+                    placeNode(b, nb + 1);
+                }
+                double s1 = kd.separation(ba, oa, bbl, cb * k), s2 = kd.separation(ba, oa, bbl, (nb + 1) * k);
+                if (s1 > reach) {
+                    if (s1 < clear) clear = s1;
+                } else {
+                    stk[sp++] = na; stk[sp++] = cb;
+                }
+                if (s2 > reach) {
+                    if (s2 < clear) clear = s2;
+                } else {
+                    stk[sp++] = na; stk[sp++] = nb + 1;
+                }
+            }
+        }
+        out.nodeTests = tests;
+        return clear;
+    }
+
+    /** As {@link #intersects(KdopTree, KdopTree, RigidTransform, CollisionResult)} with the 12 row-major values at {@code pose[off..]}. */
+    public boolean intersects(KdopTree a, KdopTree b, double[] pose, int off, CollisionResult out) {
+        System.arraycopy(pose, off, m, 0, 12);
+        run(a, b, out, true);
+        return out.intersecting();
+    }
+
     private static boolean isIdentity(double[] m) {
         return m[0] == 1 && m[1] == 0 && m[2] == 0 && m[3] == 0 && m[4] == 0 && m[5] == 1 && m[6] == 0 && m[7] == 0
             && m[8] == 0 && m[9] == 0 && m[10] == 1 && m[11] == 0;
@@ -112,15 +341,26 @@ public final class TreeQuery {
         out.clear();
         if (a.nodeCount == 0 || b.nodeCount == 0) return;
         long exact0 = tt.predicates().exactCalls();
-        double[] bv = b.vertices();
-        int nbv = bv.length / 3, nbt = b.tris.length / 3;
         boolean identity = isIdentity(m);
         if (!identity && !rootBoxesMayOverlap(a, b)) {
             out.nodeTests = 1;
             return;
         }
-        boolean refit = !identity && placement == Placement.REFIT;
-        lazy = !identity && placement == Placement.TRANSFORM;
+        place(b, identity, placement, true);
+        walk(a, b, out, stopAtFirst);
+        out.exactPredicates = tt.predicates().exactCalls() - exact0;
+    }
+
+    /**
+     * Sets up this query's view of B in A's frame for transform {@link #m}: B's own arrays for
+     * the identity; otherwise the scratch arrays, filled now (REFIT) or on demand (TRANSFORM).
+     * Without {@code bounds} only vertices and normals are placed (on demand), no k-DOP.
+     */
+    private void place(KdopTree b, boolean identity, Placement pl, boolean bounds) {
+        double[] bv = b.vertices();
+        int nbv = bv.length / 3, nbt = b.tris.length / 3;
+        boolean refit = !identity && bounds && pl == Placement.REFIT;
+        lazy = !identity && !refit;
         if (++stamp == Integer.MAX_VALUE) {
             Arrays.fill(nodeStamp, 0);
             Arrays.fill(vertStamp, 0);
@@ -149,13 +389,11 @@ public final class TreeQuery {
             if (refit) {
                 KdopTree.transformPoints(m, bv, placedVerts, nbv);
                 b.fitBounds(placedVerts, placedBounds);
-            } else {
+            } else if (bounds) {
                 tb.prepare(b.kdop(), m);
             }
         }
         normalsPlaced = identity;
-        walk(a, b, out, stopAtFirst);
-        out.exactPredicates = tt.predicates().exactCalls() - exact0;
     }
 
     /**

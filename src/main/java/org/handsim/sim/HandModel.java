@@ -86,7 +86,6 @@ public final class HandModel {
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
     private boolean lazy = true;
-    private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
 
     /** Work counters, for the savings table (issue 8). */
@@ -374,8 +373,9 @@ public final class HandModel {
 
     /**
      * 2 if the inner link (when {@code innerCounts}), 3 if the outer link has a contact at motor
-     * count q (state unchanged), else 0. Uses the full contact query, so that the held pose the
-     * bisection ends on is one where the contact exists.
+     * count q (state unchanged), else 0. Asks {@link LinkContacts#touches}, which is exactly
+     * "the full contact query finds a contact", so the held pose the bisection ends on is one
+     * where the contact exists (the back end may stop at the first touching triangle pair).
      */
     private int touchesAt(int k, double qm, boolean innerCounts) {
         int i = k - 1;
@@ -384,13 +384,12 @@ public final class HandModel {
         eventJoints[2] = clutch[i].theta3For(qm);
         framesInWorld(k, eventJoints, frameScratch);
         counters[Counter.EVENT_QUERIES.ordinal()] += 2;
-        eventContacts.clear();
         if (innerCounts) {
             System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
-            if (objectContacts.collide(k, 2, linkScratch, eventContacts) > 0) return 2;
+            if (objectContacts.touches(k, 2, linkScratch)) return 2;
         }
         System.arraycopy(frameScratch, 36, linkScratch, 0, 12);
-        if (objectContacts.collide(k, 3, linkScratch, eventContacts) > 0) return 3;
+        if (objectContacts.touches(k, 3, linkScratch)) return 3;
         return 0;
     }
 

@@ -15,6 +15,15 @@ public interface LinkContacts {
     int collide(int finger, int link, double[] worldFromLink, ContactSet out);
 
     /**
+     * Whether link {@code link} of finger {@code finger}, placed by {@code worldFromLink}, touches
+     * the object: exactly {@code collide(...) > 0}, which the default computes; an implementation
+     * may stop at the first touching pair (the event bisection asks only this).
+     */
+    default boolean touches(int finger, int link, double[] worldFromLink) {
+        return collide(finger, link, worldFromLink, new ContactSet()) > 0;
+    }
+
+    /**
      * The object's thinnest width in metres (an estimate from above is fine; the tunnelling
      * guard substeps so that no link point moves more than half of it per check).
      */

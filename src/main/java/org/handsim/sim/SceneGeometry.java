@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.handsim.collision.CollisionResult;
 import org.handsim.collision.KdopTree;
+import org.handsim.collision.NearPairs;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
@@ -27,6 +28,15 @@ import org.handsim.vrml.VrmlScene;
  * ({@link TreeQuery.Placement#TRANSFORM}, the faster placement by benchmark), so a large object
  * costs nothing where the link is not. Contacts are returned in the world frame with the
  * object's outward normal.
+ *
+ * <p><b>Temporal coherence</b> ({@link #coherent(boolean)}, on by default). A link moves a
+ * little between two queries (one step, or less inside an event's bisection), so each link of
+ * each finger keeps the {@link NearPairs} gathered at an anchor pose: the triangle pairs within
+ * a reach of four times the link's last displacement, valid while the link stays within their
+ * clearance of the anchor. A query whose link is covered tests only those pairs (none, while a
+ * closing link is still farther from the object than it has moved since the anchor); any
+ * other re-anchors. Both give exactly the full query's contacts (NearPairs' contract); the
+ * displacement bound is {@link #displacement}. {@link #counters()} says how often each ran.
  *
  * <p>Meshes and trees are immutable and shared between instances (and threads) through a
  * cache keyed by file, divisions, scale and k; each instance has its own query scratch, so one
@@ -54,6 +64,33 @@ public final class SceneGeometry implements LinkContacts {
     private final ContactPatches patches = new ContactPatches();
     private final double tolerance;
     private final double[] linkFromWorld = new double[12], pose = new double[12], c = new double[3], n = new double[3];
+    // temporal coherence: per finger and link (index 3·(finger−1) + link−1)
+    private boolean coherent = true;
+    private final NearPairs[] near = new NearPairs[9];
+    private final double[][] anchor = new double[9][12], lastPose = new double[9][12];
+    private final boolean[] hasLast = new boolean[9];
+    private final long[] counters = new long[Counter.values().length];
+
+    /** What the collision back end did (see {@link #counters()}). */
+    public enum Counter {
+        /** Queries answered by the bounding-sphere test alone. */
+        SPHERE_APART,
+        /** Walks of the two trees: the gathering of near pairs (coherent) or the full query. */
+        TREE_WALKS,
+        /** Queries answered from the near pairs of an earlier walk, without a walk. */
+        COHERENT_QUERIES,
+        /** Triangle–triangle tests, in walks and from near pairs. */
+        TRIANGLE_TESTS
+    }
+
+    /**
+     * Reach of a gathering, relative to the link's last displacement: pairs that can come
+     * within four displacements stay valid for at least four more like it (and for the
+     * bisection inside the last one).
+     */
+    static final double REACH_STEPS = 4;
+    /** Bounds of the reach, in units of the link's bounding radius. */
+    static final double REACH_MIN = 1e-5, REACH_MAX = 0.05;
 
     /**
      * @param object the object and its placement (from a scenario)
@@ -78,6 +115,7 @@ public final class SceneGeometry implements LinkContacts {
             diag = Math.max(diag, m.diagonal());
         }
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
+        for (int i = 0; i < near.length; i++) near[i] = new NearPairs();
         thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.scale(),
             x -> minWidth(objectMesh));
     }
@@ -231,15 +269,101 @@ public final class SceneGeometry implements LinkContacts {
         return x * x + y * y + z * z > reach * reach;
     }
 
+    /**
+     * Whether queries reuse the near pairs of earlier ones (default true); off, every query
+     * that passes the sphere test walks the trees. Results are the same either way. Returns this.
+     */
+    public SceneGeometry coherent(boolean on) {
+        coherent = on;
+        for (NearPairs p : near) p.clear();
+        java.util.Arrays.fill(hasLast, false);
+        return this;
+    }
+
+    /** Whether queries reuse near pairs ({@link #coherent(boolean)}). */
+    public boolean isCoherent() { return coherent; }
+
+    /** How often each kind of work ran since construction ({@link Counter}). */
+    public long counter(Counter c) { return counters[c.ordinal()]; }
+
+    /** Counters in {@link Counter} order (a copy). */
+    public long[] counters() { return counters.clone(); }
+
+    /**
+     * An upper bound (metres) on how far any point of link j's mesh moves between the world
+     * poses {@code w0} and {@code w1} (12 row-major values each): with the link's bounding
+     * sphere (centre s, radius r, link frame), |(R₁ − R₀)(p − s) + (R₁s + t₁) − (R₀s + t₀)| ≤
+     * ‖R₁ − R₀‖_F·r + |(R₁s + t₁) − (R₀s + t₀)|, the Frobenius norm bounding the spectral one.
+     */
+    double displacement(int link, double[] w0, double[] w1) {
+        double[] sp = linkSpheres[link - 1];
+        double f = 0;
+        for (int r = 0; r < 3; r++) {
+            for (int col = 0; col < 3; col++) f += sq(w1[4 * r + col] - w0[4 * r + col]);
+        }
+        double dx = 0, dy = 0, dz = 0;
+        for (int r = 0; r < 3; r++) {
+            double d = (w1[4 * r] - w0[4 * r]) * sp[0] + (w1[4 * r + 1] - w0[4 * r + 1]) * sp[1] + (w1[4 * r + 2] - w0[4 * r + 2]) * sp[2]
+                + (w1[4 * r + 3] - w0[4 * r + 3]);
+            if (r == 0) dx = d; else if (r == 1) dy = d; else dz = d;
+        }
+        return Math.sqrt(f) * sp[3] + Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /**
+     * The near pairs that stand for the full query of this link at {@code w} (its pose, with the
+     * object's pose in the link frame already in {@link #pose}): the anchored ones if they cover
+     * w, else gathered anew at w with a reach of {@link #REACH_STEPS} times the link's last
+     * displacement.
+     */
+    private NearPairs nearPairs(int finger, int link, double[] w) {
+        int s = 3 * (finger - 1) + (link - 1);
+        NearPairs p = near[s];
+        double moved = hasLast[s] ? displacement(link, lastPose[s], w) : 0;
+        System.arraycopy(w, 0, lastPose[s], 0, 12);
+        hasLast[s] = true;
+        if (p.clearance() > 0 && p.covers(displacement(link, anchor[s], w))) {
+            counters[Counter.COHERENT_QUERIES.ordinal()]++;
+            return p;
+        }
+        double r = linkSpheres[link - 1][3];
+        double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, REACH_STEPS * moved));
+        query.near(linkTrees[link - 1], objectTree, pose, 0, reach, p);
+        System.arraycopy(w, 0, anchor[s], 0, 12);
+        counters[Counter.TREE_WALKS.ordinal()]++;
+        return p;
+    }
+
+    /** The tree query of link j at {@code w} into {@link #result}; false if it found nothing. */
+    private boolean query(int finger, int link, double[] w, boolean firstOnly) {
+        if (apart(link, w)) {
+            result.clear();
+            counters[Counter.SPHERE_APART.ordinal()]++;
+            return false;
+        }
+        poseOfObjectInLink(w);
+        KdopTree lt = linkTrees[link - 1];
+        if (coherent) {
+            NearPairs p = nearPairs(finger, link, w);
+            if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, result);
+            else query.collide(lt, objectTree, pose, 0, p, result);
+        } else {
+            counters[Counter.TREE_WALKS.ordinal()]++;
+            if (firstOnly) query.intersects(lt, objectTree, pose, 0, result);
+            else query.collide(lt, objectTree, pose, 0, result);
+        }
+        counters[Counter.TRIANGLE_TESTS.ordinal()] += result.triangleTests;
+        return result.intersecting();
+    }
+
+    @Override
+    public boolean touches(int finger, int link, double[] worldFromLink) {
+        return query(finger, link, worldFromLink, true);
+    }
+
     @Override
     public int collide(int finger, int link, double[] worldFromLink, ContactSet out) {
-        if (apart(link, worldFromLink)) {
-            result.clear();
-            return 0;
-        }
-        poseOfObjectInLink(worldFromLink);
-        query.collide(linkTrees[link - 1], objectTree, pose, 0, result);
-        if (!result.intersecting()) return 0;
+        if (!query(finger, link, worldFromLink, false)) return 0;
         TriangleMesh lm = linkMeshes[link - 1];
         int np = patches.build(result, lm.normals(), lm.areas(), objectMesh.normals(), objectMesh.areas(), pose, tolerance);
         double[] w = worldFromLink;

@@ -1,0 +1,80 @@
+package org.handsim.collision;
+
+import java.util.Arrays;
+
+/**
+ * The triangle pairs of two meshes that can intersect while their relative pose stays near the
+ * pose they were gathered at: temporal coherence for a query that is repeated as a body moves a
+ * little at a time (a finger link closing on an object, step after step and through the
+ * bisection of an event).
+ *
+ * <p><b>Contract.</b> {@link TreeQuery#near} walks the two trees at a pose P₀ and keeps every
+ * triangle pair whose bounds (k-DOPs down the trees, then the triangles' axis-aligned boxes)
+ * are within the {@linkplain #reach() reach} δ of each other; every other pair is separated at
+ * P₀ by more than δ, and the smallest of those separations, less a rounding margin, is the
+ * {@linkplain #clearance() clearance} D ≥ δ (+∞ when no pair was dropped). Then for every pose
+ * P such that no point of one mesh moves by D or more relative to the other between P₀ and P,
+ * {@link TreeQuery#collide(KdopTree, KdopTree, double[], int, NearPairs, CollisionResult)} at P
+ * returns exactly what the full query at P returns — the same pairs in the same order, the same
+ * segments bit for bit:
+ * <ul>
+ *   <li>a pair that intersects at P has a common point; at P₀ that point of one mesh is at most
+ *       the displacement away from the other mesh, so the pair's bounds are within D of each
+ *       other there and the pair was kept;</li>
+ *   <li>the kept pairs are tested with the same coordinates (the same placement formula) and
+ *       the same exact triangle test as the full walk, and they are stored in the order the
+ *       walk meets them, which does not depend on the bounds (a pre-order of the fixed tree of
+ *       node pairs that bounds only prune).</li>
+ * </ul>
+ * With no kept pair, the meshes are certified apart for every such pose: conservative
+ * advancement (B. Mirtich, "Impulse-based dynamic simulation of rigid body systems", PhD
+ * thesis, UC Berkeley 1996, ch. 2) with the k-DOP tree's separations as the distance bound.
+ *
+ * <p>Not thread-safe; one per (moving body, other body) and thread.
+ */
+public final class NearPairs {
+    int count;
+    int[] triA = new int[32], triB = new int[32];
+    double reach, clearance = Double.NEGATIVE_INFINITY;
+    /** Node pairs compared by the walk that gathered these pairs (for the counters). */
+    long nodeTests;
+
+    /** Empties the set; its clearance becomes −∞ (it covers no pose until gathered). */
+    public void clear() {
+        count = 0;
+        reach = 0;
+        clearance = Double.NEGATIVE_INFINITY;
+        nodeTests = 0;
+    }
+
+    void add(int a, int b) {
+        if (count == triA.length) {
+            triA = Arrays.copyOf(triA, 2 * count);
+            triB = Arrays.copyOf(triB, 2 * count);
+        }
+        triA[count] = a;
+        triB[count] = b;
+        count++;
+    }
+
+    /** @return the number of kept triangle pairs */
+    public int size() { return count; }
+
+    /** @return triangle of mesh A of kept pair i */
+    public int triangleA(int i) { return triA[i]; }
+
+    /** @return triangle of mesh B of kept pair i */
+    public int triangleB(int i) { return triB[i]; }
+
+    /** @return δ, the distance (metres) within which pairs were kept */
+    public double reach() { return reach; }
+
+    /**
+     * @return D (metres): the set stands for the full query at any pose whose relative
+     *         displacement from the gathering pose is less than D; −∞ before the first gathering
+     */
+    public double clearance() { return clearance; }
+
+    /** @return true if a relative displacement of {@code metres} keeps the set exact */
+    public boolean covers(double metres) { return metres < clearance; }
+}
