@@ -26,7 +26,9 @@ import java.util.Arrays;
  *       walk meets them, which does not depend on the bounds (a pre-order of the fixed tree of
  *       node pairs that bounds only prune).</li>
  * </ul>
- * With no kept pair, the meshes are certified apart for every such pose: conservative
+ * Each kept pair also keeps its own separation at P₀ ({@link #separation(int)}): a pose
+ * displaced by less than it cannot make that pair intersect, so the query skips it with one
+ * comparison, and a generous reach costs little. With no kept pair, the meshes are certified apart for every such pose: conservative
  * advancement (B. Mirtich, "Impulse-based dynamic simulation of rigid body systems", PhD
  * thesis, UC Berkeley 1996, ch. 2) with the k-DOP tree's separations as the distance bound.
  *
@@ -35,6 +37,8 @@ import java.util.Arrays;
 public final class NearPairs {
     int count;
     int[] triA = new int[32], triB = new int[32];
+    /** Per pair: a lower bound on the distance between its two triangles at the gathering pose (≤ 0: may touch). */
+    double[] gap = new double[32];
     double reach, clearance = Double.NEGATIVE_INFINITY;
     /** Node pairs compared by the walk that gathered these pairs (for the counters). */
     long nodeTests;
@@ -47,13 +51,15 @@ public final class NearPairs {
         nodeTests = 0;
     }
 
-    void add(int a, int b) {
+    void add(int a, int b, double separation) {
         if (count == triA.length) {
             triA = Arrays.copyOf(triA, 2 * count);
             triB = Arrays.copyOf(triB, 2 * count);
+            gap = Arrays.copyOf(gap, 2 * count);
         }
         triA[count] = a;
         triB[count] = b;
+        gap[count] = separation;
         count++;
     }
 
@@ -65,6 +71,13 @@ public final class NearPairs {
 
     /** @return triangle of mesh B of kept pair i */
     public int triangleB(int i) { return triB[i]; }
+
+    /**
+     * @return a lower bound (metres) on the distance between kept pair i's triangles at the
+     *         gathering pose, less the rounding margin; ≤ 0 when they may touch there. A pose
+     *         displaced by less than this cannot make them intersect.
+     */
+    public double separation(int i) { return gap[i]; }
 
     /** @return δ, the distance (metres) within which pairs were kept */
     public double reach() { return reach; }

@@ -13,7 +13,8 @@ package org.handsim.collision;
  * is chosen once per query: u is written as a non-negative combination of the three signed
  * unit directions ±eⱼ/|eⱼ| spanning the facet of their convex hull that the ray along u
  * leaves through (the decomposition with the least total weight, which is tight when the node
- * is round). Each node then costs 6 multiply-adds per direction of A, only for the nodes the
+ * is round; the facet of the last call is tried first, as a slowly turning link keeps it).
+ * Each node then costs 6 multiply-adds per direction of A, only for the nodes the
  * walk visits (cached per query). For R = identity the decomposition is u = dᵢ itself and the
  * bounds are exact.
  *
@@ -34,6 +35,9 @@ final class TransformedBounds {
     private final double[] coef = new double[3 * 13], dt = new double[13];
     private final double[] marginP = new double[13], marginT = new double[13];
     private final double[] mu = new double[3];
+    // the facet each direction used last time (a rotation that changes a little keeps its facets)
+    private Kdop lastKdop;
+    private final int[] lastFacet = new int[13];
 
     /**
      * Prepares the decomposition for placing B's k-DOPs ({@code kdop}) by the row-major
@@ -49,7 +53,8 @@ final class TransformedBounds {
             double uy = m12[1] * ax + m12[5] * ay + m12[9] * az;
             double uz = m12[2] * ax + m12[6] * ay + m12[10] * az;
             dt[i] = ax * m12[3] + ay * m12[7] + az * m12[11];
-            int facet = f.decompose(ux, uy, uz, mu);
+            int facet = lastKdop == kdop && f.weights(lastFacet[i], ux, uy, uz, mu) ? lastFacet[i] : f.decompose(ux, uy, uz, mu);
+            lastFacet[i] = facet;
             double rx = ux, ry = uy, rz = uz, cw = 0;
             for (int j = 0; j < 3; j++) {
                 int sd = f.tri[3 * facet + j];        // signed direction: 2*dir + (negative ? 1 : 0)
@@ -67,6 +72,7 @@ final class TransformedBounds {
             marginP[i] = 3 * (Math.abs(rx) + Math.abs(ry) + Math.abs(rz)) + 64 * Predicates.EPSILON * (3 * d1 + cw);
             marginT[i] = 64 * Predicates.EPSILON * d1 * tAbs;
         }
+        lastKdop = kdop;
     }
 
     /** Writes the placed bounds of the k-DOP at {@code src[so..]} (B's frame) to {@code dst[dof..]} (A's frame). */
@@ -157,6 +163,20 @@ final class TransformedBounds {
             tri = java.util.Arrays.copyOf(t, 3 * c);
             plane = java.util.Arrays.copyOf(pl, 3 * c);
             inv = java.util.Arrays.copyOf(iv, 9 * c);
+        }
+
+        /**
+         * Writes u's weights on facet f's three directions into {@code out}; true if none is
+         * negative, i.e. the ray along u leaves the hull through f (the answer of
+         * {@link #decompose}, up to a tie on a shared edge, where either facet is exact).
+         */
+        boolean weights(int f, double x, double y, double z, double[] out) {
+            int o = 9 * f;
+            double a = inv[o] * x + inv[o + 1] * y + inv[o + 2] * z;
+            double b = inv[o + 3] * x + inv[o + 4] * y + inv[o + 5] * z;
+            double c = inv[o + 6] * x + inv[o + 7] * y + inv[o + 8] * z;
+            out[0] = a; out[1] = b; out[2] = c;
+            return a >= 0 && b >= 0 && c >= 0;
         }
 
         /**

@@ -138,33 +138,42 @@ public final class TreeQuery {
             }
         }
         place(b, identity, Placement.TRANSFORM, true);
-        out.clearance = gather(a, b, reach, out) - margin;
+        out.clearance = gather(a, b, reach, margin, out) - margin;
         return out;
     }
 
     /**
-     * The full query's result at a pose the near pairs cover ({@link NearPairs#covers}), from
-     * the near pairs alone: each is tested as the full walk tests it, in the walk's order. The
-     * caller vouches for the cover (it measures the displacement); the node-test counter is 0.
+     * The full query's result at a pose the near pairs cover, from the near pairs alone: each
+     * pair whose separation is below {@code displacement} is tested as the full walk tests it,
+     * in the walk's order; the others cannot intersect. The caller vouches for the cover: no
+     * point of one mesh moved by {@code displacement} metres or more relative to the other since
+     * the gathering pose, and {@code displacement} &lt; {@link NearPairs#clearance()}. The
+     * node-test counter is 0.
      *
      * @param out cleared and filled
      * @return {@code out}
+     * @throws IllegalArgumentException if the displacement is not below the clearance
      */
-    public CollisionResult collide(KdopTree a, KdopTree b, double[] pose, int off, NearPairs near, CollisionResult out) {
+    public CollisionResult collide(KdopTree a, KdopTree b, double[] pose, int off, NearPairs near, double displacement,
+                                   CollisionResult out) {
         System.arraycopy(pose, off, m, 0, 12);
-        testNear(a, b, near, out, false);
+        testNear(a, b, near, displacement, out, false);
         return out;
     }
 
-    /** As {@link #collide(KdopTree, KdopTree, double[], int, NearPairs, CollisionResult)}, stopping at the first intersecting pair. */
-    public boolean intersects(KdopTree a, KdopTree b, double[] pose, int off, NearPairs near, CollisionResult out) {
+    /** As {@link #collide(KdopTree, KdopTree, double[], int, NearPairs, double, CollisionResult)}, stopping at the first intersecting pair. */
+    public boolean intersects(KdopTree a, KdopTree b, double[] pose, int off, NearPairs near, double displacement,
+                              CollisionResult out) {
         System.arraycopy(pose, off, m, 0, 12);
-        testNear(a, b, near, out, true);
+        testNear(a, b, near, displacement, out, true);
         return out.intersecting();
     }
 
-    private void testNear(KdopTree a, KdopTree b, NearPairs near, CollisionResult out, boolean stopAtFirst) {
+    private void testNear(KdopTree a, KdopTree b, NearPairs near, double displacement, CollisionResult out, boolean stopAtFirst) {
         if (a.k() != b.k()) throw new IllegalArgumentException("trees have different k: " + a.k() + " and " + b.k());
+        if (!near.covers(displacement)) {
+            throw new IllegalArgumentException("displacement " + displacement + " m is not below the near pairs' clearance " + near.clearance() + " m");
+        }
         out.clear();
         int n = near.count;
         if (n == 0) return;
@@ -172,9 +181,11 @@ public final class TreeQuery {
         place(b, isIdentity(m), Placement.TRANSFORM, false);
         final double[] va = a.vertices(), nA = a.triN, nAbsA = a.triNAbs;
         final int[] trisA = a.tris, trisB = b.tris, nta = near.triA, ntb = near.triB;
+        final double[] gap = near.gap;
         final boolean placeNormals = !normalsPlaced;
         int tested = 0;
         for (int i = 0; i < n; i++) {
+            if (gap[i] > displacement) continue;
             int ta = nta[i], tbi = ntb[i];
             if (placeNormals) placeNormal(b, tbi);
             tested++;
@@ -222,11 +233,31 @@ public final class TreeQuery {
     }
 
     /**
+     * How far the triangle (q0, q1, q2) lies on one side of the plane through p with normal n
+     * (not unit; {@code n[o..o+2]}): the smallest distance of its vertices from the plane when
+     * they are all strictly on one side, else 0 or less. A lower bound on the distance between
+     * the triangle and anything in the plane.
+     */
+    private static double planeGap(double[] n, int o, double[] vp, int p, double[] vq, int q0, int q1, int q2) {
+        double nx = n[o], ny = n[o + 1], nz = n[o + 2];
+        double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        if (!(len > 0)) return Double.NEGATIVE_INFINITY;
+        double px = vp[p], py = vp[p + 1], pz = vp[p + 2];
+        double s0 = nx * (vq[q0] - px) + ny * (vq[q0 + 1] - py) + nz * (vq[q0 + 2] - pz);
+        double s1 = nx * (vq[q1] - px) + ny * (vq[q1 + 1] - py) + nz * (vq[q1 + 2] - pz);
+        double s2 = nx * (vq[q2] - px) + ny * (vq[q2 + 1] - py) + nz * (vq[q2 + 2] - pz);
+        double lo = Math.min(s0, Math.min(s1, s2)), hi = Math.max(s0, Math.max(s1, s2));
+        return Math.max(lo, -hi) / len;
+    }
+
+    /**
      * The walk of {@link #walk} with separations instead of overlap tests: keeps the triangle
-     * pairs within {@code reach}, returns the smallest separation of what it dropped (+∞ if
+     * pairs within {@code reach}, each with its separation (the largest of its leaf pair's, its
+     * triangles' boxes' and each triangle's distance from the other's plane, less
+     * {@code margin}), returns the smallest separation of what it dropped (+∞ if
      * nothing). Counts its node tests into {@code out}.
      */
-    private double gather(KdopTree a, KdopTree b, double reach, NearPairs out) {
+    private double gather(KdopTree a, KdopTree b, double reach, double margin, NearPairs out) {
         final Kdop kd = a.kdop();
         final int k = a.k();
         final double[] ba = a.bounds, va = a.vertices();
@@ -234,8 +265,8 @@ public final class TreeQuery {
         final int[] childA = a.child, childB = b.child, sizeA = a.size, sizeB = b.size;
         final int[] orderA = a.order, orderB = b.order, trisA = a.tris, trisB = b.tris;
         final boolean[] degA = a.degenerate, degB = b.degenerate;
-        final boolean lz = lazy;
-        final double[] src = b.vertices();
+        final boolean lz = lazy, placeNormals = !normalsPlaced;
+        final double[] src = b.vertices(), nA = a.triN;
         int[] stk = stack;
         int sp = 0;
         long tests = 1;
@@ -253,6 +284,7 @@ public final class TreeQuery {
             int ca = childA[na], cb = childB[nb];
             if (ca < 0 && cb < 0) {
                 int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
+                double leafGap = kd.separation(ba, na * k, bbl, nb * k);
                 for (int i = fa; i < ea; i++) {
                     int ta = orderA[i];
                     if (degA[ta]) continue;
@@ -266,7 +298,7 @@ public final class TreeQuery {
                             placeVertex(src, b1);
                             placeVertex(src, b2);
                         }
-                        double gap = Double.NEGATIVE_INFINITY;
+                        double gap = leafGap;
                         for (int d = 0; d < 3; d++) {
                             double amin = Math.min(va[a0 + d], Math.min(va[a1 + d], va[a2 + d]));
                             double amax = Math.max(va[a0 + d], Math.max(va[a1 + d], va[a2 + d]));
@@ -277,7 +309,11 @@ public final class TreeQuery {
                         if (gap > reach) {
                             if (gap < clear) clear = gap;
                         } else {
-                            out.add(ta, tbi);
+                            // kept (so the clearance stays at least the boxes' gap); its own bound also uses the planes
+                            if (placeNormals) placeNormal(b, tbi);
+                            gap = Math.max(gap, Math.max(planeGap(nA, 3 * ta, va, a0, vb, b0, b1, b2),
+                                planeGap(nB, 3 * tbi, vb, b0, va, a0, a1, a2)));
+                            out.add(ta, tbi, gap - margin);
                         }
                     }
                 }

@@ -69,6 +69,7 @@ public final class SceneGeometry implements LinkContacts {
     private final NearPairs[] near = new NearPairs[9];
     private final double[][] anchor = new double[9][12], lastPose = new double[9][12];
     private final boolean[] hasLast = new boolean[9];
+    private double sinceAnchor;    // displacement bound of the link from the anchor of the near pairs nearPairs returned
     private final long[] counters = new long[Counter.values().length];
 
     /** What the collision back end did (see {@link #counters()}). */
@@ -88,7 +89,8 @@ public final class SceneGeometry implements LinkContacts {
      * within four displacements stay valid for at least four more like it (and for the
      * bisection inside the last one).
      */
-    static final double REACH_STEPS = 4;
+    static final double REACH_STEPS = Double.parseDouble(System.getProperty("sg.steps", "4"));
+    static final boolean DEBUG = Boolean.getBoolean("sg.debug");
     /** Bounds of the reach, in units of the link's bounding radius. */
     static final double REACH_MIN = 1e-5, REACH_MAX = 0.05;
 
@@ -98,26 +100,42 @@ public final class SceneGeometry implements LinkContacts {
      * @throws ScenarioException naming the file, line and column if a model cannot be loaded
      */
     public SceneGeometry(Scenario.ObjectPlacement object, int k) {
-        objectMesh = mesh(object.file(), object.divisions(), object.scale());
-        objectTree = tree(object.file(), object.divisions(), object.scale(), k, objectMesh);
+        Shape obj = shape(object.file(), object.divisions(), object.scale(), k);
+        objectMesh = obj.mesh();
+        objectTree = obj.tree();
+        double diag = obj.diagonal();
         for (int j = 1; j <= 3; j++) {
-            Path f = linkFile(j);
-            linkMeshes[j - 1] = mesh(f, LINK_DIVISIONS, 1.0);
-            linkTrees[j - 1] = tree(f, LINK_DIVISIONS, 1.0, k, linkMeshes[j - 1]);
+            Shape link = shape(linkFile(j), LINK_DIVISIONS, 1.0, k);
+            linkMeshes[j - 1] = link.mesh();
+            linkTrees[j - 1] = link.tree();
+            linkSpheres[j - 1] = link.sphere();
+            diag = Math.max(diag, link.diagonal());
         }
         object.worldFromObject().copyTo(worldFromObject, 0);
-        double[] os = boundingSphere(objectMesh);
+        double[] os = obj.sphere();
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
-        for (int j = 0; j < 3; j++) linkSpheres[j] = boundingSphere(linkMeshes[j]);
-        double diag = 0;
-        for (TriangleMesh m : new TriangleMesh[] {objectMesh, linkMeshes[0], linkMeshes[1], linkMeshes[2]}) {
-            diag = Math.max(diag, m.diagonal());
-        }
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
         for (int i = 0; i < near.length; i++) near[i] = new NearPairs();
-        thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.scale(),
-            x -> minWidth(objectMesh));
+        thickness = THICKNESS.computeIfAbsent(obj.key(), x -> minWidth(objectMesh));
+    }
+
+    /**
+     * A mesh with what the queries need of it, made once per file, divisions, scale and k and
+     * shared: its k-DOP tree, bounding sphere ({@link #boundingSphere}) and bounding-box diagonal.
+     */
+    private record Shape(String key, TriangleMesh mesh, KdopTree tree, double[] sphere, double diagonal) {}
+
+    private static final Map<String, Shape> SHAPES = new ConcurrentHashMap<>();
+
+    private static Shape shape(Path file, int divisions, double scale, int k) {
+        String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale;
+        Shape sh = SHAPES.get(key + "|k" + k);
+        if (sh != null) return sh;
+        TriangleMesh m = mesh(file, divisions, scale);
+        sh = new Shape(key, m, tree(file, divisions, scale, k, m), boundingSphere(m), m.diagonal());
+        SHAPES.putIfAbsent(key + "|k" + k, sh);
+        return sh;
     }
 
     private static final Map<String, Double> THICKNESS = new ConcurrentHashMap<>();
@@ -319,18 +337,25 @@ public final class SceneGeometry implements LinkContacts {
     private NearPairs nearPairs(int finger, int link, double[] w) {
         int s = 3 * (finger - 1) + (link - 1);
         NearPairs p = near[s];
-        double moved = hasLast[s] ? displacement(link, lastPose[s], w) : 0;
-        System.arraycopy(w, 0, lastPose[s], 0, 12);
-        hasLast[s] = true;
-        if (p.clearance() > 0 && p.covers(displacement(link, anchor[s], w))) {
-            counters[Counter.COHERENT_QUERIES.ordinal()]++;
-            return p;
+        double[] last = lastPose[s];
+        if (p.clearance() > 0) {
+            sinceAnchor = displacement(link, anchor[s], w);
+            if (p.covers(sinceAnchor)) {
+                counters[Counter.COHERENT_QUERIES.ordinal()]++;
+                System.arraycopy(w, 0, last, 0, 12);
+                return p;
+            }
         }
+        double moved = hasLast[s] ? displacement(link, last, w) : 0;
+        System.arraycopy(w, 0, last, 0, 12);
+        hasLast[s] = true;
         double r = linkSpheres[link - 1][3];
         double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, REACH_STEPS * moved));
         query.near(linkTrees[link - 1], objectTree, pose, 0, reach, p);
         System.arraycopy(w, 0, anchor[s], 0, 12);
+        sinceAnchor = 0;
         counters[Counter.TREE_WALKS.ordinal()]++;
+        if (DEBUG) System.out.printf("gather f%d l%d moved %.3g reach %.3g clear %.3g pairs %d nodes %d%n", finger, link, moved, reach, p.clearance(), p.size(), 0);
         return p;
     }
 
@@ -345,14 +370,15 @@ public final class SceneGeometry implements LinkContacts {
         KdopTree lt = linkTrees[link - 1];
         if (coherent) {
             NearPairs p = nearPairs(finger, link, w);
-            if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, result);
-            else query.collide(lt, objectTree, pose, 0, p, result);
+            if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, sinceAnchor, result);
+            else query.collide(lt, objectTree, pose, 0, p, sinceAnchor, result);
         } else {
             counters[Counter.TREE_WALKS.ordinal()]++;
             if (firstOnly) query.intersects(lt, objectTree, pose, 0, result);
             else query.collide(lt, objectTree, pose, 0, result);
         }
         counters[Counter.TRIANGLE_TESTS.ordinal()] += result.triangleTests;
+        if (DEBUG && result.triangleTests > 0) System.out.printf("tests f%d l%d n %d pairs %d first %b since %.3g%n", finger, link, result.triangleTests, result.pairCount(), firstOnly, sinceAnchor);
         return result.intersecting();
     }
 
