@@ -233,27 +233,32 @@ public final class TreeQuery {
     }
 
     /**
-     * How far the triangle (q0, q1, q2) lies on one side of the plane through p with normal n
-     * (not unit; {@code n[o..o+2]}): the smallest distance of its vertices from the plane when
-     * they are all strictly on one side, else 0 or less. A lower bound on the distance between
-     * the triangle and anything in the plane.
+     * The gap between triangles (p0, p1, p2) and (q0, q1, q2) along the axis n
+     * ({@code n[o..o+2]}, not unit): the distance between their projections, ≤ 0 when these
+     * overlap. A lower bound on the distance between the triangles for any axis; with a
+     * triangle's normal it is how far the other lies off its plane. The normal is computed in
+     * floating point (a sliver's may point anywhere): that is why all six vertices are
+     * projected, not only the other triangle's.
      */
-    private static double planeGap(double[] n, int o, double[] vp, int p, double[] vq, int q0, int q1, int q2) {
+    private static double axisGap(double[] n, int o, double[] vp, int p0, int p1, int p2, double[] vq, int q0, int q1, int q2) {
         double nx = n[o], ny = n[o + 1], nz = n[o + 2];
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         if (!(len > 0)) return Double.NEGATIVE_INFINITY;
-        double px = vp[p], py = vp[p + 1], pz = vp[p + 2];
-        double s0 = nx * (vq[q0] - px) + ny * (vq[q0 + 1] - py) + nz * (vq[q0 + 2] - pz);
-        double s1 = nx * (vq[q1] - px) + ny * (vq[q1 + 1] - py) + nz * (vq[q1 + 2] - pz);
-        double s2 = nx * (vq[q2] - px) + ny * (vq[q2 + 1] - py) + nz * (vq[q2 + 2] - pz);
-        double lo = Math.min(s0, Math.min(s1, s2)), hi = Math.max(s0, Math.max(s1, s2));
-        return Math.max(lo, -hi) / len;
+        double a0 = nx * vp[p0] + ny * vp[p0 + 1] + nz * vp[p0 + 2];
+        double a1 = nx * vp[p1] + ny * vp[p1 + 1] + nz * vp[p1 + 2];
+        double a2 = nx * vp[p2] + ny * vp[p2 + 1] + nz * vp[p2 + 2];
+        double b0 = nx * vq[q0] + ny * vq[q0 + 1] + nz * vq[q0 + 2];
+        double b1 = nx * vq[q1] + ny * vq[q1 + 1] + nz * vq[q1 + 2];
+        double b2 = nx * vq[q2] + ny * vq[q2 + 1] + nz * vq[q2 + 2];
+        double aLo = Math.min(a0, Math.min(a1, a2)), aHi = Math.max(a0, Math.max(a1, a2));
+        double bLo = Math.min(b0, Math.min(b1, b2)), bHi = Math.max(b0, Math.max(b1, b2));
+        return Math.max(bLo - aHi, aLo - bHi) / len;
     }
 
     /**
      * The walk of {@link #walk} with separations instead of overlap tests: keeps the triangle
      * pairs within {@code reach}, each with its separation (the largest of its leaf pair's, its
-     * triangles' boxes' and each triangle's distance from the other's plane, less
+     * triangles' boxes' and their gaps along each triangle's normal, less
      * {@code margin}), returns the smallest separation of what it dropped (+∞ if
      * nothing). Counts its node tests into {@code out}.
      */
@@ -311,8 +316,8 @@ public final class TreeQuery {
                         } else {
                             // kept (so the clearance stays at least the boxes' gap); its own bound also uses the planes
                             if (placeNormals) placeNormal(b, tbi);
-                            gap = Math.max(gap, Math.max(planeGap(nA, 3 * ta, va, a0, vb, b0, b1, b2),
-                                planeGap(nB, 3 * tbi, vb, b0, va, a0, a1, a2)));
+                            gap = Math.max(gap, Math.max(axisGap(nA, 3 * ta, va, a0, a1, a2, vb, b0, b1, b2),
+                                axisGap(nB, 3 * tbi, va, a0, a1, a2, vb, b0, b1, b2)));
                             out.add(ta, tbi, gap - margin);
                         }
                     }
