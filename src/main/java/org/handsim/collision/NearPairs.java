@@ -63,6 +63,9 @@ public final class NearPairs {
         count++;
     }
 
+    /** @return the node pairs the gathering walk compared (its k-DOP separations), the roots included */
+    public long nodeTests() { return nodeTests; }
+
     /** @return the number of kept triangle pairs */
     public int size() { return count; }
 

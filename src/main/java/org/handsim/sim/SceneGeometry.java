@@ -32,7 +32,7 @@ import org.handsim.vrml.VrmlScene;
  * <p><b>Temporal coherence</b> ({@link #coherent(boolean)}, on by default). A link moves a
  * little between two queries (one step, or less inside an event's bisection), so each link of
  * each finger keeps the {@link NearPairs} gathered at an anchor pose: the triangle pairs within
- * a reach of four times the link's last displacement, valid while the link stays within their
+ * a reach of {@link #REACH_STEPS} times the link's last displacement, valid while the link stays within their
  * clearance of the anchor. A query whose link is covered tests only those pairs (none, while a
  * closing link is still farther from the object than it has moved since the anchor); any
  * other re-anchors. Both give exactly the full query's contacts (NearPairs' contract); the
@@ -70,6 +70,7 @@ public final class SceneGeometry implements LinkContacts {
     private final double[][] anchor = new double[9][12], lastPose = new double[9][12];
     private final boolean[] hasLast = new boolean[9];
     private double sinceAnchor;    // displacement bound of the link from the anchor of the near pairs nearPairs returned
+    private boolean gathered;      // whether nearPairs walked the trees for them
     private final long[] counters = new long[Counter.values().length];
 
     /** What the collision back end did (see {@link #counters()}). */
@@ -85,12 +86,13 @@ public final class SceneGeometry implements LinkContacts {
     }
 
     /**
-     * Reach of a gathering, relative to the link's last displacement: pairs that can come
-     * within four displacements stay valid for at least four more like it (and for the
-     * bisection inside the last one).
+     * Reach of a gathering, relative to the link's last displacement: the near pairs then stay
+     * valid for at least this many more moves like it (and for the bisection inside the last
+     * one). Chosen by measurement on the mug grasp (docs/BENCHMARKS.md): 4, 8, 16 and 32 cost
+     * 388, 310, 234 and 182 walks and 9 000, 10 000, 12 600 and 16 600 triangle tests; a walk
+     * costs about 60 triangle tests.
      */
-    static final double REACH_STEPS = Double.parseDouble(System.getProperty("sg.steps", "4"));
-    static final boolean DEBUG = Boolean.getBoolean("sg.debug");
+    static final double REACH_STEPS = 16;
     /** Bounds of the reach, in units of the link's bounding radius. */
     static final double REACH_MIN = 1e-5, REACH_MAX = 0.05;
 
@@ -246,7 +248,10 @@ public final class SceneGeometry implements LinkContacts {
     public TriangleMesh linkMesh(int j) { return linkMeshes[j - 1]; }
     /** {@code world ← object} (12 values, a copy). */
     public double[] worldFromObject() { return worldFromObject.clone(); }
-    /** Counters of the last query. */
+    /**
+     * Counters of the last query: with coherence, the node tests are those of its gathering walk
+     * (0 when it reused near pairs) and the triangle tests those of the near pairs it tested.
+     */
     public CollisionResult lastResult() { return result; }
 
     private void poseOfObjectInLink(double[] worldFromLink) {
@@ -331,8 +336,9 @@ public final class SceneGeometry implements LinkContacts {
     /**
      * The near pairs that stand for the full query of this link at {@code w} (its pose, with the
      * object's pose in the link frame already in {@link #pose}): the anchored ones if they cover
-     * w, else gathered anew at w with a reach of {@link #REACH_STEPS} times the link's last
-     * displacement.
+     * w, else gathered anew at w with a reach of {@link #REACH_STEPS} times the link's
+     * displacement since its previous query (within [{@link #REACH_MIN}, {@link #REACH_MAX}] of
+     * its bounding radius).
      */
     private NearPairs nearPairs(int finger, int link, double[] w) {
         int s = 3 * (finger - 1) + (link - 1);
@@ -341,6 +347,7 @@ public final class SceneGeometry implements LinkContacts {
         if (p.clearance() > 0) {
             sinceAnchor = displacement(link, anchor[s], w);
             if (p.covers(sinceAnchor)) {
+                gathered = false;
                 counters[Counter.COHERENT_QUERIES.ordinal()]++;
                 System.arraycopy(w, 0, last, 0, 12);
                 return p;
@@ -354,8 +361,8 @@ public final class SceneGeometry implements LinkContacts {
         query.near(linkTrees[link - 1], objectTree, pose, 0, reach, p);
         System.arraycopy(w, 0, anchor[s], 0, 12);
         sinceAnchor = 0;
+        gathered = true;
         counters[Counter.TREE_WALKS.ordinal()]++;
-        if (DEBUG) System.out.printf("gather f%d l%d moved %.3g reach %.3g clear %.3g pairs %d nodes %d%n", finger, link, moved, reach, p.clearance(), p.size(), 0);
         return p;
     }
 
@@ -372,13 +379,13 @@ public final class SceneGeometry implements LinkContacts {
             NearPairs p = nearPairs(finger, link, w);
             if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, sinceAnchor, result);
             else query.collide(lt, objectTree, pose, 0, p, sinceAnchor, result);
+            if (gathered) result.nodeTests = p.nodeTests();
         } else {
             counters[Counter.TREE_WALKS.ordinal()]++;
             if (firstOnly) query.intersects(lt, objectTree, pose, 0, result);
             else query.collide(lt, objectTree, pose, 0, result);
         }
         counters[Counter.TRIANGLE_TESTS.ordinal()] += result.triangleTests;
-        if (DEBUG && result.triangleTests > 0) System.out.printf("tests f%d l%d n %d pairs %d first %b since %.3g%n", finger, link, result.triangleTests, result.pairCount(), firstOnly, sinceAnchor);
         return result.intersecting();
     }
 

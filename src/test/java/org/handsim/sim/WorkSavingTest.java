@@ -63,6 +63,41 @@ class WorkSavingTest {
         assertTrue(lazy.counter(HandModel.Counter.COLLISION_QUERIES) * 2 < full.counter(HandModel.Counter.COLLISION_QUERIES));
     }
 
+    /**
+     * Temporal coherence in the collision back end (SceneGeometry.coherent) changes no recorded
+     * number at all — not even in the last bit — on the mug grasp, and walks the trees far less.
+     */
+    @Test
+    void coherentCollisionChangesNoNumber() {
+        Scenario s = Scenario.load(Home.scenarios().resolve("mug-grasp.json"));
+        SceneGeometry on = new SceneGeometry(s.object(), SceneGeometry.DEFAULT_K);
+        SceneGeometry off = new SceneGeometry(s.object(), SceneGeometry.DEFAULT_K).coherent(false);
+        HandModel a = new HandModel(s, on, org.handsim.dynamics.HandDynamics.barrettHand()::inverseDynamics, true);
+        HandModel b = new HandModel(s, off, org.handsim.dynamics.HandDynamics.barrettHand()::inverseDynamics, true);
+        a.run(null);
+        b.run(null);
+        Recorder ra = a.recorder(), rb = b.recorder();
+        assertEquals(rb.rows(), ra.rows());
+        for (int row = 0; row < ra.rows(); row++) {
+            for (int k = 1; k <= 3; k++) {
+                for (int c = Recorder.Q; c <= Recorder.TAU3; c++) {
+                    assertEquals(rb.get(k, c, row), ra.get(k, c, row), "finger " + k + " column " + c + " row " + row);
+                }
+                assertEquals(rb.state(k, row), ra.state(k, row));
+                assertEquals(rb.contacts(k, row), ra.contacts(k, row));
+                assertEquals(rb.force(k, row), ra.force(k, row), "force, finger " + k + " row " + row);
+            }
+        }
+        for (int k = 1; k <= 3; k++) {
+            assertEquals(b.breakawayTime(k), a.breakawayTime(k));
+            assertEquals(b.contactCounts(k), a.contactCounts(k));
+            assertEquals(b.maxContactForce(k), a.maxContactForce(k));
+        }
+        assertEquals(java.util.Arrays.toString(b.counters()), java.util.Arrays.toString(a.counters()), "the model's own counters");
+        long walks = on.counter(SceneGeometry.Counter.TREE_WALKS), fullWalks = off.counter(SceneGeometry.Counter.TREE_WALKS);
+        assertTrue(walks * 10 < fullWalks, walks + " walks with coherence, " + fullWalks + " without");
+    }
+
     /** Dynamics only when torques are asked for: the clutch and the contacts do not need it. */
     @Test
     void torquesOffSkipsTheDynamicsAndChangesNoEvent() {
