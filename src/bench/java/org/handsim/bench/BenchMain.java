@@ -18,6 +18,7 @@ public final class BenchMain {
         SUITES.put("kinematics", new KinematicsBench());
         SUITES.put("dynamics", new DynamicsBench());
         SUITES.put("sim", new SimBench());
+        SUITES.put("sim-profile", new SimProfileBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
         SUITES.put("collision", new CollisionBench(false));
         SUITES.put("collision-fcl", new CollisionBench(true));

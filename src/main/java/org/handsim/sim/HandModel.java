@@ -546,6 +546,15 @@ public final class HandModel {
     public double breakawayCounts(int k) { return breakQ[k - 1]; }
     /** Motor count where finger k's inner link (first) met the object, NaN if never. */
     public double contactCounts(int k) { return contactQ[k - 1]; }
+    /**
+     * The collision back end's counters by name ({@link LinkContacts#counters()}; for
+     * {@link SceneGeometry}: sphere tests that sufficed, tree walks, queries answered from near
+     * pairs, triangle tests), counted since the back end was made; empty without an object.
+     */
+    public java.util.Map<String, Long> collisionCounters() {
+        return objectContacts == null ? java.util.Map.of() : objectContacts.counters();
+    }
+
     /** Work counters since {@link #initialise()}. */
     public long counter(Counter c) { return counters[c.ordinal()]; }
     public long[] counters() { return counters.clone(); }

@@ -24,6 +24,14 @@ public interface LinkContacts {
     }
 
     /**
+     * What the back end did so far, by name (lower case, for {@code summary.json}'s counters);
+     * empty by default.
+     */
+    default java.util.Map<String, Long> counters() {
+        return java.util.Map.of();
+    }
+
+    /**
      * The object's thinnest width in metres (an estimate from above is fine; the tunnelling
      * guard substeps so that no link point moves more than half of it per check).
      */

@@ -46,6 +46,7 @@ public final class RunSummary {
         s.put("fingers", fingers);
         Map<String, Object> c = new LinkedHashMap<>();
         for (HandModel.Counter counter : HandModel.Counter.values()) c.put(counter.name().toLowerCase(), m.counter(counter));
+        c.putAll(m.collisionCounters());
         s.put("lazy", m.isLazy());
         s.put("counters", c);
         return s;

@@ -36,7 +36,7 @@ import org.handsim.vrml.VrmlScene;
  * clearance of the anchor. A query whose link is covered tests only those pairs (none, while a
  * closing link is still farther from the object than it has moved since the anchor); any
  * other re-anchors. Both give exactly the full query's contacts (NearPairs' contract); the
- * displacement bound is {@link #displacement}. {@link #counters()} says how often each ran.
+ * displacement bound is {@link #displacement}. {@link #counter} says how often each ran.
  *
  * <p>Meshes and trees are immutable and shared between instances (and threads) through a
  * cache keyed by file, divisions, scale and k; each instance has its own query scratch, so one
@@ -73,7 +73,7 @@ public final class SceneGeometry implements LinkContacts {
     private boolean gathered;      // whether nearPairs walked the trees for them
     private final long[] counters = new long[Counter.values().length];
 
-    /** What the collision back end did (see {@link #counters()}). */
+    /** What the collision back end did (see {@link #counter}; in {@code summary.json}'s counters). */
     public enum Counter {
         /** Queries answered by the bounding-sphere test alone. */
         SPHERE_APART,
@@ -309,8 +309,13 @@ public final class SceneGeometry implements LinkContacts {
     /** How often each kind of work ran since construction ({@link Counter}). */
     public long counter(Counter c) { return counters[c.ordinal()]; }
 
-    /** Counters in {@link Counter} order (a copy). */
-    public long[] counters() { return counters.clone(); }
+    /** The counters by lower-case {@link Counter} name, in that order. */
+    @Override
+    public Map<String, Long> counters() {
+        Map<String, Long> m = new java.util.LinkedHashMap<>();
+        for (Counter c : Counter.values()) m.put(c.name().toLowerCase(java.util.Locale.ROOT), counters[c.ordinal()]);
+        return m;
+    }
 
     /**
      * An upper bound (metres) on how far any point of link j's mesh moves between the world
