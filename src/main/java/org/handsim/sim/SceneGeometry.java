@@ -324,18 +324,25 @@ public final class SceneGeometry implements LinkContacts {
      * ‖R₁ − R₀‖_F·r + |(R₁s + t₁) − (R₀s + t₀)|, the Frobenius norm bounding the spectral one.
      */
     double displacement(int link, double[] w0, double[] w1) {
+        displacementTerms(link, w0, w1);
+        return Math.sqrt(rotTerm) * linkSpheres[link - 1][3] + Math.sqrt(moveTerm);
+    }
+
+    private double rotTerm, moveTerm;    // ‖R₁ − R₀‖²_F and |Δ(Rs + t)|² of the last displacementTerms
+
+    private void displacementTerms(int link, double[] w0, double[] w1) {
         double[] sp = linkSpheres[link - 1];
         double f = 0;
         for (int r = 0; r < 3; r++) {
             for (int col = 0; col < 3; col++) f += sq(w1[4 * r + col] - w0[4 * r + col]);
         }
-        double dx = 0, dy = 0, dz = 0;
+        double g = 0;
         for (int r = 0; r < 3; r++) {
-            double d = (w1[4 * r] - w0[4 * r]) * sp[0] + (w1[4 * r + 1] - w0[4 * r + 1]) * sp[1] + (w1[4 * r + 2] - w0[4 * r + 2]) * sp[2]
-                + (w1[4 * r + 3] - w0[4 * r + 3]);
-            if (r == 0) dx = d; else if (r == 1) dy = d; else dz = d;
+            g += sq((w1[4 * r] - w0[4 * r]) * sp[0] + (w1[4 * r + 1] - w0[4 * r + 1]) * sp[1] + (w1[4 * r + 2] - w0[4 * r + 2]) * sp[2]
+                + (w1[4 * r + 3] - w0[4 * r + 3]));
         }
-        return Math.sqrt(f) * sp[3] + Math.sqrt(dx * dx + dy * dy + dz * dz);
+        rotTerm = f;
+        moveTerm = g;
     }
 
     /**
@@ -350,8 +357,12 @@ public final class SceneGeometry implements LinkContacts {
         NearPairs p = near[s];
         double[] last = lastPose[s];
         if (p.clearance() > 0) {
-            sinceAnchor = displacement(link, anchor[s], w);
-            if (p.covers(sinceAnchor)) {
+            displacementTerms(link, anchor[s], w);
+            double r = linkSpheres[link - 1][3], c = p.clearance();
+            // (a + b)² ≤ 2(a² + b²): with no pair to test, that bound settles most covers without a root
+            boolean covered = p.size() == 0 && 2 * (rotTerm * r * r + moveTerm) < c * c;
+            sinceAnchor = covered ? Double.NaN : Math.sqrt(rotTerm) * r + Math.sqrt(moveTerm);   // NaN: not needed, no pair
+            if (covered || p.covers(sinceAnchor)) {
                 gathered = false;
                 counters[Counter.COHERENT_QUERIES.ordinal()]++;
                 System.arraycopy(w, 0, last, 0, 12);
@@ -363,6 +374,7 @@ public final class SceneGeometry implements LinkContacts {
         hasLast[s] = true;
         double r = linkSpheres[link - 1][3];
         double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, REACH_STEPS * moved));
+        poseOfObjectInLink(w);
         query.near(linkTrees[link - 1], objectTree, pose, 0, reach, p);
         System.arraycopy(w, 0, anchor[s], 0, 12);
         sinceAnchor = 0;
@@ -378,14 +390,19 @@ public final class SceneGeometry implements LinkContacts {
             counters[Counter.SPHERE_APART.ordinal()]++;
             return false;
         }
-        poseOfObjectInLink(w);
         KdopTree lt = linkTrees[link - 1];
         if (coherent) {
             NearPairs p = nearPairs(finger, link, w);
-            if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, sinceAnchor, result);
-            else query.collide(lt, objectTree, pose, 0, p, sinceAnchor, result);
+            if (p.size() == 0) {
+                result.clear();                       // nothing within the clearance: no contact
+            } else {
+                if (!gathered) poseOfObjectInLink(w);
+                if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, sinceAnchor, result);
+                else query.collide(lt, objectTree, pose, 0, p, sinceAnchor, result);
+            }
             if (gathered) result.nodeTests = p.nodeTests();
         } else {
+            poseOfObjectInLink(w);
             counters[Counter.TREE_WALKS.ordinal()]++;
             if (firstOnly) query.intersects(lt, objectTree, pose, 0, result);
             else query.collide(lt, objectTree, pose, 0, result);
