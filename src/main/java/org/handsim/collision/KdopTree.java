@@ -80,6 +80,8 @@ public final class KdopTree {
     private double[] vertices;
     /** Per triangle: normal (b−a)×(c−a) and its permanent terms ({@link Predicates#normal}) from {@link #vertices}. */
     final double[] triN, triNAbs;
+    /** Bounding sphere {cx, cy, cz, r} of {@link #vertices}: the root box's centre, the farthest vertex. */
+    final double[] sphere = new double[4];
 
     private KdopTree(TriangleMesh mesh, Kdop kdop, SplitRule rule, int maxLeafSize) {
         this.mesh = mesh;
@@ -114,6 +116,22 @@ public final class KdopTree {
         this.triNAbs = new double[3 * n];
         fitBounds(vertices, bounds);
         normals(vertices, tris, triN, triNAbs);
+        fitSphere();
+    }
+
+    /** The sphere about the root box's centre reaching the farthest vertex (radius rounded up a little). */
+    private void fitSphere() {
+        if (nodeCount == 0) return;
+        double cx = 0.5 * (bounds[0] + bounds[1]), cy = 0.5 * (bounds[2] + bounds[3]), cz = 0.5 * (bounds[4] + bounds[5]);
+        double r2 = 0;
+        for (int i = 0; i < vertices.length; i += 3) {
+            double dx = vertices[i] - cx, dy = vertices[i + 1] - cy, dz = vertices[i + 2] - cz;
+            r2 = Math.max(r2, dx * dx + dy * dy + dz * dz);
+        }
+        sphere[0] = cx;
+        sphere[1] = cy;
+        sphere[2] = cz;
+        sphere[3] = Math.sqrt(r2) * (1 + 1e-12);
     }
 
     /** The floating-point normals and permanents of every triangle, as {@link Predicates#normal}. */
@@ -353,6 +371,7 @@ public final class KdopTree {
         System.arraycopy(newVertices, 0, vertices, 0, newVertices.length);
         fitBounds(vertices, bounds);
         normals(vertices, tris, triN, triNAbs);
+        fitSphere();
     }
 
     /** Refits to the mesh's vertices moved by {@code pose} (mesh frame → new frame). */
@@ -363,6 +382,7 @@ public final class KdopTree {
         transformPoints(m, mesh.vertices(), vertices, mesh.vertexCount());
         fitBounds(vertices, bounds);
         normals(vertices, tris, triN, triNAbs);
+        fitSphere();
     }
 
     /**
@@ -410,6 +430,9 @@ public final class KdopTree {
 
     /** @return the current vertex positions (the mesh's until a refit); do not modify */
     public double[] vertices() { return vertices; }
+
+    /** @return {cx, cy, cz, r}: a sphere (metres, the tree's frame) that holds every vertex (a new array) */
+    public double[] boundingSphere() { return sphere.clone(); }
 
     /** @return a copy of node i's k-DOP bounds (slot order of {@link Kdop}) */
     public double[] nodeBounds(int node) {

@@ -5,8 +5,8 @@ import java.nio.file.Path;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.handsim.collision.CollisionResult;
+import org.handsim.collision.CoherentQuery;
 import org.handsim.collision.KdopTree;
-import org.handsim.collision.NearPairs;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
@@ -31,12 +31,11 @@ import org.handsim.vrml.VrmlScene;
  *
  * <p><b>Temporal coherence</b> ({@link #coherent(boolean)}, on by default). A link moves a
  * little between two queries (one step, or less inside an event's bisection), so each link of
- * each finger keeps the {@link NearPairs} gathered at an anchor pose: the triangle pairs within
- * a reach of {@link #REACH_STEPS} times the link's last displacement, valid while the link stays within their
- * clearance of the anchor. A query whose link is covered tests only those pairs (none, while a
- * closing link is still farther from the object than it has moved since the anchor); any
- * other re-anchors. Both give exactly the full query's contacts (NearPairs' contract); the
- * displacement bound is {@link #displacement}. {@link #counter} says how often each ran.
+ * each finger has its {@link CoherentQuery}: it keeps the triangle pairs near at an anchor pose
+ * and answers from them while the link stays within their clearance (testing none while a
+ * closing link is still farther from the object than it has moved since the anchor), and
+ * re-anchors otherwise. Either way exactly the full query's contacts. {@link #counter} says how
+ * often each ran.
  *
  * <p>Meshes and trees are immutable and shared between instances (and threads) through a
  * cache keyed by file, divisions, scale and k; each instance has its own query scratch, so one
@@ -66,11 +65,7 @@ public final class SceneGeometry implements LinkContacts {
     private final double[] linkFromWorld = new double[12], pose = new double[12], c = new double[3], n = new double[3];
     // temporal coherence: per finger and link (index 3·(finger−1) + link−1)
     private boolean coherent = true;
-    private final NearPairs[] near = new NearPairs[9];
-    private final double[][] anchor = new double[9][12], lastPose = new double[9][12];
-    private final boolean[] hasLast = new boolean[9];
-    private double sinceAnchor;    // displacement bound of the link from the anchor of the near pairs nearPairs returned
-    private boolean gathered;      // whether nearPairs walked the trees for them
+    private final CoherentQuery[] coherentQueries = new CoherentQuery[9];
     private final long[] counters = new long[Counter.values().length];
 
     /** What the collision back end did (see {@link #counter}; in {@code summary.json}'s counters). */
@@ -84,17 +79,6 @@ public final class SceneGeometry implements LinkContacts {
         /** Triangle–triangle tests, in walks and from near pairs. */
         TRIANGLE_TESTS
     }
-
-    /**
-     * Reach of a gathering, relative to the link's last displacement: the near pairs then stay
-     * valid for at least this many more moves like it (and for the bisection inside the last
-     * one). Chosen by measurement on the mug grasp (docs/BENCHMARKS.md): 4, 8, 16 and 32 cost
-     * 388, 310, 234 and 182 walks and 9 000, 10 000, 12 600 and 16 600 triangle tests; a walk
-     * costs about 60 triangle tests.
-     */
-    static final double REACH_STEPS = 16;
-    /** Bounds of the reach, in units of the link's bounding radius. */
-    static final double REACH_MIN = 1e-5, REACH_MAX = 0.05;
 
     /**
      * @param object the object and its placement (from a scenario)
@@ -118,7 +102,7 @@ public final class SceneGeometry implements LinkContacts {
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
-        for (int i = 0; i < near.length; i++) near[i] = new NearPairs();
+        for (int i = 0; i < coherentQueries.length; i++) coherentQueries[i] = new CoherentQuery();
         thickness = THICKNESS.computeIfAbsent(obj.key(), x -> minWidth(objectMesh));
     }
 
@@ -298,8 +282,7 @@ public final class SceneGeometry implements LinkContacts {
      */
     public SceneGeometry coherent(boolean on) {
         coherent = on;
-        for (NearPairs p : near) p.clear();
-        java.util.Arrays.fill(hasLast, false);
+        for (CoherentQuery c : coherentQueries) c.reset();
         return this;
     }
 
@@ -317,72 +300,6 @@ public final class SceneGeometry implements LinkContacts {
         return m;
     }
 
-    /**
-     * An upper bound (metres) on how far any point of link j's mesh moves between the world
-     * poses {@code w0} and {@code w1} (12 row-major values each): with the link's bounding
-     * sphere (centre s, radius r, link frame), |(R₁ − R₀)(p − s) + (R₁s + t₁) − (R₀s + t₀)| ≤
-     * ‖R₁ − R₀‖_F·r + |(R₁s + t₁) − (R₀s + t₀)|, the Frobenius norm bounding the spectral one.
-     */
-    double displacement(int link, double[] w0, double[] w1) {
-        displacementTerms(link, w0, w1);
-        return Math.sqrt(rotTerm) * linkSpheres[link - 1][3] + Math.sqrt(moveTerm);
-    }
-
-    private double rotTerm, moveTerm;    // ‖R₁ − R₀‖²_F and |Δ(Rs + t)|² of the last displacementTerms
-
-    private void displacementTerms(int link, double[] w0, double[] w1) {
-        double[] sp = linkSpheres[link - 1];
-        double f = 0;
-        for (int r = 0; r < 3; r++) {
-            for (int col = 0; col < 3; col++) f += sq(w1[4 * r + col] - w0[4 * r + col]);
-        }
-        double g = 0;
-        for (int r = 0; r < 3; r++) {
-            g += sq((w1[4 * r] - w0[4 * r]) * sp[0] + (w1[4 * r + 1] - w0[4 * r + 1]) * sp[1] + (w1[4 * r + 2] - w0[4 * r + 2]) * sp[2]
-                + (w1[4 * r + 3] - w0[4 * r + 3]));
-        }
-        rotTerm = f;
-        moveTerm = g;
-    }
-
-    /**
-     * The near pairs that stand for the full query of this link at {@code w} (its pose, with the
-     * object's pose in the link frame already in {@link #pose}): the anchored ones if they cover
-     * w, else gathered anew at w with a reach of {@link #REACH_STEPS} times the link's
-     * displacement since its previous query (within [{@link #REACH_MIN}, {@link #REACH_MAX}] of
-     * its bounding radius).
-     */
-    private NearPairs nearPairs(int finger, int link, double[] w) {
-        int s = 3 * (finger - 1) + (link - 1);
-        NearPairs p = near[s];
-        double[] last = lastPose[s];
-        if (p.clearance() > 0) {
-            displacementTerms(link, anchor[s], w);
-            double r = linkSpheres[link - 1][3], c = p.clearance();
-            // (a + b)² ≤ 2(a² + b²): with no pair to test, that bound settles most covers without a root
-            boolean covered = p.size() == 0 && 2 * (rotTerm * r * r + moveTerm) < c * c;
-            sinceAnchor = covered ? Double.NaN : Math.sqrt(rotTerm) * r + Math.sqrt(moveTerm);   // NaN: not needed, no pair
-            if (covered || p.covers(sinceAnchor)) {
-                gathered = false;
-                counters[Counter.COHERENT_QUERIES.ordinal()]++;
-                System.arraycopy(w, 0, last, 0, 12);
-                return p;
-            }
-        }
-        double moved = hasLast[s] ? displacement(link, last, w) : 0;
-        System.arraycopy(w, 0, last, 0, 12);
-        hasLast[s] = true;
-        double r = linkSpheres[link - 1][3];
-        double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, REACH_STEPS * moved));
-        poseOfObjectInLink(w);
-        query.near(linkTrees[link - 1], objectTree, pose, 0, reach, p);
-        System.arraycopy(w, 0, anchor[s], 0, 12);
-        sinceAnchor = 0;
-        gathered = true;
-        counters[Counter.TREE_WALKS.ordinal()]++;
-        return p;
-    }
-
     /** The tree query of link j at {@code w} into {@link #result}; false if it found nothing. */
     private boolean query(int finger, int link, double[] w, boolean firstOnly) {
         if (apart(link, w)) {
@@ -391,18 +308,14 @@ public final class SceneGeometry implements LinkContacts {
             return false;
         }
         KdopTree lt = linkTrees[link - 1];
+        poseOfObjectInLink(w);
         if (coherent) {
-            NearPairs p = nearPairs(finger, link, w);
-            if (p.size() == 0) {
-                result.clear();                       // nothing within the clearance: no contact
-            } else {
-                if (!gathered) poseOfObjectInLink(w);
-                if (firstOnly) query.intersects(lt, objectTree, pose, 0, p, sinceAnchor, result);
-                else query.collide(lt, objectTree, pose, 0, p, sinceAnchor, result);
-            }
-            if (gathered) result.nodeTests = p.nodeTests();
+            CoherentQuery c = coherentQueries[3 * (finger - 1) + (link - 1)];
+            long walks = c.walks();
+            if (firstOnly) c.intersects(query, lt, objectTree, pose, 0, result);
+            else c.collide(query, lt, objectTree, pose, 0, result);
+            counters[(c.walks() > walks ? Counter.TREE_WALKS : Counter.COHERENT_QUERIES).ordinal()]++;
         } else {
-            poseOfObjectInLink(w);
             counters[Counter.TREE_WALKS.ordinal()]++;
             if (firstOnly) query.intersects(lt, objectTree, pose, 0, result);
             else query.collide(lt, objectTree, pose, 0, result);

@@ -13,10 +13,11 @@ import org.handsim.mesh.TriangleMesh;
 import org.junit.jupiter.api.Test;
 
 /**
- * {@link NearPairs} and the coherent queries of {@link TreeQuery}: the pairs gathered at one
- * pose give exactly the full query's result — pairs, their order, segments bit for bit — at
- * every pose displaced by less than their clearance, on random shapes and poses; the separation
- * of two k-DOPs against hand-worked distances.
+ * {@link NearPairs}, the coherent queries of {@link TreeQuery} and {@link CoherentQuery}: the
+ * pairs gathered at one pose give exactly the full query's result — pairs, their order,
+ * segments bit for bit — at every pose displaced by less than their clearance, on random shapes
+ * and poses; a body moving in small steps gets the full query's result at every step with few
+ * walks; the motion bound holds; the separation of two k-DOPs against hand-worked distances.
  */
 class NearPairsTest {
     private static final long SEED = 345;
@@ -135,6 +136,81 @@ class NearPairsTest {
             covered, withPairs, notCovered, emptySets);
         assertTrue(covered > 600 && withPairs > 150 && notCovered > 50 && emptySets > 10,
             covered + " covered, " + withPairs + " with pairs, " + notCovered + " not covered, " + emptySets + " empty");
+    }
+
+    /** The largest displacement of A's vertices seen from B (in B's frame) between poses p0 and p1 of B in A's frame. */
+    private static double displacementSeenFromB(TriangleMesh a, double[] p0, double[] p1) {
+        RigidTransform i0 = RigidTransform.of(p0).inverse(), i1 = RigidTransform.of(p1).inverse();
+        double[] v = a.vertices();
+        double worst = 0;
+        for (int i = 0; i < v.length; i += 3) {
+            double[] x = {v[i], v[i + 1], v[i + 2]};
+            double[] y0 = i0.apply(x), y1 = i1.apply(x);
+            worst = Math.max(worst, Math.sqrt((y1[0] - y0[0]) * (y1[0] - y0[0]) + (y1[1] - y0[1]) * (y1[1] - y0[1])
+                + (y1[2] - y0[2]) * (y1[2] - y0[2])));
+        }
+        return worst;
+    }
+
+    @Test
+    void theMotionBoundHoldsOnBothSides() {
+        SplittableRandom r = new SplittableRandom(SEED);
+        double[] p0 = new double[12], p1 = new double[12];
+        for (int c = 0; c < 200; c++) {
+            TriangleMesh a = KdopTreeTest.shape(r.nextInt(6), r), b = KdopTreeTest.shape(r.nextInt(6), r);
+            KdopTree ta = KdopTree.build(a, 18), tb = KdopTree.build(b, 18);
+            KdopTreeTest.randomPose(r, 0.05).copyTo(p0, 0);
+            double step = Math.pow(10, -1 - 5 * r.nextDouble());
+            RigidTransform.of(p0).compose(KdopTreeTest.randomPose(r, step)).copyTo(p1, 0);
+            if (c % 2 == 0) RigidTransform.of(p1).compose(RigidTransform.fromPose(0, 0, 0, step, -step, step)).copyTo(p1, 0);
+            double bound = CoherentQuery.motion(ta, tb, p0, p1);
+            double exact = Math.min(displacement(b, p0, p1), displacementSeenFromB(a, p0, p1));
+            assertTrue(bound >= exact * (1 - 1e-9), "case " + c + ": bound " + bound + " below " + exact);
+            // and not loose by more than the Frobenius norm's √2 and the spheres' radii allow
+            assertTrue(bound <= 3 * exact + 1e-15, "case " + c + ": bound " + bound + " for " + exact);
+        }
+    }
+
+    /**
+     * A body moving in small steps (translation and turn, now and then a jump) against another:
+     * {@link CoherentQuery} gives the full query's result at every step, bit for bit, both
+     * {@code collide} and {@code intersects}, and walks the trees on a minority of the steps.
+     */
+    @Test
+    void aCoherentQueryGivesTheFullQueryAtEveryStep() {
+        SplittableRandom r = new SplittableRandom(SEED + 1);
+        TreeQuery q = new TreeQuery(), full = new TreeQuery();
+        CollisionResult want = new CollisionResult(), got = new CollisionResult(), first = new CollisionResult();
+        double[] pose = new double[12];
+        long steps = 0, withPairs = 0, walks = 0;
+        for (int c = 0; c < 24; c++) {
+            TriangleMesh a = KdopTreeTest.shape(r.nextInt(8), r), b = KdopTreeTest.shape(r.nextInt(8), r);
+            KdopTree ta = KdopTree.build(a, 18), tb = KdopTree.build(b, 18);
+            CoherentQuery cq = new CoherentQuery();
+            // centres 5 cm apart along a random direction, B moving 50-150 µm a step towards A and turning slowly
+            double ux = r.nextGaussian(), uy = r.nextGaussian(), uz = r.nextGaussian(), ul = Math.sqrt(ux * ux + uy * uy + uz * uz);
+            double speed = 5e-5 * (1 + 2 * r.nextDouble());
+            double wx = r.nextGaussian() * 1e-3, wy = r.nextGaussian() * 1e-3, wz = r.nextGaussian() * 1e-3;
+            for (int s = 0; s < 400; s++) {
+                double d = 0.05 - speed * s;
+                RigidTransform.fromPose(ux / ul * d, uy / ul * d, uz / ul * d, wx * s, wy * s, wz * s).copyTo(pose, 0);
+                if (s % 97 == 96) pose[3] += 0.003;      // a jump now and then
+                full.collide(ta, tb, pose, 0, want);
+                if (s % 3 == 0) {
+                    assertEquals(want.intersecting(), cq.intersects(q, ta, tb, pose, 0, first), "case " + c + " step " + s);
+                } else {
+                    cq.collide(q, ta, tb, pose, 0, got);
+                    assertSameResult(want, got, "case " + c + " (" + a.name() + " vs " + b.name() + ") step " + s);
+                }
+                steps++;
+                if (want.intersecting()) withPairs++;
+            }
+            walks += cq.walks();
+            assertEquals(400, cq.walks() + cq.reused());
+        }
+        System.out.printf(Locale.ROOT, "coherent query: %d steps (%d with pairs), %d walks%n", steps, withPairs, walks);
+        assertTrue(withPairs > steps / 10, withPairs + " of " + steps + " steps with pairs");
+        assertTrue(walks * 3 < steps, walks + " walks in " + steps + " steps");
     }
 
     @Test
