@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.handsim.collision.BruteForce;
+import org.handsim.collision.CoherentQuery;
 import org.handsim.collision.CollisionResult;
 import org.handsim.collision.Kdop;
 import org.handsim.collision.KdopTree;
@@ -65,8 +66,10 @@ final class CollisionBench implements BenchMain.Suite {
             }
         }
         String fcl = fclTable();
+        String steps = stepsTable();
         if (fclOnly) {
             System.out.println("\n### sphere_overlap_rot against FCL's 24-DOP search (our time includes placing B)\n\n" + fcl);
+            System.out.println("### B moving in small steps through sphere_overlap_rot (k = 18; per step)\n\n" + steps);
             return;
         }
         StringBuilder buildTable = new StringBuilder("| mesh | triangles |");
@@ -138,6 +141,7 @@ final class CollisionBench implements BenchMain.Suite {
         System.out.println("\n### Build (one tree, median)\n\n" + buildTable);
         System.out.println("### Query (B placed on demand; 'refit' columns: B refitted each query; all-pairs loop)\n\n" + queryTable);
         System.out.println("### sphere_overlap_rot against FCL's 24-DOP search (our time includes placing B)\n\n" + fcl);
+        System.out.println("### B moving in small steps through sphere_overlap_rot (k = 18; per step)\n\n" + steps);
         System.out.println(pairsNote);
         System.out.println("### Split rule and leaf size (sphere_overlap_rot, k = 18, on-demand placement, quietest of 3)\n\n" + tuningTable);
     }
@@ -192,6 +196,83 @@ final class CollisionBench implements BenchMain.Suite {
             }
             t.append(String.format(Locale.ROOT, " %.2f | %.2f | %.2f |%n", bestK / FCL_ROT_US[l], best[l * (nk + 1) + 2] / FCL_ROT_US[l],
                 best[l * (nk + 1) + nk] / FCL_ROT_US[l]));
+        }
+        return t.toString();
+    }
+
+    /** Steps of the moving-B path. */
+    static final int PATH_STEPS = 200;
+
+    /**
+     * Pose of B at step i of the moving path through sphere_overlap_rot: B's centre from x = 1.55
+     * to 1.45 radii and its turn about (1, 2, 3) from 0.65 to 0.75 rad, in {@value #PATH_STEPS}
+     * equal steps (5·10⁻⁴ radii and 5·10⁻⁴ rad a step: a finger link's step relative to its size
+     * at dt = 1 ms is about 1.4·10⁻³).
+     */
+    static RigidTransform pathPose(int i) {
+        double f = i / (double) (PATH_STEPS - 1);
+        double x = 1.55 - 0.1 * f, angle = 0.65 + 0.1 * f, n = Math.sqrt(14);
+        return RigidTransform.fromPose(x, 0, 0, angle / n, 2 * angle / n, 3 * angle / n);
+    }
+
+    /**
+     * B moving along {@link #pathPose}: per step, the full query (k = 18, B placed on demand) and
+     * the coherent query ({@link CoherentQuery}: near pairs, re-gathered when B has moved past
+     * their clearance), checked equal at every step first; each time the quietest of
+     * {@value #FCL_ROUNDS} round-robin medians of the whole path.
+     */
+    private String stepsTable() {
+        String[] files = {"icosphere_s2.wrl", "icosphere_s3.wrl", "icosphere_s4.wrl", "icosphere_s5.wrl"};
+        double[][] poses = new double[PATH_STEPS][12];
+        for (int i = 0; i < PATH_STEPS; i++) pathPose(i).copyTo(poses[i], 0);
+        List<Bench.Op> ops = new ArrayList<>();
+        List<String> names = new ArrayList<>();
+        int[] minPairs = new int[files.length], maxPairs = new int[files.length];
+        long[] walks = new long[files.length];
+        for (int l = 0; l < files.length; l++) {
+            TriangleMesh m = meshes.get(files[l]);
+            KdopTree ta = KdopTree.build(m, 18), tb = KdopTree.build(m, 18);
+            TreeQuery q = new TreeQuery();
+            CollisionResult r = new CollisionResult(), c = new CollisionResult();
+            CoherentQuery cq = new CoherentQuery();
+            minPairs[l] = Integer.MAX_VALUE;
+            for (int i = 0; i < PATH_STEPS; i++) {
+                q.collide(ta, tb, poses[i], 0, r);
+                cq.collide(q, ta, tb, poses[i], 0, c);
+                if (!java.util.Arrays.equals(r.sortedPairKeys(), c.sortedPairKeys()) || r.segmentCount() != c.segmentCount()) {
+                    throw new IllegalStateException(m.triangleCount() + " triangles, step " + i + ": the coherent query differs from the full one");
+                }
+                minPairs[l] = Math.min(minPairs[l], r.pairCount());
+                maxPairs[l] = Math.max(maxPairs[l], r.pairCount());
+            }
+            walks[l] = cq.walks();
+            ops.add(() -> {
+                double acc = 0;
+                for (int i = 0; i < PATH_STEPS; i++) acc += q.collide(ta, tb, poses[i], 0, r).pairCount();
+                return acc;
+            });
+            names.add("path " + m.triangleCount() + " full query");
+            CoherentQuery timed = new CoherentQuery();
+            ops.add(() -> {
+                double acc = 0;
+                timed.reset();
+                for (int i = 0; i < PATH_STEPS; i++) acc += timed.collide(q, ta, tb, poses[i], 0, c).pairCount();
+                return acc;
+            });
+            names.add("path " + m.triangleCount() + " coherent");
+        }
+        double[] best = new double[ops.size()];
+        java.util.Arrays.fill(best, Double.POSITIVE_INFINITY);
+        for (int round = 0; round < FCL_ROUNDS; round++) {
+            for (int i = 0; i < ops.size(); i++) {
+                best[i] = Math.min(best[i], Bench.measure(names.get(i) + " round " + (round + 1), ops.get(i), 150, 7, 30).medianUs() / PATH_STEPS);
+            }
+        }
+        StringBuilder t = new StringBuilder("| triangles | pairs along the path | full query | coherent query | walks in "
+            + PATH_STEPS + " steps | FCL 24-DOP (static search) | coherent / FCL |\n|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (int l = 0; l < files.length; l++) {
+            t.append(String.format(Locale.ROOT, "| %d | %d–%d | %.1f µs | %.1f µs | %d | %.0f µs | %.2f |%n", meshes.get(files[l]).triangleCount(),
+                minPairs[l], maxPairs[l], best[2 * l], best[2 * l + 1], walks[l], FCL_ROT_US[l], best[2 * l + 1] / FCL_ROT_US[l]));
         }
         return t.toString();
     }

@@ -196,6 +196,21 @@ public final class Kdop {
         return s;
     }
 
+    /**
+     * {@link #separation} when it is at most {@code limit}; otherwise some value above
+     * {@code limit} that is still a lower bound on the distance (the first direction whose gap
+     * exceeds the limit: the rest are not looked at).
+     */
+    public double separationUpTo(double[] a, int ao, double[] c, int co, double limit) {
+        double s = Double.NEGATIVE_INFINITY;
+        for (int j = 0, i = 0; j < k; j += 2, i++) {
+            double g = Math.max(a[ao + j] - c[co + j + 1], c[co + j] - a[ao + j + 1]) * invLength[i];
+            if (g > limit) return g;
+            if (g > s) s = g;
+        }
+        return s;
+    }
+
     /** True when the point's projections lie inside every slab (closed). */
     public boolean contains(double[] b, int off, double x, double y, double z) {
         for (int i = 0; i < m; i++) {

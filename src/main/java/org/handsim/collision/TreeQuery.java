@@ -257,7 +257,9 @@ public final class TreeQuery {
     }
 
     /**
-     * The walk of {@link #walk} with separations instead of overlap tests: keeps the triangle
+     * The walk of {@link #walk} with separations instead of overlap tests (a pair is dropped as
+     * soon as one direction separates it by more than the reach, that gap counting towards the
+     * clearance, so the clearance is a little above the reach rather than the best bound): keeps the triangle
      * pairs within {@code reach}, each with its separation (the largest of its leaf pair's, its
      * triangles' boxes' and their gaps along each triangle's normal, less
      * {@code margin}), returns the smallest separation of what it dropped (+∞ if
@@ -278,7 +280,7 @@ public final class TreeQuery {
         long tests = 1;
         double clear = Double.POSITIVE_INFINITY;
         if (lz) placeNode(b, 0);
-        double s0 = kd.separation(ba, 0, bbl, 0);
+        double s0 = kd.separationUpTo(ba, 0, bbl, 0, reach);
         if (s0 > reach) {
             clear = s0;
         } else {
@@ -290,7 +292,7 @@ public final class TreeQuery {
             int ca = childA[na], cb = childB[nb];
             if (ca < 0 && cb < 0) {
                 int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
-                double leafGap = kd.separation(ba, na * k, bbl, nb * k);
+                double leafGap = kd.separation(ba, na * k, bbl, nb * k);   // pushed: within the reach
                 for (int i = fa; i < ea; i++) {
                     int ta = orderA[i];
                     if (degA[ta]) continue;
@@ -332,7 +334,7 @@ public final class TreeQuery {
             tests += 2;
             if (cb < 0 || (ca >= 0 && sizeA[na] >= sizeB[nb])) {
                 int ob = nb * k;
-                double s1 = kd.separation(ba, ca * k, bbl, ob), s2 = kd.separation(ba, (na + 1) * k, bbl, ob);
+                double s1 = kd.separationUpTo(ba, ca * k, bbl, ob, reach), s2 = kd.separationUpTo(ba, (na + 1) * k, bbl, ob, reach);
                 if (s1 > reach) {
                     if (s1 < clear) clear = s1;
                 } else {
@@ -349,7 +351,7 @@ public final class TreeQuery {
                     placeNode(b, cb);
                     placeNode(b, nb + 1);
                 }
-                double s1 = kd.separation(ba, oa, bbl, cb * k), s2 = kd.separation(ba, oa, bbl, (nb + 1) * k);
+                double s1 = kd.separationUpTo(ba, oa, bbl, cb * k, reach), s2 = kd.separationUpTo(ba, oa, bbl, (nb + 1) * k, reach);
                 if (s1 > reach) {
                     if (s1 < clear) clear = s1;
                 } else {
