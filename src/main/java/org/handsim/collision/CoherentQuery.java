@@ -83,15 +83,23 @@ public final class CoherentQuery {
         System.arraycopy(p, off, pose, 0, 12);
         double moved = Double.NaN;
         if (near.clearance() > 0) {
-            terms(a, b, anchor, pose);
             double c = near.clearance(), ra = a.sphere[3], rb = b.sphere[3];
-            if (near.size() == 0 && (2 * (rot2 * rb * rb + fromA2) < c * c || 2 * (rot2 * ra * ra + fromB2) < c * c)) {
-                // (x + y)² ≤ 2(x² + y²): covered, and with no pair to test the motion itself is not needed
-                reused++;
-                keepLast();
-                out.clear();
-                return;
+            rot2 = rotation2(anchor, pose);
+            if (near.size() == 0) {
+                // (x + y)² ≤ 2(x² + y²): covered without a root, and with no pair to test the motion itself
+                // is not needed; the side with the smaller sphere first (its bound is usually the smaller)
+                boolean aSmaller = ra <= rb;
+                double r1 = aSmaller ? ra : rb;
+                double t1 = aSmaller ? seenFromB2(a, anchor, pose) : seenFromA2(b, anchor, pose);
+                if (2 * (rot2 * r1 * r1 + t1) < c * c) {
+                    reused++;
+                    keepLast();
+                    out.clear();
+                    return;
+                }
             }
+            fromA2 = seenFromA2(b, anchor, pose);
+            fromB2 = seenFromB2(a, anchor, pose);
             moved = motion(ra, rb);
             if (!near.covers(moved)) moved = Double.NaN;
         }
@@ -151,30 +159,43 @@ public final class CoherentQuery {
     // the squared terms of the motion bound between two poses (terms(), then motion())
     private double rot2, fromA2, fromB2;
 
-    /**
-     * The squared terms of δ between poses p0 and p1 (class comment): ‖R₁ − R₀‖²_F, |P₁c_B − P₀c_B|²
-     * (B's points seen from A) and |P₁⁻¹c_A − P₀⁻¹c_A|² (A's points seen from B).
-     */
+    /** The squared terms of δ between poses p0 and p1 (class comment), into {@link #rot2}, {@link #fromA2}, {@link #fromB2}. */
     private void terms(KdopTree a, KdopTree b, double[] p0, double[] p1) {
+        rot2 = rotation2(p0, p1);
+        fromA2 = seenFromA2(b, p0, p1);
+        fromB2 = seenFromB2(a, p0, p1);
+    }
+
+    /** ‖R₁ − R₀‖²_F. */
+    private static double rotation2(double[] p0, double[] p1) {
         double f = 0;
         for (int i = 0; i < 3; i++) {
             for (int j = 0; j < 3; j++) f += sq(p1[4 * i + j] - p0[4 * i + j]);
         }
-        double[] cb = b.sphere, ca = a.sphere;
+        return f;
+    }
+
+    /** |P₁c_B − P₀c_B|²: how far B's sphere centre moved seen from A. */
+    private static double seenFromA2(KdopTree b, double[] p0, double[] p1) {
+        double[] cb = b.sphere;
         double g = 0;
         for (int i = 0; i < 3; i++) {
             g += sq((p1[4 * i] - p0[4 * i]) * cb[0] + (p1[4 * i + 1] - p0[4 * i + 1]) * cb[1] + (p1[4 * i + 2] - p0[4 * i + 2]) * cb[2]
                 + (p1[4 * i + 3] - p0[4 * i + 3]));
         }
+        return g;
+    }
+
+    /** |P₁⁻¹c_A − P₀⁻¹c_A|² with P⁻¹c = Rᵀ(c − t): how far A's sphere centre moved seen from B. */
+    private static double seenFromB2(KdopTree a, double[] p0, double[] p1) {
+        double[] ca = a.sphere;
         double h = 0;
-        for (int j = 0; j < 3; j++) {   // P⁻¹·c_A = Rᵀ(c_A − t)
+        for (int j = 0; j < 3; j++) {
             double x1 = p1[j] * (ca[0] - p1[3]) + p1[4 + j] * (ca[1] - p1[7]) + p1[8 + j] * (ca[2] - p1[11]);
             double x0 = p0[j] * (ca[0] - p0[3]) + p0[4 + j] * (ca[1] - p0[7]) + p0[8 + j] * (ca[2] - p0[11]);
             h += sq(x1 - x0);
         }
-        rot2 = f;
-        fromA2 = g;
-        fromB2 = h;
+        return h;
     }
 
     /** δ between poses p0 and p1 of B in A's frame (metres; for tests). */
