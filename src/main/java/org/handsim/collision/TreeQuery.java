@@ -189,9 +189,8 @@ public final class TreeQuery {
             int ta = nta[i], tbi = ntb[i];
             if (placeNormals) placeNormal(b, tbi);
             tested++;
-            int a0 = 3 * trisA[3 * ta], a1 = 3 * trisA[3 * ta + 1], a2 = 3 * trisA[3 * ta + 2], b0 = 3 * trisB[3 * tbi];
-            if (TriangleIntersector.apartByPlaneOfB(va, a0, a1, a2, vb, b0, nB, nAbsB, 3 * tbi)) continue;
-            int r = tt.intersect(va, a0, a1, a2, nA, nAbsA, 3 * ta, vb, b0, 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
+            int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
+                vb, 3 * trisB[3 * tbi], 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
             if (r != TriangleIntersector.DISJOINT) {
                 out.add(ta, tbi, tt, r);
                 if (stopAtFirst) break;
@@ -545,10 +544,8 @@ public final class TreeQuery {
                         }
                         if (placeNormals) placeNormal(b, tbi);
                         triTests++;
-                        int a0 = 3 * trisA[3 * ta], a1 = 3 * trisA[3 * ta + 1], a2 = 3 * trisA[3 * ta + 2], b0 = 3 * trisB[3 * tbi];
-                        if (TriangleIntersector.apartByPlaneOfB(va, a0, a1, a2, vb, b0, nB, nAbsB, 3 * tbi)) continue;
-                        int r = tt.intersect(va, a0, a1, a2, nA, nAbsA, 3 * ta,
-                            vb, b0, 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
+                        int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
+                            vb, 3 * trisB[3 * tbi], 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
                         if (r != TriangleIntersector.DISJOINT) {
                             out.add(ta, tbi, tt, r);
                             if (stopAtFirst) {

@@ -114,25 +114,6 @@ public final class TriangleIntersector {
         return decide();
     }
 
-    /**
-     * The first step of {@link #intersect} alone, for a caller that wants to skip the rest:
-     * true when triangle A's three vertices are all certified strictly on one side of B's plane
-     * by the floating-point filter of {@link Predicates#orient3dFiltered} (B's normal and
-     * permanent terms cached as for {@code intersect}). Then {@code intersect} returns
-     * {@link #DISJOINT} at its first step, with these same three values; false says nothing.
-     * Static and allocation-free.
-     */
-    public static boolean apartByPlaneOfB(double[] va, int a0, int a1, int a2, double[] vb, int b0,
-                                          double[] nB, double[] nAbsB, int oB) {
-        double qx = vb[b0], qy = vb[b0 + 1], qz = vb[b0 + 2];
-        double d0 = Predicates.orient3dFiltered(nB, nAbsB, oB, qx, qy, qz, va[a0], va[a0 + 1], va[a0 + 2]);
-        if (!(d0 == d0)) return false;
-        double d1 = Predicates.orient3dFiltered(nB, nAbsB, oB, qx, qy, qz, va[a1], va[a1 + 1], va[a1 + 2]);
-        if (!(d1 == d1) || (d0 > 0) != (d1 > 0)) return false;
-        double d2 = Predicates.orient3dFiltered(nB, nAbsB, oB, qx, qy, qz, va[a2], va[a2 + 1], va[a2 + 2]);
-        return d2 == d2 && (d0 > 0) == (d2 > 0);
-    }
-
     private void load(double[] va, int a0, int a1, int a2, double[] vb, int b0, int b1, int b2) {
         segCount = 0;
         area = 0;
