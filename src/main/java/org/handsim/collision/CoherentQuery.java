@@ -15,23 +15,22 @@ package org.handsim.collision;
  * touching at P had at the anchor. If δ is below the clearance, the near pairs answer (only
  * those whose own separation is below δ are tested; none at all while the bodies are farther
  * apart than they have moved). Otherwise it re-anchors at P, gathering the pairs within a reach
- * of a number of times ({@link #REACH_MOVES} at first, then adapted to what the last anchor
- * cost) the relative motion since the previous query, so the new pairs last for about that
- * many more such moves, and for the bisection inside the last one.
+ * of {@link #REACH_MOVES} times the relative motion since the previous query, so the new pairs
+ * last for about that many more such moves, and for the bisection inside the last one.
  *
  * <p>Holds no query scratch: the {@link TreeQuery} is passed in (one per thread, shared by any
  * number of coherent queries). Not thread-safe.
  */
 public final class CoherentQuery {
     /**
-     * Reach of the first gathering in units of the last relative motion; later ones adapt it
-     * ({@link #adaptReach()}) between {@link #MIN_MOVES} and {@link #MAX_MOVES}.
+     * Reach of a gathering in units of the last relative motion. Chosen on the mug grasp
+     * (docs/BENCHMARKS.md, simulation): 8, 16, 32 and 64 cost 338, 251, 199 and 195 walks and
+     * 9 400, 12 400, 16 100 and 17 600 triangle tests; 8 and 16 ran equally fast, 32 and 64 6 %
+     * slower (interleaved in one process). A reach adapted to each anchor's costs (halved or
+     * doubled to balance the gathering against the extra tests) was 8 % slower there and no
+     * faster on a sphere moving through another.
      */
     public static final double REACH_MOVES = 16;
-    /** Bounds of the adapted reach, in units of the last relative motion. */
-    public static final double MIN_MOVES = 1, MAX_MOVES = 256;
-    /** Cost of a triangle test in node tests of a gathering walk (for {@link #adaptReach()}). */
-    static final double TEST_COST = 4;
     /** Bounds of the reach, in units of the smaller bounding radius. */
     public static final double REACH_MIN = 1e-5, REACH_MAX = 0.05;
 
@@ -39,17 +38,11 @@ public final class CoherentQuery {
     private final double[] anchor = new double[12], last = new double[12], pose = new double[12];
     private boolean hasLast;
     private long walks, reused;
-    private double reachMoves = REACH_MOVES;
-    // the current anchor: what its gathering cost, and the tests and pairs of the queries it answered
-    private double walkCost;
-    private long tests, pairs;
 
     /** Forgets the near pairs and the last pose (the next query walks the trees). */
     public void reset() {
         near.clear();
         hasLast = false;
-        reachMoves = REACH_MOVES;
-        walkCost = tests = pairs = 0;
     }
 
     /**
@@ -111,12 +104,9 @@ public final class CoherentQuery {
                 step = motion(a.sphere[3], b.sphere[3]);
             }
             double r = Math.min(a.sphere[3], b.sphere[3]);
-            if (walks > 0 && ADAPT) adaptReach();
-            double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, reachMoves * step));
+            double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, REACH_MOVES * step));
             q.near(a, b, pose, 0, reach, near);
             System.arraycopy(pose, 0, anchor, 0, 12);
-            walkCost = near.nodeTests() + TEST_COST * near.size();
-            tests = pairs = 0;
             moved = 0;
             walks++;
         } else {
@@ -131,24 +121,6 @@ public final class CoherentQuery {
             q.collide(a, b, pose, 0, near, moved, out);
         }
         if (walked) out.nodeTests = near.nodeTests();
-        tests += out.triangleTests;
-        pairs += out.pairCount();
-    }
-
-    static final boolean ADAPT = !Boolean.getBoolean("cq.fixed");   // TEMPORARY for measurement
-
-    /**
-     * Adapts the reach to the last anchor's costs. A larger reach makes a gathering last longer
-     * but keeps more pairs, and the queries test more of those that do not intersect; the sum is
-     * least about where the two costs are equal (as with any fixed cost against a growing one).
-     * So: the extra tests (tests less the intersecting pairs found, {@link #TEST_COST} each)
-     * against the gathering's cost (its node tests and kept pairs): above twice it, halve the
-     * reach; below half, double it.
-     */
-    private void adaptReach() {
-        double extra = TEST_COST * (tests - pairs);
-        if (extra > 2 * walkCost) reachMoves = Math.max(MIN_MOVES, reachMoves / 2);
-        else if (extra < walkCost / 2) reachMoves = Math.min(MAX_MOVES, reachMoves * 2);
     }
 
     private void keepLast() {
