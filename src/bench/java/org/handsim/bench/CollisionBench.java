@@ -225,6 +225,8 @@ final class CollisionBench implements BenchMain.Suite {
         String[] files = {"icosphere_s2.wrl", "icosphere_s3.wrl", "icosphere_s4.wrl", "icosphere_s5.wrl"};
         double[][] poses = new double[PATH_STEPS][12];
         for (int i = 0; i < PATH_STEPS; i++) pathPose(i).copyTo(poses[i], 0);
+        double[] identity = new double[12];
+        RigidTransform.IDENTITY.copyTo(identity, 0);
         List<Bench.Op> ops = new ArrayList<>();
         List<String> names = new ArrayList<>();
         int[] minPairs = new int[files.length], maxPairs = new int[files.length];
@@ -238,7 +240,7 @@ final class CollisionBench implements BenchMain.Suite {
             minPairs[l] = Integer.MAX_VALUE;
             for (int i = 0; i < PATH_STEPS; i++) {
                 q.collide(ta, tb, poses[i], 0, r);
-                cq.collide(q, ta, tb, poses[i], 0, c);
+                cq.collide(q, ta, identity, tb, poses[i], c);
                 if (!java.util.Arrays.equals(r.sortedPairKeys(), c.sortedPairKeys()) || r.segmentCount() != c.segmentCount()) {
                     throw new IllegalStateException(m.triangleCount() + " triangles, step " + i + ": the coherent query differs from the full one");
                 }
@@ -256,7 +258,7 @@ final class CollisionBench implements BenchMain.Suite {
             ops.add(() -> {
                 double acc = 0;
                 timed.reset();
-                for (int i = 0; i < PATH_STEPS; i++) acc += timed.collide(q, ta, tb, poses[i], 0, c).pairCount();
+                for (int i = 0; i < PATH_STEPS; i++) acc += timed.collide(q, ta, identity, tb, poses[i], c).pairCount();
                 return acc;
             });
             names.add("path " + m.triangleCount() + " coherent");

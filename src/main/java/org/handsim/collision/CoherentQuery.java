@@ -1,22 +1,26 @@
 package org.handsim.collision;
 
+import org.handsim.math.RigidTransform;
+
 /**
  * The collision query of one pair of bodies that is asked again and again as they move a little
  * (a finger link closing on an object step by step, the bisection of its first touch): the
  * same result as {@link TreeQuery#collide(KdopTree, KdopTree, double[], int, CollisionResult)}
- * every time, bit for bit, mostly without walking the trees (temporal coherence).
+ * with B placed in A's frame by A⁻¹·B ({@link RigidTransform#inverseTimes}) every time, bit for
+ * bit, mostly without walking the trees (temporal coherence).
  *
- * <p><b>How.</b> It keeps the {@link NearPairs} gathered at an anchor pose. A query at pose P
- * bounds how far the bodies moved relative to each other since the anchor,
- * δ(P) = min(‖R − R₀‖_F·r_A + |P⁻¹c_A − P₀⁻¹c_A|, ‖R − R₀‖_F·r_B + |Pc_B − P₀c_B|) with (c, r)
- * each tree's {@linkplain KdopTree#boundingSphere() bounding sphere}: the first term bounds the
- * motion of A's points seen from B, the second that of B's points seen from A (for a point p at
- * distance ≤ r from c, |(R − R₀)(p − c)| ≤ ‖R − R₀‖_F·r); either bounds the distance a pair
- * touching at P had at the anchor. If δ is below the clearance, the near pairs answer (only
- * those whose own separation is below δ are tested; none at all while the bodies are farther
- * apart than they have moved). Otherwise it re-anchors at P, gathering the pairs within a reach
- * of {@link #REACH_MOVES} times the relative motion since the previous query, so the new pairs
- * last for about that many more such moves, and for the bisection inside the last one.
+ * <p><b>How.</b> It keeps the {@link NearPairs} gathered at an anchor (the two bodies' poses in a
+ * common frame, e.g. the world). A query bounds how far the bodies moved relative to each other
+ * since the anchor by the sum of their own motions, each ‖R − R₀‖_F·r + |Rc + t − (R₀c + t₀)|
+ * over its tree's {@linkplain KdopTree#boundingSphere() bounding sphere} (c, r) (for a point p
+ * with |p − c| ≤ r, |(R − R₀)(p − c)| ≤ ‖R − R₀‖_F·r): two points that touch now were at most
+ * that far apart at the anchor. A body that did not move adds exactly 0. If the bound is below
+ * the clearance, the near pairs answer (only those whose own separation is below it are tested;
+ * none at all while the bodies are farther apart than they have moved), and the relative pose
+ * is not even computed when there is nothing to test. Otherwise it re-anchors, gathering the
+ * pairs within a reach of {@link #REACH_MOVES} times the relative motion since the previous
+ * query, so the new pairs last for about that many more such moves, and for the bisection
+ * inside the last one.
  *
  * <p>Holds no query scratch: the {@link TreeQuery} is passed in (one per thread, shared by any
  * number of coherent queries). Not thread-safe.
@@ -35,31 +39,33 @@ public final class CoherentQuery {
     public static final double REACH_MIN = 1e-5, REACH_MAX = 0.05;
 
     private final NearPairs near = new NearPairs();
-    private final double[] anchor = new double[12], last = new double[12], pose = new double[12];
+    private final double[] anchorA = new double[12], anchorB = new double[12], lastA = new double[12], lastB = new double[12];
+    private final double[] pose = new double[12], scratch = new double[12];
     private boolean hasLast;
     private long walks, reused;
 
-    /** Forgets the near pairs and the last pose (the next query walks the trees). */
+    /** Forgets the near pairs and the last poses (the next query walks the trees). */
     public void reset() {
         near.clear();
         hasLast = false;
     }
 
     /**
-     * All intersecting triangle pairs of A and B, B placed in A's frame by the 12 row-major
-     * values at {@code pose[off..]}: exactly {@code q.collide(a, b, pose, off, out)}. The trees
-     * must be the same ones from call to call (call {@link #reset()} before changing them).
+     * All intersecting triangle pairs of A and B placed in a common frame by {@code worldFromA}
+     * and {@code worldFromB} (12 row-major values each): exactly
+     * {@code q.collide(a, b, A⁻¹·B, out)}, segments in A's frame. The trees must be the same
+     * ones from call to call (call {@link #reset()} before changing them).
      *
      * @return {@code out}, whose node tests count the walk if this call walked the trees
      */
-    public CollisionResult collide(TreeQuery q, KdopTree a, KdopTree b, double[] pose, int off, CollisionResult out) {
-        run(q, a, b, pose, off, out, false);
+    public CollisionResult collide(TreeQuery q, KdopTree a, double[] worldFromA, KdopTree b, double[] worldFromB, CollisionResult out) {
+        run(q, a, worldFromA, b, worldFromB, out, false);
         return out;
     }
 
-    /** True if A and B placed by {@code pose} intersect (exactly {@code collide(...).intersecting()}); stops at the first pair. */
-    public boolean intersects(TreeQuery q, KdopTree a, KdopTree b, double[] pose, int off, CollisionResult out) {
-        run(q, a, b, pose, off, out, true);
+    /** True if A and B intersect (exactly {@code collide(...).intersecting()}); stops at the first pair. */
+    public boolean intersects(TreeQuery q, KdopTree a, double[] worldFromA, KdopTree b, double[] worldFromB, CollisionResult out) {
+        run(q, a, worldFromA, b, worldFromB, out, true);
         return out.intersecting();
     }
 
@@ -72,47 +78,50 @@ public final class CoherentQuery {
     /** @return the near pairs in use (read only) */
     public NearPairs nearPairs() { return near; }
 
-    private void run(TreeQuery q, KdopTree a, KdopTree b, double[] p, int off, CollisionResult out, boolean firstOnly) {
-        System.arraycopy(p, off, pose, 0, 12);
+    /**
+     * The pose of B in A's frame the last call used, A⁻¹·B (12 values, row-major; a live array).
+     * Up to date only after a call that tested or gathered pairs; {@link #placeRelative} makes it so.
+     */
+    public double[] relativePose() { return pose; }
+
+    /** Computes {@link #relativePose()} for the given poses. */
+    public void placeRelative(double[] worldFromA, double[] worldFromB) {
+        RigidTransform.inverseTimes(worldFromA, worldFromB, scratch, pose);
+    }
+
+    private void run(TreeQuery q, KdopTree a, double[] wa, KdopTree b, double[] wb, CollisionResult out, boolean firstOnly) {
         double moved = Double.NaN;
         if (near.clearance() > 0) {
-            double c = near.clearance(), ra = a.sphere[3], rb = b.sphere[3];
-            rot2 = rotation2(anchor, pose);
-            if (near.size() == 0) {
-                // (x + y)² ≤ 2(x² + y²): covered without a root, and with no pair to test the motion itself
-                // is not needed; the side with the smaller sphere first (its bound is usually the smaller)
-                boolean aSmaller = ra <= rb;
-                double r1 = aSmaller ? ra : rb;
-                double t1 = aSmaller ? seenFromB2(a, anchor, pose) : seenFromA2(b, anchor, pose);
-                if (2 * (rot2 * r1 * r1 + t1) < c * c) {
-                    reused++;
-                    keepLast();
-                    out.clear();
-                    return;
-                }
+            double c = near.clearance();
+            double ra2 = rotation2(anchorA, wa), ta2 = centre2(a.sphere, anchorA, wa);
+            double rb2 = rotation2(anchorB, wb), tb2 = centre2(b.sphere, anchorB, wb);
+            double ra = a.sphere[3], rb = b.sphere[3];
+            // (x + y + u + v)² ≤ 4(x² + y² + u² + v²): covered without a root; with no pair to test the
+            // motion itself is not needed
+            if (near.size() == 0 && 4 * (ra2 * ra * ra + ta2 + rb2 * rb * rb + tb2) < c * c) {
+                reused++;
+                keepLast(wa, wb);
+                out.clear();
+                return;
             }
-            fromA2 = seenFromA2(b, anchor, pose);
-            fromB2 = seenFromB2(a, anchor, pose);
-            moved = motion(ra, rb);
+            moved = Math.sqrt(ra2) * ra + Math.sqrt(ta2) + Math.sqrt(rb2) * rb + Math.sqrt(tb2);
             if (!near.covers(moved)) moved = Double.NaN;
         }
+        placeRelative(wa, wb);
         boolean walked = Double.isNaN(moved);
         if (walked) {
-            double step = 0;
-            if (hasLast) {
-                terms(a, b, last, pose);
-                step = motion(a.sphere[3], b.sphere[3]);
-            }
+            double step = hasLast ? motion(a.sphere, lastA, wa) + motion(b.sphere, lastB, wb) : 0;
             double r = Math.min(a.sphere[3], b.sphere[3]);
             double reach = Math.min(REACH_MAX * r, Math.max(REACH_MIN * r, REACH_MOVES * step));
             q.near(a, b, pose, 0, reach, near);
-            System.arraycopy(pose, 0, anchor, 0, 12);
+            System.arraycopy(wa, 0, anchorA, 0, 12);
+            System.arraycopy(wb, 0, anchorB, 0, 12);
             moved = 0;
             walks++;
         } else {
             reused++;
         }
-        keepLast();
+        keepLast(wa, wb);
         if (near.size() == 0) {
             out.clear();
         } else if (firstOnly) {
@@ -123,64 +132,37 @@ public final class CoherentQuery {
         if (walked) out.nodeTests = near.nodeTests();
     }
 
-    private void keepLast() {
-        System.arraycopy(pose, 0, last, 0, 12);
+    private void keepLast(double[] wa, double[] wb) {
+        System.arraycopy(wa, 0, lastA, 0, 12);
+        System.arraycopy(wb, 0, lastB, 0, 12);
         hasLast = true;
     }
 
-    // the squared terms of the motion bound between two poses (terms(), then motion())
-    private double rot2, fromA2, fromB2;
-
-    /** The squared terms of δ between poses p0 and p1 (class comment), into {@link #rot2}, {@link #fromA2}, {@link #fromB2}. */
-    private void terms(KdopTree a, KdopTree b, double[] p0, double[] p1) {
-        rot2 = rotation2(p0, p1);
-        fromA2 = seenFromA2(b, p0, p1);
-        fromB2 = seenFromB2(a, p0, p1);
+    /**
+     * How far (metres) the points of a body inside {@code sphere} {cx, cy, cz, r} can move
+     * between poses w0 and w1: ‖R₁ − R₀‖_F·r + |R₁c + t₁ − (R₀c + t₀)| (class comment).
+     */
+    static double motion(double[] sphere, double[] w0, double[] w1) {
+        return Math.sqrt(rotation2(w0, w1)) * sphere[3] + Math.sqrt(centre2(sphere, w0, w1));
     }
 
     /** ‖R₁ − R₀‖²_F. */
-    private static double rotation2(double[] p0, double[] p1) {
+    private static double rotation2(double[] w0, double[] w1) {
         double f = 0;
         for (int i = 0; i < 3; i++) {
-            for (int j = 0; j < 3; j++) f += sq(p1[4 * i + j] - p0[4 * i + j]);
+            for (int j = 0; j < 3; j++) f += sq(w1[4 * i + j] - w0[4 * i + j]);
         }
         return f;
     }
 
-    /** |P₁c_B − P₀c_B|²: how far B's sphere centre moved seen from A. */
-    private static double seenFromA2(KdopTree b, double[] p0, double[] p1) {
-        double[] cb = b.sphere;
-        double g = 0;
+    /** |R₁c + t₁ − (R₀c + t₀)|² for the sphere's centre c. */
+    private static double centre2(double[] sphere, double[] w0, double[] w1) {
+        double s = 0;
         for (int i = 0; i < 3; i++) {
-            g += sq((p1[4 * i] - p0[4 * i]) * cb[0] + (p1[4 * i + 1] - p0[4 * i + 1]) * cb[1] + (p1[4 * i + 2] - p0[4 * i + 2]) * cb[2]
-                + (p1[4 * i + 3] - p0[4 * i + 3]));
+            s += sq((w1[4 * i] - w0[4 * i]) * sphere[0] + (w1[4 * i + 1] - w0[4 * i + 1]) * sphere[1]
+                + (w1[4 * i + 2] - w0[4 * i + 2]) * sphere[2] + (w1[4 * i + 3] - w0[4 * i + 3]));
         }
-        return g;
-    }
-
-    /** |P₁⁻¹c_A − P₀⁻¹c_A|² with P⁻¹c = Rᵀ(c − t): how far A's sphere centre moved seen from B. */
-    private static double seenFromB2(KdopTree a, double[] p0, double[] p1) {
-        double[] ca = a.sphere;
-        double h = 0;
-        for (int j = 0; j < 3; j++) {
-            double x1 = p1[j] * (ca[0] - p1[3]) + p1[4 + j] * (ca[1] - p1[7]) + p1[8 + j] * (ca[2] - p1[11]);
-            double x0 = p0[j] * (ca[0] - p0[3]) + p0[4 + j] * (ca[1] - p0[7]) + p0[8 + j] * (ca[2] - p0[11]);
-            h += sq(x1 - x0);
-        }
-        return h;
-    }
-
-    /** δ between poses p0 and p1 of B in A's frame (metres; for tests). */
-    static double motion(KdopTree a, KdopTree b, double[] p0, double[] p1) {
-        CoherentQuery c = new CoherentQuery();
-        c.terms(a, b, p0, p1);
-        return c.motion(a.sphere[3], b.sphere[3]);
-    }
-
-    /** δ from the last {@link #terms}: the smaller of the two bounds (metres). */
-    private double motion(double ra, double rb) {
-        double rot = Math.sqrt(rot2);
-        return Math.min(rot * rb + Math.sqrt(fromA2), rot * ra + Math.sqrt(fromB2));
+        return s;
     }
 
     private static double sq(double x) { return x * x; }

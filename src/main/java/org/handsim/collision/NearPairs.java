@@ -42,6 +42,14 @@ public final class NearPairs {
     double reach, clearance = Double.NEGATIVE_INFINITY;
     /** Node pairs compared by the walk that gathered these pairs (for the counters). */
     long nodeTests;
+    /** The facets the last gathering placed B's k-DOPs with (a first guess for the next; −1: none). */
+    final int[] facetHints = newHints();
+
+    private static int[] newHints() {
+        int[] h = new int[TransformedBounds.FACET_HINTS];
+        Arrays.fill(h, -1);
+        return h;
+    }
 
     /** Empties the set; its clearance becomes −∞ (it covers no pose until gathered). */
     public void clear() {

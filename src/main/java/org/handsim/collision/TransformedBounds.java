@@ -36,14 +36,25 @@ final class TransformedBounds {
     private final double[] marginP = new double[13], marginT = new double[13];
     private final double[] mu = new double[3];
     // the facet each direction used last time (a rotation that changes a little keeps its facets)
-    private Kdop lastKdop;
-    private final int[] lastFacet = new int[13];
+    private final int[] lastFacet = new int[FACET_HINTS];
+    /** Length of a facet hint array ({@link #prepare(Kdop, double[], int[])}): one per direction, k ≤ 26. */
+    static final int FACET_HINTS = 13;
 
     /**
      * Prepares the decomposition for placing B's k-DOPs ({@code kdop}) by the row-major
      * rigid transform {@code m12} (B's frame → A's frame).
      */
     void prepare(Kdop kdop, double[] m12) {
+        prepare(kdop, m12, lastFacet);
+    }
+
+    /**
+     * As {@link #prepare(Kdop, double[])}, trying first the facet each direction used in
+     * {@code hints} (the facets of an earlier call for a similar rotation; −1 for none) and
+     * writing back the facets used. A wrong hint costs only time: a facet is taken only if the
+     * weights on it are all non-negative.
+     */
+    void prepare(Kdop kdop, double[] m12, int[] hints) {
         m = kdop.directionCount();
         Facets f = kdop.facets();
         double tAbs = Math.max(Math.abs(m12[3]), Math.max(Math.abs(m12[7]), Math.abs(m12[11])));
@@ -53,8 +64,9 @@ final class TransformedBounds {
             double uy = m12[1] * ax + m12[5] * ay + m12[9] * az;
             double uz = m12[2] * ax + m12[6] * ay + m12[10] * az;
             dt[i] = ax * m12[3] + ay * m12[7] + az * m12[11];
-            int facet = lastKdop == kdop && f.weights(lastFacet[i], ux, uy, uz, mu) ? lastFacet[i] : f.decompose(ux, uy, uz, mu);
-            lastFacet[i] = facet;
+            int h = hints[i];
+            int facet = h >= 0 && h < f.count && f.weights(h, ux, uy, uz, mu) ? h : f.decompose(ux, uy, uz, mu);
+            hints[i] = facet;
             double rx = ux, ry = uy, rz = uz, cw = 0;
             for (int j = 0; j < 3; j++) {
                 int sd = f.tri[3 * facet + j];        // signed direction: 2*dir + (negative ? 1 : 0)
@@ -72,7 +84,6 @@ final class TransformedBounds {
             marginP[i] = 3 * (Math.abs(rx) + Math.abs(ry) + Math.abs(rz)) + 64 * Predicates.EPSILON * (3 * d1 + cw);
             marginT[i] = 64 * Predicates.EPSILON * d1 * tAbs;
         }
-        lastKdop = kdop;
     }
 
     /** Writes the placed bounds of the k-DOP at {@code src[so..]} (B's frame) to {@code dst[dof..]} (A's frame). */

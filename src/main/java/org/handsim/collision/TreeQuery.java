@@ -137,7 +137,7 @@ public final class TreeQuery {
                 return out;
             }
         }
-        place(b, identity, Placement.TRANSFORM, true);
+        placeWithHints(b, identity, out.facetHints);
         out.clearance = gather(a, b, reach, margin, out) - margin;
         return out;
     }
@@ -392,6 +392,12 @@ public final class TreeQuery {
         place(b, identity, placement, true);
         walk(a, b, out, stopAtFirst);
         out.exactPredicates = tt.predicates().exactCalls() - exact0;
+    }
+
+    /** As {@code place(b, identity, TRANSFORM, true)}, the transformed bounds prepared from the given facet hints. */
+    private void placeWithHints(KdopTree b, boolean identity, int[] hints) {
+        place(b, identity, Placement.TRANSFORM, false);
+        if (!identity) tb.prepare(b.kdop(), m, hints);
     }
 
     /**

@@ -144,6 +144,21 @@ public final class RigidTransform {
         }
     }
 
+    /**
+     * out = A⁻¹·B for 12-value row-major rigid transforms (B seen from A: {@code aFromB} for
+     * {@code worldFromA}, {@code worldFromB}), through {@code scratch} (12 values, A⁻¹ = (Rᵀ,
+     * −Rᵀt) as {@link #inverse()}). Allocation-free; out must not alias a, b or scratch.
+     */
+    public static void inverseTimes(double[] a, double[] b, double[] scratch, double[] out) {
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) scratch[4 * r + c] = a[4 * c + r];
+        }
+        for (int r = 0; r < 3; r++) {
+            scratch[4 * r + 3] = -(scratch[4 * r] * a[3] + scratch[4 * r + 1] * a[7] + scratch[4 * r + 2] * a[11]);
+        }
+        multiply(scratch, 0, b, 0, out, 0);
+    }
+
     /** @return this · other (apply {@code other} first, then this). */
     public RigidTransform compose(RigidTransform other) {
         double[] out = new double[12];

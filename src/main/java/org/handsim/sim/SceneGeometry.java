@@ -238,18 +238,6 @@ public final class SceneGeometry implements LinkContacts {
      */
     public CollisionResult lastResult() { return result; }
 
-    private void poseOfObjectInLink(double[] worldFromLink) {
-        // linkFromWorld = inverse(worldFromLink)
-        for (int r = 0; r < 3; r++) {
-            for (int col = 0; col < 3; col++) linkFromWorld[4 * r + col] = worldFromLink[4 * col + r];
-        }
-        for (int r = 0; r < 3; r++) {
-            linkFromWorld[4 * r + 3] = -(linkFromWorld[4 * r] * worldFromLink[3] + linkFromWorld[4 * r + 1] * worldFromLink[7]
-                + linkFromWorld[4 * r + 2] * worldFromLink[11]);
-        }
-        RigidTransform.multiply(linkFromWorld, 0, worldFromObject, 0, pose, 0);
-    }
-
     /**
      * Bounding sphere {cx, cy, cz, r} of a mesh in its own frame, metres: centred at the centre
      * of its bounding box, the radius reaching the farthest vertex.
@@ -308,14 +296,15 @@ public final class SceneGeometry implements LinkContacts {
             return false;
         }
         KdopTree lt = linkTrees[link - 1];
-        poseOfObjectInLink(w);
         if (coherent) {
             CoherentQuery c = coherentQueries[3 * (finger - 1) + (link - 1)];
             long walks = c.walks();
-            if (firstOnly) c.intersects(query, lt, objectTree, pose, 0, result);
-            else c.collide(query, lt, objectTree, pose, 0, result);
+            if (firstOnly) c.intersects(query, lt, w, objectTree, worldFromObject, result);
+            else c.collide(query, lt, w, objectTree, worldFromObject, result);
             counters[(c.walks() > walks ? Counter.TREE_WALKS : Counter.COHERENT_QUERIES).ordinal()]++;
+            if (result.intersecting()) System.arraycopy(c.relativePose(), 0, pose, 0, 12);
         } else {
+            RigidTransform.inverseTimes(w, worldFromObject, linkFromWorld, pose);
             counters[Counter.TREE_WALKS.ordinal()]++;
             if (firstOnly) query.intersects(lt, objectTree, pose, 0, result);
             else query.collide(lt, objectTree, pose, 0, result);
