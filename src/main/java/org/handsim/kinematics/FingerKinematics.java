@@ -85,6 +85,16 @@ public final class FingerKinematics {
         appendLinks2And3(joints, out);
     }
 
+    /**
+     * As {@link #framesFrom} when {@code out} already holds what it wrote for the same base and
+     * the same θk1 (frames {k0}, {k1} at out[0..23]): writes only {k2}, {k3} from θk2, θk3, the
+     * same values the full call would (the simulator's step, where the spread rarely moves).
+     */
+    public void framesFromKeepingLink1(double[] joints, double[] out) {
+        checkJoints(joints);
+        appendLinks2And3(joints, out);
+    }
+
     /** Frames {k2}, {k3} at out[24..47] from {k1} at out[12..23]. */
     private void appendLinks2And3(double[] joints, double[] out) {
         RigidTransform.multiplyDh(out, 12, joints[1] + r2.thetaOffset(), r2.d(), r2.a(), ca2, sa2, out, 24);

@@ -69,6 +69,7 @@ public final class HandModel {
     private double spread, spreadVel, spreadAcc;
     private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
     private final double[][] framesWorld = new double[3][48];
+    private final double[] framedTheta1 = {Double.NaN, Double.NaN, Double.NaN};   // θk1 that framesWorld's {k0}, {k1} are for
     private final ContactSet[][] linkContacts = new ContactSet[3][3];   // per finger and link
     // work saving (lazy): the inputs each result was last computed from; NaN (equal to nothing) until then
     private final double[][][] linkCollidedAt = new double[3][3][3];    // joints of each link's last query
@@ -254,7 +255,12 @@ public final class HandModel {
         qd[i][2] = moving ? rates[1] * motorVel[i] : 0;
         qdd[i][1] = moving ? rates[0] * motorAcc[i] : 0;
         qdd[i][2] = moving ? rates[1] * motorAcc[i] : 0;
-        framesInWorld(k, q[i], framesWorld[i]);
+        if (q[i][0] == framedTheta1[i]) {
+            fk[i].framesFromKeepingLink1(q[i], framesWorld[i]);   // {k0}, {k1} as last time
+        } else {
+            framesInWorld(k, q[i], framesWorld[i]);
+            framedTheta1[i] = q[i][0];
+        }
     }
 
     private void framesInWorld(int k, double[] joints, double[] out) {
