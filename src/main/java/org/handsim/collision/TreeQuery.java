@@ -256,11 +256,39 @@ public final class TreeQuery {
     }
 
     /**
+     * The largest gap between the two triangles along the nine cross products of an edge of
+     * one and an edge of the other (the edge–edge axes of the separating-axis test; parallel
+     * edges give no axis): with the normals' gaps ({@link #axisGap}), the separating-axis lower
+     * bound on their distance, exact when the closest points are inside two edges.
+     */
+    private final double[] axis = new double[3];
+    private final int[] edgeA = new int[6], edgeB = new int[6];
+
+    private double edgeAxesGap(double[] va, int a0, int a1, int a2, double[] vb, int b0, int b1, int b2) {
+        int[] ea = edgeA, eb = edgeB;
+        ea[0] = a0; ea[1] = a1; ea[2] = a1; ea[3] = a2; ea[4] = a2; ea[5] = a0;
+        eb[0] = b0; eb[1] = b1; eb[2] = b1; eb[3] = b2; eb[4] = b2; eb[5] = b0;
+        double best = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < 6; i += 2) {
+            double ux = va[ea[i + 1]] - va[ea[i]], uy = va[ea[i + 1] + 1] - va[ea[i] + 1], uz = va[ea[i + 1] + 2] - va[ea[i] + 2];
+            for (int j = 0; j < 6; j += 2) {
+                double wx = vb[eb[j + 1]] - vb[eb[j]], wy = vb[eb[j + 1] + 1] - vb[eb[j] + 1], wz = vb[eb[j + 1] + 2] - vb[eb[j] + 2];
+                axis[0] = uy * wz - uz * wy;
+                axis[1] = uz * wx - ux * wz;
+                axis[2] = ux * wy - uy * wx;
+                best = Math.max(best, axisGap(axis, 0, va, a0, a1, a2, vb, b0, b1, b2));
+            }
+        }
+        return best;
+    }
+
+    /**
      * The walk of {@link #walk} with separations instead of overlap tests (a pair is dropped as
      * soon as one direction separates it by more than the reach, that gap counting towards the
      * clearance, so the clearance is a little above the reach rather than the best bound): keeps the triangle
      * pairs within {@code reach}, each with its separation (the largest of its leaf pair's, its
-     * triangles' boxes' and their gaps along each triangle's normal, less
+     * triangles' boxes' and their gaps along the separating axes — each triangle's normal and,
+     * when those leave them apart, the nine edge–edge cross products — less
      * {@code margin}), returns the smallest separation of what it dropped (+∞ if
      * nothing). Counts its node tests into {@code out}.
      */
@@ -320,6 +348,7 @@ public final class TreeQuery {
                             if (placeNormals) placeNormal(b, tbi);
                             gap = Math.max(gap, Math.max(axisGap(nA, 3 * ta, va, a0, a1, a2, vb, b0, b1, b2),
                                 axisGap(nB, 3 * tbi, va, a0, a1, a2, vb, b0, b1, b2)));
+                            if (gap > 0) gap = Math.max(gap, edgeAxesGap(va, a0, a1, a2, vb, b0, b1, b2));
                             out.add(ta, tbi, gap - margin);
                         }
                     }
