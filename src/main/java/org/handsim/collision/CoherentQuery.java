@@ -93,12 +93,14 @@ public final class CoherentQuery {
         double moved = Double.NaN;
         if (near.clearance() > 0) {
             double c = near.clearance();
-            double ra2 = rotation2(anchorA, wa), ta2 = centre2(a.sphere, anchorA, wa);
-            double rb2 = rotation2(anchorB, wb), tb2 = centre2(b.sphere, anchorB, wb);
+            boolean aStill = same(anchorA, wa), bStill = same(anchorB, wb);
+            double ra2 = aStill ? 0 : rotation2(anchorA, wa), ta2 = aStill ? 0 : centre2(a.sphere, anchorA, wa);
+            double rb2 = bStill ? 0 : rotation2(anchorB, wb), tb2 = bStill ? 0 : centre2(b.sphere, anchorB, wb);
             double ra = a.sphere[3], rb = b.sphere[3];
-            // (x + y + u + v)² ≤ 4(x² + y² + u² + v²): covered without a root; with no pair to test the
-            // motion itself is not needed
-            if (near.size() == 0 && 4 * (ra2 * ra * ra + ta2 + rb2 * rb * rb + tb2) < c * c) {
+            // (x₁ + … + x_n)² ≤ n(x₁² + … + x_n²), n the non-zero terms (2 for each body that moved): covered
+            // without a root; with no pair to test the motion itself is not needed
+            int terms = (aStill ? 0 : 2) + (bStill ? 0 : 2);
+            if (near.size() == 0 && terms * (ra2 * ra * ra + ta2 + rb2 * rb * rb + tb2) < c * c) {
                 reused++;
                 keepLast(wa, wb);
                 out.clear();
@@ -130,6 +132,13 @@ public final class CoherentQuery {
             q.collide(a, b, pose, 0, near, moved, out);
         }
         if (walked) out.nodeTests = near.nodeTests();
+    }
+
+    private static boolean same(double[] w0, double[] w1) {
+        for (int i = 0; i < 12; i++) {
+            if (w0[i] != w1[i]) return false;
+        }
+        return true;
     }
 
     private void keepLast(double[] wa, double[] wb) {
