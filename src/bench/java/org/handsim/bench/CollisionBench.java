@@ -21,11 +21,12 @@ import org.handsim.vrml.VrmlLoader;
 /**
  * Suite "collision": k-DOP tree build and query times against triangle count, for every k and
  * both placements of the moving mesh, and the all-pairs loop, on the meshes and poses of
- * {@code ../shared/bench-meshes/scenarios.csv}; the rotated overlap compared with FCL 0.7's
- * 24-DOP search (trees prebuilt in one frame: 51 / 118 / 288 / 669 µs for 320 / 1 280 / 5 120 /
- * 20 480 triangles; 56 / 122 / 238 / 486 pairs there and 20 / 32 / 56 / 116 in
- * sphere_box_shallow). Our query times always include placing B (on-demand transform or full
- * refit), FCL's do not. Trees are built with the defaults (SAH split, leaves of two triangles)
+ * {@code ../shared/bench-meshes/scenarios.csv}; the rotated overlap compared with FCL's 24-DOP
+ * search (FCL built on this machine, trees prebuilt in one frame, search only:
+ * {@link #FCL_ROT_US}; 56 / 122 / 238 / 486 pairs there and 20 / 32 / 56 / 116 in
+ * sphere_box_shallow; how it was measured: docs/BENCHMARKS.md, collision), and B moving along a
+ * path of small steps through that overlap (full and coherent query per step). Our query times
+ * always include placing B (on-demand transform or full refit), FCL's do not. Trees are built with the defaults (SAH split, leaves of two triangles)
  * unless the row says otherwise; every tree result is checked against the all-pairs loop
  * before it is timed. Then the split rule and leaf size on the rotated overlap. The rows
  * compared with FCL and the tuning table are the quietest of three measurements.
@@ -33,7 +34,13 @@ import org.handsim.vrml.VrmlLoader;
 final class CollisionBench implements BenchMain.Suite {
     static final int[] FCL_ROT_PAIRS = {56, 122, 238, 486};
     static final int[] FCL_BOX_PAIRS = {20, 32, 56, 116};
-    static final double[] FCL_ROT_US = {51, 118, 288, 669};
+    /**
+     * FCL's 24-DOP search on sphere_overlap_rot, µs, for 320 / 1 280 / 5 120 / 20 480 triangles:
+     * measured on the project machine on 2026-11-24 (FCL master e5efcc41, Release build,
+     * median of the three runs taken alternately with this suite; docs/BENCHMARKS.md). The
+     * earlier anchor, from another CPU, was 51 / 118 / 288 / 669.
+     */
+    static final double[] FCL_ROT_US = {28.0, 64.1, 129.8, 274.1};
     private static final long WARMUP_MS = 300, SAMPLE_MS = 30;
     private static final int SAMPLES = 11;
 
@@ -187,7 +194,7 @@ final class CollisionBench implements BenchMain.Suite {
             .append("---:|".repeat(nk + 4)).append('\n');
         for (int l = 0; l < files.length; l++) {
             double bestK = Double.POSITIVE_INFINITY;
-            t.append(String.format(Locale.ROOT, "| %d | %d (%d) | %.0f µs |", meshes.get(files[l]).triangleCount(), pairs[l],
+            t.append(String.format(Locale.ROOT, "| %d | %d (%d) | %.1f µs |", meshes.get(files[l]).triangleCount(), pairs[l],
                 FCL_ROT_PAIRS[l], FCL_ROT_US[l]));
             for (int ki = 0; ki <= nk; ki++) {
                 double u = best[l * (nk + 1) + ki];
@@ -273,7 +280,7 @@ final class CollisionBench implements BenchMain.Suite {
         StringBuilder t = new StringBuilder("| triangles | pairs along the path | full query | coherent query | walks in "
             + PATH_STEPS + " steps | FCL 24-DOP (static search) | coherent / FCL |\n|---:|---:|---:|---:|---:|---:|---:|\n");
         for (int l = 0; l < files.length; l++) {
-            t.append(String.format(Locale.ROOT, "| %d | %d–%d | %.1f µs | %.1f µs | %d | %.0f µs | %.2f |%n", meshes.get(files[l]).triangleCount(),
+            t.append(String.format(Locale.ROOT, "| %d | %d–%d | %.1f µs | %.1f µs | %d | %.1f µs | %.2f |%n", meshes.get(files[l]).triangleCount(),
                 minPairs[l], maxPairs[l], best[2 * l], best[2 * l + 1], walks[l], FCL_ROT_US[l], best[2 * l + 1] / FCL_ROT_US[l]));
         }
         return t.toString();

@@ -11,9 +11,10 @@ import org.handsim.math.RigidTransform;
  *
  * <p><b>How.</b> It keeps the {@link NearPairs} gathered at an anchor (the two bodies' poses in a
  * common frame, e.g. the world). A query bounds how far the bodies moved relative to each other
- * since the anchor by the sum of their own motions, each ‖R − R₀‖_F·r + |Rc + t − (R₀c + t₀)|
+ * since the anchor by the sum of their own motions, each ‖R − R₀‖·r + |Rc + t − (R₀c + t₀)|
  * over its tree's {@linkplain KdopTree#boundingSphere() bounding sphere} (c, r) (for a point p
- * with |p − c| ≤ r, |(R − R₀)(p − c)| ≤ ‖R − R₀‖_F·r): two points that touch now were at most
+ * with |p − c| ≤ r, |(R − R₀)(p − c)| ≤ ‖R − R₀‖·r, the spectral norm, which for rotations is
+ * the Frobenius norm over √2): two points that touch now were at most
  * that far apart at the anchor. A body that did not move adds exactly 0. If the bound is below
  * the clearance, the near pairs answer (only those whose own separation is below it are tested;
  * none at all while the bodies are farther apart than they have moved), and the relative pose
@@ -149,19 +150,25 @@ public final class CoherentQuery {
 
     /**
      * How far (metres) the points of a body inside {@code sphere} {cx, cy, cz, r} can move
-     * between poses w0 and w1: ‖R₁ − R₀‖_F·r + |R₁c + t₁ − (R₀c + t₀)| (class comment).
+     * between poses w0 and w1: ‖R₁ − R₀‖·r + |R₁c + t₁ − (R₀c + t₀)| (class comment).
      */
     static double motion(double[] sphere, double[] w0, double[] w1) {
         return Math.sqrt(rotation2(w0, w1)) * sphere[3] + Math.sqrt(centre2(sphere, w0, w1));
     }
 
-    /** ‖R₁ − R₀‖²_F. */
+    /**
+     * ‖R₁ − R₀‖², the spectral norm squared, as ½‖R₁ − R₀‖²_F: for rotations R₁ − R₀ =
+     * R₀(Q − I) with Q a rotation by some φ, whose singular values are 2 sin(φ/2) twice and 0, so
+     * the Frobenius norm is exactly √2 times the spectral one. The poses are orthonormal to about
+     * 10⁻¹⁵, an error the clearance's rounding margin (10⁻⁹ of the coordinates) covers many
+     * times over.
+     */
     private static double rotation2(double[] w0, double[] w1) {
         double f = 0;
         for (int i = 0; i < 3; i++) {
             for (int j = 0; j < 3; j++) f += sq(w1[4 * i + j] - w0[4 * i + j]);
         }
-        return f;
+        return 0.5 * f;
     }
 
     /** |R₁c + t₁ − (R₀c + t₀)|² for the sphere's centre c. */

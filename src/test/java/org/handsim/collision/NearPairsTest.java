@@ -153,7 +153,7 @@ class NearPairsTest {
             double bound = CoherentQuery.motion(t.boundingSphere(), w0, w1);
             double exact = displacement(m, w0, w1);
             assertTrue(bound >= exact * (1 - 1e-9), "case " + c + ": bound " + bound + " below " + exact);
-            // not looser than the Frobenius norm's √2 and the sphere about the box centre allow
+            // not looser than the sphere about the box centre allows
             assertTrue(bound <= 3 * exact + 1e-15, "case " + c + ": bound " + bound + " for " + exact);
             assertEquals(0.0, CoherentQuery.motion(t.boundingSphere(), w0, w0), "no motion, case " + c);
         }
