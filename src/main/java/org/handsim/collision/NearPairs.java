@@ -14,7 +14,7 @@ import java.util.Arrays;
  * P₀ by more than δ, and the smallest of those separations, less a rounding margin, is the
  * {@linkplain #clearance() clearance} D ≥ δ (+∞ when no pair was dropped). Then for every pose
  * P such that no point of one mesh moves by D or more relative to the other between P₀ and P,
- * {@link TreeQuery#collide(KdopTree, KdopTree, double[], int, NearPairs, CollisionResult)} at P
+ * {@link TreeQuery#collide(KdopTree, KdopTree, double[], int, NearPairs, double, CollisionResult)} at P
  * returns exactly what the full query at P returns — the same pairs in the same order, the same
  * segments bit for bit:
  * <ul>
@@ -26,11 +26,14 @@ import java.util.Arrays;
  *       walk meets them, which does not depend on the bounds (a pre-order of the fixed tree of
  *       node pairs that bounds only prune).</li>
  * </ul>
- * Each kept pair also keeps its own separation at P₀ ({@link #separation(int)}): a pose
- * displaced by less than it cannot make that pair intersect, so the query skips it with one
- * comparison, and a generous reach costs little. With no kept pair, the meshes are certified apart for every such pose: conservative
- * advancement (B. Mirtich, "Impulse-based dynamic simulation of rigid body systems", PhD
- * thesis, UC Berkeley 1996, ch. 2) with the k-DOP tree's separations as the distance bound.
+ * Each kept pair also keeps its own separation at P₀ ({@link #separation(int)}: the largest of
+ * its leaf k-DOPs' separation, its triangles' box gap and their gaps along the separating axes —
+ * both normals and the nine edge–edge cross products, C. Ericson, "Real-Time Collision
+ * Detection", 2005, §4.4): a pose displaced by less than it cannot make that pair intersect, so
+ * the query skips it with one comparison, and a generous reach costs little. With no kept pair,
+ * the meshes are certified apart for every such pose: conservative advancement (B. Mirtich,
+ * "Impulse-based dynamic simulation of rigid body systems", PhD thesis, UC Berkeley 1996,
+ * ch. 2) with the k-DOP tree's separations as the distance bound.
  *
  * <p>Not thread-safe; one per (moving body, other body) and thread.
  */

@@ -13,7 +13,11 @@
  *   <li>{@link org.handsim.collision.TriangleIntersector}: Guigue–Devillers triangle–triangle
  *       intersection with segments, decided exactly by {@link org.handsim.collision.Predicates}
  *       (Shewchuk's filtered orientation predicates with an expansion-arithmetic fallback);</li>
- *   <li>{@link org.handsim.collision.BruteForce}: the all-pairs reference.</li>
+ *   <li>{@link org.handsim.collision.BruteForce}: the all-pairs reference;</li>
+ *   <li>{@link org.handsim.collision.NearPairs} and {@link org.handsim.collision.CoherentQuery}:
+ *       temporal coherence for a query repeated as bodies move a little (the triangle pairs near
+ *       at an anchor pose, the full query's result from them while the motion stays below their
+ *       clearance).</li>
  * </ul>
  *
  * <p>Typical use (B placed in A's frame by {@code pose}; trees built once, query objects one per
