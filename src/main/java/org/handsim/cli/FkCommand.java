@@ -16,9 +16,13 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code handsim fk}: forward kinematics of one finger, or of every row of a CSV file. */
 @Command(name = "fk", mixinStandardHelpOptions = true,
     description = {"Forward kinematics (paper Section II.A): the origins of frames {k0}..{k3} and the fingertip.",
-        "Prints {\"finger\":K,\"frame\":\"base\",\"joints\":[t1,t2,t3],\"origins\":[[x,y,z] x4],\"fingertip\":[x,y,z]}",
-        "(metres; joints in radians). Bulk: --input IN.csv (header finger,t1,t2,t3) --output OUT.csv",
-        "adds o0x,o0y,o0z,...,o3z in the base frame."})
+        "Prints",
+        "  {\"finger\":K,\"frame\":\"base\",\"joints\":[t1,t2,t3],",
+        "   \"origins\":[[x,y,z],[x,y,z],[x,y,z],[x,y,z]],\"fingertip\":[x,y,z]}",
+        "(metres; joints in radians). Bulk: --input IN.csv with the header",
+        "  finger,t1,t2,t3",
+        "and --output OUT.csv, which adds the columns (base frame)",
+        "  o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z"})
 public final class FkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,t1,t2,t3";
     static final String ADDED_HEADER = "o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
@@ -37,7 +41,7 @@ public final class FkCommand implements Callable<Integer> {
     @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the output: finger base {k0} (default) or palm {P}")
     String frame;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
     Path input;
 
     @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")

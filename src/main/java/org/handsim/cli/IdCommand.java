@@ -21,7 +21,8 @@ import picocli.CommandLine.Model.CommandSpec;
  * N·m, kg·m².
  */
 @Command(name = "id", mixinStandardHelpOptions = true,
-    description = {"Inverse dynamics of a finger, paper eq (8): tau = D(q)*qdd + H(q,qd) + C(q).",
+    description = {"Inverse dynamics of a finger (paper eq 8): its joint torques and D, H, C.",
+        "tau = D(q)*qdd + H(q,qd) + C(q).",
         "Prints {\"finger\":K,\"tau\":[..],\"D\":[[..]],\"H\":[..],\"C\":[..]}",
         "in N*m and kg*m^2. Finger 3 has no spread: give q1 = qd1 = qdd1 = 0;",
         "it prints its two active joints (2-vectors, a 2x2 D).",
@@ -48,14 +49,14 @@ public final class IdCommand implements Callable<Integer> {
     @Option(names = "--qdd", paramLabel = "qdd1,qdd2,qdd3", description = "joint accelerations, rad/s^2")
     String qdd;
 
-    @Option(names = "--gravity", paramLabel = "gx,gy,gz", description = "gravity in the finger base frame {k0}, m/s^2, e.g. 0,0,-9.81")
+    @Option(names = "--gravity", paramLabel = "gx,gy,gz", description = {"gravity in the finger base frame {k0}, m/s^2,", "e.g. 0,0,-9.81"})
     String gravity;
 
     @Option(names = "--method", paramLabel = "le|ne", defaultValue = "le",
         description = "le: Lagrange-Euler (default, the paper's algorithm); ne: recursive Newton-Euler")
     String method;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
     Path input;
 
     @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")

@@ -16,9 +16,13 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code handsim ik}: inverse kinematics of one finger, or of every row of a CSV file. */
 @Command(name = "ik", mixinStandardHelpOptions = true,
     description = {"Inverse kinematics (paper eqs 5-7) with joint limits and the closest reachable point.",
-        "Prints {\"reachable\":true|false,\"joints\":[t1,t2,t3],\"fingertip\":[x,y,z],\"error_m\":e}",
-        "(metres, radians; fingertip in the target's frame; unreachable: the closest reachable point).",
-        "Bulk: --input IN.csv (header finger,x,y,z) --output OUT.csv adds reachable,t1,t2,t3,error_m."})
+        "Prints",
+        "  {\"reachable\":true|false,\"joints\":[t1,t2,t3],\"fingertip\":[x,y,z],\"error_m\":e}",
+        "(metres, radians; fingertip in the target's frame; unreachable: the closest",
+        "reachable point). Bulk: --input IN.csv with the header",
+        "  finger,x,y,z",
+        "and --output OUT.csv, which adds the columns",
+        "  reachable,t1,t2,t3,error_m"})
 public final class IkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,x,y,z";
     static final String ADDED_HEADER = "reachable,t1,t2,t3,error_m";
@@ -34,7 +38,7 @@ public final class IkCommand implements Callable<Integer> {
     @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the target: finger base {k0} (default) or palm {P}")
     String frame;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
     Path input;
 
     @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")

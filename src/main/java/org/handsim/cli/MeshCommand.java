@@ -37,11 +37,14 @@ import picocli.CommandLine.Spec;
  * scene building and tessellation walk. Warnings go to standard error, one per line.
  */
 @Command(name = "mesh", mixinStandardHelpOptions = true,
-    description = {"Load a VRML97 file (VrmlLoader, tessellation walk) and print its triangle mesh statistics.",
-        "Output, one JSON line: {\"file\",\"shapes\",\"triangles\",\"vertices\",\"degenerate\",\"area_m2\",\"volume_m3\" (null unless closed),"
-            + "\"closed\",\"bounds\",\"load_ms\"}.",
-        "Coincident vertices are welded before the closed-ness test. Warnings go to standard error.",
-        "Exit codes: 0 ok, 2 bad arguments, 3 file cannot be loaded (FILE:LINE:COL: message)."})
+    description = {"Loads a VRML97 file and prints the statistics of its triangle mesh.",
+        "Prints one JSON line (volume_m3 is null unless the mesh is closed):",
+        "  {\"file\":..,\"shapes\":n,\"triangles\":n,\"vertices\":n,\"degenerate\":n,",
+        "   \"area_m2\":A,\"volume_m3\":V|null,\"closed\":bool,",
+        "   \"bounds\":[[xmin,ymin,zmin],[xmax,ymax,zmax]],\"load_ms\":t}",
+        "Coincident vertices are welded before the closed-ness test. Warnings go to",
+        "standard error. Exit codes: 0 ok, 2 bad arguments, 3 file cannot be loaded",
+        "(FILE:LINE:COL: message)."})
 public final class MeshCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;

@@ -28,9 +28,11 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim run}: the main job. */
 @Command(name = "run", mixinStandardHelpOptions = true,
-    description = {"Runs a scenario (default: the paper's breakaway experiment, scenarios/paper-breakaway.json)",
-        "and writes trace.csv, summary.json and the paper's Fig. 7 and Fig. 8 (PNG and SVG) into",
-        "out/<scenario name>/ (or --out DIR). Nothing is written if the run fails."})
+    description = {"Runs a scenario and writes its trace, summary and the paper's Fig. 7 and 8.",
+        "SCENARIO defaults to the paper's breakaway experiment,",
+        "scenarios/paper-breakaway.json. Writes trace.csv (streamed as the run goes),",
+        "summary.json and fig7/fig8 (PNG and SVG) into out/<scenario name>/",
+        "(or --out DIR). Nothing is written if the run fails."})
 public final class RunCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 

@@ -26,9 +26,15 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim sweep}: many scenarios in parallel in one JVM, one summary table. */
 @Command(name = "sweep", mixinStandardHelpOptions = true,
-    description = {"Runs every run of SWEEP.json in parallel on all cores and writes one table,",
-        "out/<sweep name>/summary.csv (header: " + SweepCommand.HEADER + ").",
-        "A run that fails is a row with status 'failed' and its error; the others go on."})
+    description = {"Runs every run of SWEEP.json in parallel and writes one summary table.",
+        "The table is out/<sweep name>/summary.csv (or --out DIR), one row per run in",
+        "the file's order, written as the runs finish; header:",
+        "  run,scenario,status,sim_time_s,steps,wall_time_s,",
+        "  final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,",
+        "  final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,",
+        "  final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error",
+        "A run that fails is a row with status 'failed' and its error; the others",
+        "go on (exit 1 if any failed)."})
 public final class SweepCommand implements Callable<Integer> {
     static final String HEADER = "run,scenario,status,sim_time_s,steps,wall_time_s,"
         + "final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
