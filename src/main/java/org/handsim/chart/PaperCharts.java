@@ -23,7 +23,7 @@ import org.jfree.data.xy.XYSeriesCollection;
  * {@value #MAX_POINTS} points (every n-th row, keeping the last).
  */
 public final class PaperCharts {
-    static final int MAX_POINTS = 1500;
+    static final int MAX_POINTS = Recorder.CHART_POINTS;
     static final Color J2 = new Color(0x1f77b4), J3 = new Color(0xd62728), BREAK = new Color(0x2ca02c);
 
     private PaperCharts() {}

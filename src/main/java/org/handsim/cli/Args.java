@@ -1,5 +1,7 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
+
 /** Parsing of the comma-separated numeric arguments the sub-commands share. */
 final class Args {
     private Args() {}
@@ -41,9 +43,9 @@ final class Args {
         return k;
     }
 
-    /** Formats a number for CSV output: shortest round-trip text; refuses non-finite values. */
+    /** Formats a number for CSV output ({@link Decimal}: shortest round trip, integers plain); refuses non-finite values. */
     static String csv(double d) {
         if (!Double.isFinite(d)) throw new IllegalStateException("refusing to write non-finite value " + d);
-        return Double.toString(d);
+        return Decimal.format(d);
     }
 }

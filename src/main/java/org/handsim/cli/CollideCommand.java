@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -129,8 +130,8 @@ public final class CollideCommand implements Callable<Integer> {
         List<Object> patches = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             Map<String, Object> pm = new LinkedHashMap<>();
-            pm.put("center", cp.center(i, new double[3]));
-            pm.put("normal", cp.normal(i, new double[3]));
+            pm.put("center", Decimal.clean(cp.center(i, new double[3])));   // README: |x| < 1e-12 written as 0
+            pm.put("normal", Decimal.clean(cp.normal(i, new double[3])));
             pm.put("area_m2", cp.area(i));
             pm.put("pairs", cp.pairCount(i));
             patches.add(pm);

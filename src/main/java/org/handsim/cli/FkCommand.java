@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -78,9 +79,9 @@ public final class FkCommand implements Callable<Integer> {
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("finger", k);
         out.put("frame", frame);
-        out.put("joints", j);
-        out.put("origins", origins);
-        out.put("fingertip", origins[3]);
+        out.put("joints", Decimal.clean(j));          // README: |x| < 1e-12 is rounding noise, written as 0
+        out.put("origins", Decimal.clean(origins));
+        out.put("fingertip", Decimal.clean(origins[3]));
         spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
@@ -99,7 +100,7 @@ public final class FkCommand implements Callable<Integer> {
                     throw in.error(e.getMessage());
                 }
                 for (int f = 0; f < 4; f++) {
-                    for (int c = 0; c < 3; c++) sb.append(',').append(Args.csv(frames[12 * f + 4 * c + 3]));
+                    for (int c = 0; c < 3; c++) sb.append(',').append(Args.csv(Decimal.clean(frames[12 * f + 4 * c + 3])));
                 }
             });
     }

@@ -46,9 +46,8 @@ public final class HandSim implements Runnable {
         SweepCommand.class,
         GuiCommand.class,
         TradeoffCommand.class,
-        SwingCommand.class,
+        SwingCommand.class
         // sub-commands register here, one line each
-        CommandLine.HelpCommand.class
     );
 
     /** Columns of every help text. */
@@ -94,6 +93,7 @@ public final class HandSim implements Runnable {
     static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new HandSim());
         for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+        cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
         cl.setUsageHelpWidth(HELP_WIDTH);
         cl.setUsageHelpAutoWidth(false);
         applySynopsis(cl);

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -86,10 +87,10 @@ public final class IdCommand implements Callable<Integer> {
         for (int i = 0; i < n; i++) System.arraycopy(dm, i * n, rows[i], 0, n);
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("finger", finger);
-        out.put("tau", tau);
-        out.put("D", rows);
-        out.put("H", h);
-        out.put("C", c);
+        out.put("tau", Decimal.clean(tau));      // README: |x| < 1e-12 is rounding noise, written as 0
+        out.put("D", Decimal.clean(rows));
+        out.put("H", Decimal.clean(h));
+        out.put("C", Decimal.clean(c));
         spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
@@ -114,7 +115,7 @@ public final class IdCommand implements Callable<Integer> {
                     sb.append(',');
                     if (!chain.isActive(j)) continue;
                     if (!Double.isFinite(tau[j])) throw in.error("torque tau" + (j + 1) + " is not finite (" + tau[j] + ")");
-                    sb.append(Args.csv(tau[j]));
+                    sb.append(Args.csv(Decimal.clean(tau[j])));
                 }
             });
     }

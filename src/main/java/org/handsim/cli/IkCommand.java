@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -54,9 +55,9 @@ public final class IkCommand implements Callable<Integer> {
         IkResult r = palm ? ik.solveInPalm(t) : ik.solve(t);
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("reachable", r.reachable());
-        out.put("joints", r.joints());
-        out.put("fingertip", r.fingertip());
-        out.put("error_m", r.errorM());
+        out.put("joints", Decimal.clean(r.joints()));      // README: |x| < 1e-12 is rounding noise, written as 0
+        out.put("fingertip", Decimal.clean(r.fingertip()));
+        out.put("error_m", Decimal.clean(r.errorM()));
         spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
@@ -70,8 +71,8 @@ public final class IkCommand implements Callable<Integer> {
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
                 IkResult r = palm ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
                 double[] j = r.joints();
-                sb.append(',').append(r.reachable()).append(',').append(Args.csv(j[0])).append(',').append(Args.csv(j[1]))
-                    .append(',').append(Args.csv(j[2])).append(',').append(Args.csv(r.errorM()));
+                sb.append(',').append(r.reachable()).append(',').append(Args.csv(Decimal.clean(j[0]))).append(',').append(Args.csv(Decimal.clean(j[1])))
+                    .append(',').append(Args.csv(Decimal.clean(j[2]))).append(',').append(Args.csv(Decimal.clean(r.errorM())));
             });
     }
 }

@@ -11,6 +11,7 @@ import java.util.concurrent.Callable;
 import org.handsim.chart.ChartExport;
 import org.handsim.chart.PaperCharts;
 import org.handsim.sim.HandModel;
+import org.handsim.sim.Recorder;
 import org.handsim.sim.Home;
 import org.handsim.sim.RunSummary;
 import org.handsim.sim.Scenario;
@@ -82,69 +83,57 @@ public final class RunCommand implements Callable<Integer> {
             }
         }
         Path dir = out != null ? out : Path.of("out", scenario.name());
-        long t0 = System.nanoTime();
-        HandModel model = Simulation.model(scenario, true).lazy(!noLazy);
-        double setup = (System.nanoTime() - t0) / 1e9;
-        List<String> warnings = startWarnings(model);
-        for (String w : warnings) err.println("handsim: warning: " + w);
-        long t1 = System.nanoTime();
-        try {
-            model.run(new ProgressBar(err, "handsim run " + scenario.name()));
-        } catch (SimulationException e) {
-            throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
-        }
-        double wall = (System.nanoTime() - t1) / 1e9;
-        Map<String, Object> summary = RunSummary.of(model, wall);
-        summary.put("setup_time_s", setup);
-        summary.put("warnings", warnings);
-        if (toleranceM != null) {
-            summary.put("tolerance_m", toleranceM);
-            if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
-        }
+        boolean charts = scenario.writeCharts() && !noCharts;
         List<String> written = new ArrayList<>();
-        // the trace is written on a second thread while the charts are drawn (two cores)
-        double[] traceSeconds = {0};
-        java.util.concurrent.CompletableFuture<Void> trace = null;
-        if (scenario.writeTrace()) {
-            trace = java.util.concurrent.CompletableFuture.runAsync(() -> {
-                long t = System.nanoTime();
-                try {
-                    model.recorder().writeCsv(dir.resolve("trace.csv"));
-                } catch (IOException e) {
-                    throw new java.io.UncheckedIOException(e);
-                }
-                traceSeconds[0] = (System.nanoTime() - t) / 1e9;
-            });
-            written.add("trace.csv");
-        }
-        long t3 = System.nanoTime();
-        if (scenario.writeCharts() && !noCharts) {
-            for (int k = 1; k <= 3; k++) {
-                if (!moved(model, k)) continue;
-                String name = "finger " + k + ", " + scenario.name();
-                ChartExport.write(PaperCharts.figure7(model.recorder(), k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
-                    dir.resolve("fig7_finger" + k), 900, 1100);
-                ChartExport.write(PaperCharts.figure8(model.recorder(), k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
-                    dir.resolve("fig8_finger" + k), 900, 450);
-                written.add("fig7_finger" + k + ".png/.svg");
-                written.add("fig8_finger" + k + ".png/.svg");
-            }
-        }
-        long t4 = System.nanoTime();
-        if (trace != null) {
+        Map<String, Object> summary;
+        HandModel model;
+        double wall, setup, chartSeconds = 0;
+        // memory stays flat in the number of steps: the trace streams to its file as the run
+        // goes, and memory keeps only the rows the charts draw (Recorder.bounded)
+        try (Recorder rec = scenario.writeTrace() || charts
+            ? Recorder.bounded(scenario.writeTrace() ? dir.resolve("trace.csv") : null, HandModel.totalSteps(scenario) + 1) : null) {
+            long t0 = System.nanoTime();
+            model = Simulation.model(scenario, rec).lazy(!noLazy);
+            setup = (System.nanoTime() - t0) / 1e9;
+            List<String> warnings = startWarnings(model);
+            for (String w : warnings) err.println("handsim: warning: " + w);
+            long t1 = System.nanoTime();
             try {
-                trace.join();
-            } catch (java.util.concurrent.CompletionException e) {
-                if (e.getCause() instanceof java.io.UncheckedIOException) throw ((java.io.UncheckedIOException) e.getCause()).getCause();
-                throw e;
+                model.run(new ProgressBar(err, "handsim run " + scenario.name()));
+            } catch (SimulationException e) {
+                throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
             }
+            wall = (System.nanoTime() - t1) / 1e9;
+            if (rec != null) rec.finish();
+            summary = RunSummary.of(model, wall);
+            summary.put("setup_time_s", setup);
+            summary.put("warnings", warnings);
+            if (toleranceM != null) {
+                summary.put("tolerance_m", toleranceM);
+                if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
+            }
+            if (scenario.writeTrace()) written.add("trace.csv");
+            long t3 = System.nanoTime();
+            if (charts) {
+                for (int k = 1; k <= 3; k++) {
+                    if (!rec.moved(k)) continue;
+                    String name = "finger " + k + ", " + scenario.name();
+                    ChartExport.write(PaperCharts.figure7(rec, k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
+                        dir.resolve("fig7_finger" + k), 900, 1100);
+                    ChartExport.write(PaperCharts.figure8(rec, k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
+                        dir.resolve("fig8_finger" + k), 900, 450);
+                    written.add("fig7_finger" + k + ".png/.svg");
+                    written.add("fig8_finger" + k + ".png/.svg");
+                }
+            }
+            chartSeconds = (System.nanoTime() - t3) / 1e9;
+            Map<String, Object> phases = new java.util.LinkedHashMap<>();
+            phases.put("load_s", setup);
+            phases.put("run_s", wall);
+            phases.put("trace_s", rec != null ? rec.writeSeconds() : 0.0);
+            phases.put("charts_s", chartSeconds);
+            summary.put("phase_times", phases);
         }
-        Map<String, Object> phases = new java.util.LinkedHashMap<>();
-        phases.put("load_s", setup);
-        phases.put("run_s", wall);
-        phases.put("trace_s", traceSeconds[0]);
-        phases.put("charts_s", (t4 - t3) / 1e9);
-        summary.put("phase_times", phases);
         AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
         written.add("summary.json");
         if (toleranceLine != null) stdout.println(toleranceLine);
@@ -207,13 +196,6 @@ public final class RunCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
-    }
-
-    private static boolean moved(HandModel m, int k) {
-        var r = m.recorder();
-        double q0 = r.get(k, org.handsim.sim.Recorder.Q, 0);
-        for (int row = 1; row < r.rows(); row++) if (r.get(k, org.handsim.sim.Recorder.Q, row) != q0) return true;
-        return false;
     }
 
     static String headline(HandModel m, double wall) {

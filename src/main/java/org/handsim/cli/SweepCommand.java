@@ -18,6 +18,8 @@ import org.handsim.sim.Simulation;
 import org.handsim.sim.SimulationException;
 import org.handsim.sim.Sweep;
 import org.handsim.util.AtomicFile;
+import org.handsim.util.Decimal;
+import org.handsim.util.SafeText;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -64,35 +66,47 @@ public final class SweepCommand implements Callable<Integer> {
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
         List<Sweep.Run> runs = sweep.runs();
-        ExecutorService pool = Executors.newFixedThreadPool(n);
+        ExecutorService pool = Executors.newFixedThreadPool(n, r -> {
+            Thread t = new Thread(r, "sweep-worker");
+            t.setDaemon(true);
+            return t;
+        });
         AtomicInteger done = new AtomicInteger();
         long t0 = System.nanoTime();
-        List<Future<String>> rows = new ArrayList<>();
-        for (Sweep.Run run : runs) {
-            rows.add(pool.submit(() -> {
-                String row = runOne(run);
-                int d = done.incrementAndGet();
-                synchronized (err) {
-                    err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), run.label(), (System.nanoTime() - t0) / 1e9));
-                    err.flush();
-                }
-                return row;
-            }));
-        }
-        pool.shutdown();
         Path dir = out != null ? out : Path.of("out", sweep.name());
         int failed = 0;
+        // the table streams: rows are written in the file's order as soon as they and all rows
+        // before them are done; at most 2 × threads runs are submitted ahead, so memory does not
+        // grow with the number of runs
+        int ahead = 2 * n;
+        java.util.ArrayDeque<Future<String>> inFlight = new java.util.ArrayDeque<>();
         try (AtomicFile f = new AtomicFile(dir.resolve("summary.csv"))) {
             Writer w = f.writer();
             w.write(HEADER);
             w.write('\n');
-            for (Future<String> r : rows) {
-                String row = r.get();
+            int next = 0;
+            while (next < runs.size() || !inFlight.isEmpty()) {
+                while (next < runs.size() && inFlight.size() < ahead) {
+                    Sweep.Run run = runs.get(next++);
+                    inFlight.add(pool.submit(() -> {
+                        String row = runOne(run);
+                        int d = done.incrementAndGet();
+                        synchronized (err) {
+                            err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), SafeText.line(run.label()),
+                                (System.nanoTime() - t0) / 1e9));
+                            err.flush();
+                        }
+                        return row;
+                    }));
+                }
+                String row = inFlight.poll().get();
                 if (row.contains(",failed,")) failed++;
                 w.write(row);
                 w.write('\n');
             }
             f.commit();
+        } finally {
+            pool.shutdownNow();
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %d threads in %.2f s; wrote %s",
@@ -111,26 +125,24 @@ public final class SweepCommand implements Callable<Integer> {
             m.run(null);
             double wall = (System.nanoTime() - t) / 1e9;
             StringBuilder sb = new StringBuilder();
-            sb.append(label).append(',').append(csvText(scenarioName)).append(",ok,").append(m.time()).append(',')
-                .append(m.stepIndex()).append(',').append(wall);
+            sb.append(label).append(',').append(csvText(scenarioName)).append(",ok,").append(Decimal.format(m.time())).append(',')
+                .append(m.stepIndex()).append(',').append(Decimal.format(wall));
             for (int k = 1; k <= 3; k++) {
-                sb.append(',').append(m.state(k)).append(',').append(num(m.breakawayTime(k))).append(',')
-                    .append(num(m.breakawayForce(k))).append(',').append(m.maxContactForce(k));
+                sb.append(',').append(m.state(k)).append(',').append(Decimal.orEmpty(m.breakawayTime(k))).append(',')
+                    .append(Decimal.orEmpty(m.breakawayForce(k))).append(',').append(Decimal.format(m.maxContactForce(k)));
             }
             return sb.append(',').toString();
-        } catch (ScenarioException | SimulationException | IllegalArgumentException e) {
-            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(e.getMessage());
+        } catch (RuntimeException e) {   // ScenarioException, SimulationException, a bad object file ...: this row fails, the others go on
+            String why = e instanceof ScenarioException || e instanceof SimulationException ? e.getMessage() : e.toString();
+            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(SafeText.line(why));
         }
-    }
-
-    private static String num(double v) {
-        return Double.isNaN(v) ? "" : Double.toString(v);
     }
 
     /** Quotes a text field for CSV when it holds a comma, quote or newline. */
     static String csvText(String s) {
         if (s == null) return "";
-        if (s.indexOf(',') < 0 && s.indexOf('"') < 0 && s.indexOf('\n') < 0) return s;
-        return "\"" + s.replace("\"", "\"\"").replace("\n", " ") + "\"";
+        s = SafeText.line(s);   // one physical line per row
+        if (s.indexOf(',') < 0 && s.indexOf('"') < 0) return s;
+        return "\"" + s.replace("\"", "\"\"") + "\"";
     }
 }

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -177,8 +178,9 @@ public final class SwingCommand implements Callable<Integer> {
             if (!ok) removeEmpty(created);
         }
         stdout.println(String.format(Locale.ROOT,
-            "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %.9g J -> %.9g J (relative drift %.3g)",
-            k, integrator, dt, result.steps(), duration, wall, result.initialEnergy(), result.finalEnergy(), result.relativeDrift()));
+            "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %s J -> %s J (relative drift %.3g)",
+            k, integrator, Decimal.format(dt), result.steps(), Decimal.format(duration), wall,
+            Decimal.format(result.initialEnergy()), Decimal.format(result.finalEnergy()), result.relativeDrift()));
         stdout.println("wrote " + out + "/{swing.csv, swing.json}");
         return 0;
     }

@@ -6,6 +6,7 @@ import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.trajectory.Trajectory;
+import org.handsim.util.StepClock;
 
 /**
  * The HandSim model, Easy-Java-Simulations style: read it top to bottom.
@@ -54,6 +55,7 @@ public final class HandModel {
     private final double[][] gravityK0 = new double[3][3];
     private final double[][] worldFromK0 = new double[3][12];
     private final double dt;
+    private final StepClock clock;                  // t = step × dt in decimal (8.947, not 8.947000000000001)
     private final long totalSteps;
     private final double reach2, reach3;           // metres: how far links 2-3 reach beyond joints k2, k3
     private final Recorder recorder;                // null: not recording
@@ -102,12 +104,20 @@ public final class HandModel {
      * @param record         whether to keep a trace (one row per step)
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, boolean record) {
+        this(scenario, objectContacts, dynamics, record ? new Recorder() : null);
+    }
+
+    /**
+     * @param recorder where the trace goes (e.g. {@link Recorder#bounded}), or null for none
+     */
+    public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
         this.scenario = scenario;
         this.objectContacts = objectContacts;
         this.dynamics = dynamics;
         this.dt = scenario.dt();
-        this.totalSteps = Math.round(Math.ceil(scenario.duration() / dt - 1e-9));
-        this.recorder = record ? new Recorder() : null;
+        this.clock = new StepClock(dt);
+        this.totalSteps = totalSteps(scenario);
+        this.recorder = recorder;
         this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
         this.reach3 = hand.a3() + LINK_MARGIN_M;
         double[] g = scenario.gravity();
@@ -120,6 +130,11 @@ public final class HandModel {
             base.inverse().rotate(g, gravityK0[k - 1]);
         }
         initialise();
+    }
+
+    /** Steps a scenario runs: its duration over its time step, rounded up. */
+    public static long totalSteps(Scenario scenario) {
+        return Math.round(Math.ceil(scenario.duration() / scenario.dt() - 1e-9));
     }
 
     // ------------------------------------------------------------------ initialisation
@@ -161,7 +176,7 @@ public final class HandModel {
     /** Advances one step of dt seconds. */
     public void step() {
         step++;
-        t = step * dt;
+        t = clock.at(step);
         counters[Counter.STEPS.ordinal()]++;
         sampleSpread(t);
         for (int k = 1; k <= 3; k++) {
