@@ -4,7 +4,6 @@ import org.handsim.util.Decimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -18,6 +17,7 @@ import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.SteadyTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -40,7 +40,9 @@ import org.handsim.vrml.VrmlScene;
         "patches: connected sets of segments, one point contact each: centre of the",
         "bounding box, unit normal out of B (from B's triangles), area estimate;",
         "A's frame, metres. build_ms: both trees; query_us_median: the tree query",
-        "including B's placement, median of --repeat runs after as many warm-ups.",
+        "including B's placement, once the JIT has compiled it: warm-up of at least",
+        "0.5 s and 10 000 queries, then the median of --repeat timed batches of about",
+        "5 ms each (util.SteadyTiming, the scheme of gradle bench).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
@@ -58,8 +60,11 @@ public final class CollideCommand implements Callable<Integer> {
     @Option(names = "--k", paramLabel = "K", description = "k of the k-DOPs: 6, 14, 18 (default) or 26")
     String kText = "18";
 
-    @Option(names = "--repeat", paramLabel = "N", description = "run the query N times after N warm-up runs and report the median (default 1)")
-    String repeatText = "1";
+    @Option(names = "--repeat", paramLabel = "N", description = {"timed batches after the warm-up (1..10000,", "default " + DEFAULT_REPEAT + "); the median per query is reported"})
+    String repeatText = String.valueOf(DEFAULT_REPEAT);
+
+    /** Timed batches by default: the median of 21 batches of about 5 ms. */
+    static final int DEFAULT_REPEAT = 21;
 
     @Override
     public Integer call() {
@@ -69,7 +74,7 @@ public final class CollideCommand implements Callable<Integer> {
         for (int s : Kdop.SUPPORTED_K) ok |= s == k;
         if (!ok) throw CliError.usage("handsim: --k must be 6, 14, 18 or 26, got " + kText);
         int repeat = integer("--repeat", repeatText);
-        if (repeat < 1 || repeat > 1_000_000) throw CliError.usage("handsim: --repeat must be in 1..1000000, got " + repeatText);
+        if (repeat < 1 || repeat > 10_000) throw CliError.usage("handsim: --repeat must be in 1..10000, got " + repeatText);
         TriangleMesh a = loadMesh(fileA), b = loadMesh(fileB);
         RigidTransform pose = RigidTransform.fromPose(p[0], p[1], p[2], p[3], p[4], p[5]);
         spec.commandLine().getOut().println(JsonWriter.write(collide(a, b, pose, k, repeat)));
@@ -108,7 +113,7 @@ public final class CollideCommand implements Callable<Integer> {
     /**
      * The command's JSON object for two meshes (the part that does not read files).
      *
-     * @param repeat the query runs this many times after as many warm-up runs; the median is reported
+     * @param repeat timed batches after the warm-up ({@link SteadyTiming}); the median per query is reported
      */
     static Map<String, Object> collide(TriangleMesh a, TriangleMesh b, RigidTransform pose, int k, int repeat) {
         long t0 = System.nanoTime();
@@ -116,15 +121,8 @@ public final class CollideCommand implements Callable<Integer> {
         double buildMs = (System.nanoTime() - t0) / 1e6;
         TreeQuery q = new TreeQuery();
         CollisionResult r = new CollisionResult();
-        for (int i = 0; i < repeat && repeat > 1; i++) q.collide(ta, tb, pose, r);  // warm-up
-        double[] us = new double[repeat];
-        for (int i = 0; i < repeat; i++) {
-            long s = System.nanoTime();
-            q.collide(ta, tb, pose, r);
-            us[i] = (System.nanoTime() - s) / 1e3;
-        }
-        Arrays.sort(us);
-        double median = repeat % 2 == 1 ? us[repeat / 2] : 0.5 * (us[repeat / 2 - 1] + us[repeat / 2]);
+        double median = SteadyTiming.median(() -> q.collide(ta, tb, pose, r).pairCount() + r.nodeTests, repeat).medianMicros();
+        q.collide(ta, tb, pose, r);
         ContactPatches cp = new ContactPatches();
         int n = cp.build(r, a, b, pose);
         List<Object> patches = new ArrayList<>();
@@ -146,7 +144,7 @@ public final class CollideCommand implements Callable<Integer> {
         out.put("patches", patches);
         out.put("counters", counters);
         out.put("build_ms", Math.round(buildMs * 1000) / 1000.0);
-        out.put("query_us_median", Math.round(median * 10) / 10.0);
+        out.put("query_us_median", Math.round(median * 100) / 100.0);
         return out;
     }
 }
