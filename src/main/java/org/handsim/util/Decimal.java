@@ -109,6 +109,25 @@ public final class Decimal {
         while (last > first + 1 && digits[last - 1] == '0') last--;
         int k = last - first;
         int n = point + exp10;
+        if (k == 2) {
+            // Schubfach, as Java's Double.toString, writes at least two digits (4.9E-324); one may
+            // read back too (5e-324, ECMAScript's choice): try the one-digit neighbours, the
+            // closer to d first (ECMA-262: of several shortest, the closest)
+            int d1 = digits[first] - '0', d2 = digits[first + 1] - '0';
+            boolean upFirst = d2 > 5 || d2 == 5 && new java.math.BigDecimal(Math.abs(d))
+                .compareTo(new java.math.BigDecimal((d1 * 10 + 5) + "e" + (n - 2))) >= 0;
+            for (int attempt = 0; attempt < 2; attempt++) {
+                int c = upFirst == (attempt == 0) ? d1 + 1 : d1;
+                int cn = c == 10 ? n + 1 : n;
+                char cd = c == 10 ? '1' : (char) ('0' + c);
+                if (c > 0 && Double.parseDouble((negative ? "-" : "") + cd + "e" + (cn - 1)) == d) {
+                    digits[first] = cd;
+                    k = 1;
+                    n = cn;
+                    break;
+                }
+            }
+        }
         if (negative) sb.append('-');
         if (k <= n && n <= 21) {
             sb.append(digits, first, k);
