@@ -63,6 +63,21 @@ public final class MeshCommand implements Callable<Integer> {
     @Option(names = "--obj", paramLabel = "OUT.obj", description = "also write the welded triangles as Wavefront OBJ")
     Path obj;
 
+    /**
+     * Whether the mesh changes with --divisions: the file loaded again at other divisions gives
+     * other triangles (only Sphere, Cylinder and Cone depend on them).
+     */
+    private boolean dependsOnDivisions(TessellationWalk.Result r) {
+        int other = divisions == 3 ? 4 : 3;
+        TriangleMesh a = r.merged(), b;
+        try {
+            b = new TessellationWalk().scale(scale).run(new VrmlLoader().divisions(other).load(file).getSceneGroup()).merged();
+        } catch (RuntimeException e) {
+            return true;   // cannot tell: say nothing
+        }
+        return a.triangleCount() != b.triangleCount() || !java.util.Arrays.equals(a.vertices(), b.vertices());
+    }
+
     @Override
     public Integer call() throws IOException {
         if (divisions < 3 || divisions > 100_000) throw CliError.usage("handsim mesh: --divisions must be in 3..100000, got " + divisions);
@@ -84,6 +99,9 @@ public final class MeshCommand implements Callable<Integer> {
             throw new CliError(CliError.LOAD, file + ":1:1: " + e.getMessage(), e);
         }
         double loadMs = (System.nanoTime() - t0) / 1e6;
+        if (spec.commandLine().getParseResult().hasMatchedOption("--divisions") && !dependsOnDivisions(r)) {
+            err.println("handsim mesh: --divisions has no effect: " + file + " has no Sphere, Cylinder or Cone (a fixed mesh)");
+        }
         MeshWelder welder = new MeshWelder();
         TriangleMesh mesh = welder.weld(r.merged());
         boolean closed = mesh.isClosed();

@@ -84,6 +84,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         Path dir = out != null ? out : Path.of("out", scenario.name());
         boolean charts = scenario.writeCharts() && !noCharts;
+        if (noCharts && !scenario.writeCharts()) err.println("handsim: --no-charts has no effect: the scenario writes no charts (outputs.charts is false)");
         List<String> written = new ArrayList<>();
         Map<String, Object> summary;
         HandModel model;

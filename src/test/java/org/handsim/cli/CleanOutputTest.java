@@ -172,6 +172,25 @@ class CleanOutputTest {
         }
     }
 
+    /** An option that does nothing in context says so on standard error, and the command still runs. */
+    @Test
+    void divisionsOnAFixedMeshSayItHaveNoEffect() throws Exception {
+        Path cube = TestPaths.root().resolve("vrml/objects/cube.wrl");
+        CliTesting.Run r = CliTesting.run("mesh", cube.toString(), "--divisions", "64");
+        assertEquals(0, r.code(), r.err());
+        assertEquals("handsim mesh: --divisions has no effect: " + cube + " has no Sphere, Cylinder or Cone (a fixed mesh)", r.err());
+        assertEquals("", CliTesting.run("mesh", cube.toString()).err(), "no note without the option");
+        Path dir = Files.createTempDirectory("handsim-sphere");
+        try {
+            Path sphere = Files.writeString(dir.resolve("sphere.wrl"), "#VRML V2.0 utf8\nShape { geometry Sphere { radius 0.05 } }\n");
+            r = CliTesting.run("mesh", sphere.toString(), "--divisions", "64");
+            assertEquals(0, r.code(), r.err());
+            assertEquals("", r.err(), "a sphere depends on --divisions");
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
     /** Anything unexpected — even an OutOfMemoryError — is one line, exit 1, with the stack in a log file. */
     @Test
     void anUnexpectedErrorIsOneLineAndALogFile() throws Exception {
