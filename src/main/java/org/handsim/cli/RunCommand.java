@@ -105,7 +105,6 @@ public final class RunCommand implements Callable<Integer> {
                 throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
             }
             wall = (System.nanoTime() - t1) / 1e9;
-            if (rec != null) rec.finish();
             summary = RunSummary.of(model, wall);
             summary.put("setup_time_s", setup);
             summary.put("warnings", warnings);
@@ -128,6 +127,8 @@ public final class RunCommand implements Callable<Integer> {
                 }
             }
             chartSeconds = (System.nanoTime() - t3) / 1e9;
+            // the trace writer worked on its own thread during the run and the charts; now it completes and is renamed
+            if (rec != null) rec.finish();
             Map<String, Object> phases = new java.util.LinkedHashMap<>();
             phases.put("load_s", setup);
             phases.put("run_s", wall);

@@ -50,6 +50,7 @@ public final class Recorder implements AutoCloseable {
     private final long stride;        // a finished row r stays in memory when r % stride == 0
     private final Path target;        // null: memory only
     private RowWriter writer;         // started when the first row is finished
+    private int buffered = 2;         // rows the writer may lag behind
     private boolean finished;
     private final boolean[] moved = new boolean[3];
     private final double[] firstQ = new double[3];
@@ -69,6 +70,7 @@ public final class Recorder implements AutoCloseable {
     private Recorder(Path trace, long expectedRows) {
         this.stride = Math.max(1, expectedRows / CHART_POINTS);
         this.target = trace;
+        this.buffered = (int) Math.max(2, Math.min(expectedRows + 1, RowWriter.MAX_BUFFERED));
     }
 
     /**
@@ -117,16 +119,15 @@ public final class Recorder implements AutoCloseable {
             else if (q != firstQ[k]) moved[k] = true;
         }
         if (target != null) {
-            if (writer == null) writer = new RowWriter(target);   // the folder and the temporary file appear now
-            copyRow(r, writer.free());
-            writer.submit();
+            if (writer == null) writer = new RowWriter(target, buffered);   // the folder and the temporary file appear now
+            writer.put(this, r);
         }
         return index % stride == 0;
     }
 
-    /** Row r as {@link #WIDTH} numbers in trace.csv's column order (state as its ordinal). */
-    private void copyRow(int r, double[] to) {
-        int i = 0;
+    /** Row r as {@link #WIDTH} numbers in trace.csv's column order (state as its ordinal), into {@code to} from {@code at}. */
+    private void copyRow(int r, double[] to, int at) {
+        int i = at;
         to[i++] = time[r];
         for (int k = 0; k < 3; k++) {
             for (int c = 0; c < NF; c++) to[i++] = num[k * NF + c][r];
@@ -155,45 +156,63 @@ public final class Recorder implements AutoCloseable {
     }
 
     /**
-     * Formats and writes rows on its own thread (the run goes on on the other core): the
-     * stepping thread fills a free row buffer from a fixed pool and hands it over, so it
-     * allocates nothing and waits only when the writer is {@value #BUFFERED} rows behind.
+     * Formats and writes rows on its own thread (the run goes on on the other core). The
+     * stepping thread copies each finished row into a chunk of {@value #CHUNK} rows taken from
+     * a fixed pool and hands full chunks over (one hand-over per {@value #CHUNK} rows, so the
+     * threads rarely wake each other); it allocates nothing and waits only when the writer is a
+     * whole pool behind. The pool holds the whole run up to {@value #MAX_BUFFERED} rows
+     * (21 MB), so a run of that length never waits for its trace.
      */
     private static final class RowWriter extends Thread {
-        static final int BUFFERED = 4096;
+        static final int CHUNK = 256;
+        static final int MAX_BUFFERED = 65_536;
         private static final double[] END = new double[0];
-        private final java.util.concurrent.ArrayBlockingQueue<double[]> free = new java.util.concurrent.ArrayBlockingQueue<>(BUFFERED);
-        private final java.util.concurrent.ArrayBlockingQueue<double[]> full = new java.util.concurrent.ArrayBlockingQueue<>(BUFFERED + 1);
+        private final int chunks;
+        private final java.util.concurrent.ArrayBlockingQueue<double[]> free;
+        private final java.util.concurrent.ArrayBlockingQueue<double[]> full;
+        private final java.util.concurrent.ArrayBlockingQueue<Integer> counts;
         private final AtomicFile file;
         private double[] current;
+        private int inCurrent;
         private volatile Throwable failure;
         private volatile long nanos;
 
-        RowWriter(Path target) {
+        RowWriter(Path target, int buffered) {
             super("trace-writer");
+            this.chunks = Math.max(2, (buffered + CHUNK - 1) / CHUNK);
+            this.free = new java.util.concurrent.ArrayBlockingQueue<>(chunks);
+            this.full = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
+            this.counts = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
             setDaemon(true);
             try {
                 file = new AtomicFile(target);
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             }
-            for (int i = 0; i < BUFFERED; i++) free.add(new double[WIDTH]);
+            for (int i = 0; i < chunks; i++) free.add(new double[CHUNK * WIDTH]);
             start();
         }
 
-        double[] free() {
+        /** Copies row r of the recorder into the current chunk; hands the chunk over when full. */
+        void put(Recorder rec, int r) {
             check();
-            try {
-                current = free.take();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("interrupted while writing the trace", e);
+            if (current == null) {
+                try {
+                    current = free.take();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new IllegalStateException("interrupted while writing the trace", e);
+                }
+                inCurrent = 0;
             }
-            return current;
+            rec.copyRow(r, current, inCurrent * WIDTH);
+            if (++inCurrent == CHUNK) handOver();
         }
 
-        void submit() {
+        private void handOver() {
+            counts.add(inCurrent);
             full.add(current);
+            current = null;
         }
 
         private void check() {
@@ -205,6 +224,7 @@ public final class Recorder implements AutoCloseable {
         @Override
         public void run() {
             StringBuilder sb = new StringBuilder(512);
+            double[] row = new double[WIDTH];
             try {
                 Writer w = file.writer();
                 long t0 = System.nanoTime();
@@ -212,24 +232,29 @@ public final class Recorder implements AutoCloseable {
                 w.write('\n');
                 nanos += System.nanoTime() - t0;
                 while (true) {
-                    double[] row = full.take();
-                    if (row == END) break;
+                    double[] chunk = full.take();
+                    if (chunk == END) break;
+                    int n = counts.take();
                     t0 = System.nanoTime();
-                    format(row, sb);
-                    w.append(sb);
+                    for (int i = 0; i < n; i++) {
+                        System.arraycopy(chunk, i * WIDTH, row, 0, WIDTH);
+                        format(row, sb);
+                        w.append(sb);
+                    }
                     nanos += System.nanoTime() - t0;
-                    free.add(row);
+                    free.add(chunk);
                 }
                 w.flush();
             } catch (Throwable t) {
                 failure = t;
                 free.clear();
-                for (int i = 0; i < BUFFERED; i++) free.offer(new double[WIDTH]);   // never leave the stepping thread waiting
+                for (int i = 0; i < chunks; i++) free.offer(new double[CHUNK * WIDTH]);   // never leave the stepping thread waiting
             }
         }
 
-        /** Waits for every row, then renames the file onto its name. */
+        /** Hands over the last rows, waits for all of them, then renames the file onto its name. */
         void finish() throws IOException {
+            if (current != null && inCurrent > 0) handOver();
             full.add(END);
             try {
                 join();
@@ -342,7 +367,7 @@ public final class Recorder implements AutoCloseable {
             double[] row = new double[WIDTH];
             StringBuilder sb = new StringBuilder(512);
             for (int r = 0; r < rows; r++) {
-                copyRow(r, row);
+                copyRow(r, row, 0);
                 format(row, sb);
                 w.append(sb);
             }
