@@ -20,7 +20,7 @@ import org.handsim.util.JsonObject;
  * A simulation scenario read from JSON: where the hand and the object are, what the four
  * motors do, the step and the duration, and what to write. A bad file is a
  * {@link ScenarioException} naming the file and the field path, e.g.
- * {@code paper.json: field motors.M3[0].v_max: must be > 0, got -1.0}.
+ * {@code paper.json: field motors.M3[0].v_max: must be > 0, got -1}.
  *
  * <h2>File format</h2>
  * <pre>{@code

@@ -30,7 +30,7 @@ class ScenarioTest {
 
     @Test
     void badFieldsAreNamed() {
-        assertTrue(error(OK.replace("\"v_max\":5000", "\"v_max\":-1")).contains("field motors.M3[0].v_max: must be > 0, got -1.0"));
+        assertTrue(error(OK.replace("\"v_max\":5000", "\"v_max\":-1")).contains("field motors.M3[0].v_max: must be > 0, got -1"));
         assertTrue(error(OK.replace("\"to\":17500", "\"to\":20000")).contains("field motors.M3[0].to: must be in [0, 17500] counts"));
         assertTrue(error(OK.replace("\"dt_s\":0.001", "\"dt_s\":\"fast\"")).contains("field dt_s: must be a number"));
         assertTrue(error(OK.replace("\"dt_s\":0.001,", "")).contains("field dt_s: missing"));
