@@ -94,7 +94,11 @@ public final class RunCommand implements Callable<Integer> {
         try (Recorder rec = scenario.writeTrace() || charts
             ? Recorder.bounded(scenario.writeTrace() ? dir.resolve("trace.csv") : null, HandModel.totalSteps(scenario) + 1) : null) {
             long t0 = System.nanoTime();
-            model = Simulation.model(scenario, rec).lazy(!noLazy);
+            try {
+                model = Simulation.model(scenario, rec).lazy(!noLazy);
+            } catch (ScenarioException e) {   // the object or a hand model cannot be loaded
+                throw new CliError(CliError.LOAD, e.getMessage());
+            }
             setup = (System.nanoTime() - t0) / 1e9;
             List<String> warnings = startWarnings(model);
             for (String w : warnings) err.println("handsim: warning: " + w);
