@@ -162,13 +162,30 @@ class CleanOutputTest {
         }
         assertTrue(files.size() >= 30, "the malformed files: " + files.size());
         Path good = TestPaths.root().resolve("vrml/objects/cube.wrl");
-        for (Path f : files) {
-            for (String[] args : new String[][] {{"mesh", f.toString()}, {"collide", good.toString(), f.toString(), "--repeat", "1"}}) {
-                CliTesting.Run r = CliTesting.run(args);
-                assertEquals(3, r.code(), String.join(" ", args) + ": " + r.err());
-                assertOneLineNoStackTrace(String.join(" ", args), r.err());
-                assertTrue(r.err().startsWith(f + ":"), r.err());
+        Path dir = Files.createTempDirectory("handsim-malformed");
+        try {
+            String paper = Files.readString(Home.paperScenario());
+            for (Path f : files) {
+                // the bad file as the object of the paper's scenario: handsim run and handsim sweep
+                Path scenario = dir.resolve("s.json");
+                Files.writeString(scenario, paper.replace("../vrml/objects/cube.wrl", f.toString().replace("\\", "/")));
+                Path sweep = dir.resolve("w.json");
+                Files.writeString(sweep, "{\"name\":\"w\",\"scenarios\":[\"s.json\"]}");
+                for (String[] args : new String[][] {{"mesh", f.toString()}, {"collide", good.toString(), f.toString(), "--repeat", "1"},
+                    {"run", scenario.toString(), "--out", dir.resolve("out").toString()}}) {
+                    CliTesting.Run r = CliTesting.run(args);
+                    assertEquals(3, r.code(), String.join(" ", args) + ": " + r.err());
+                    assertOneLineNoStackTrace(String.join(" ", args), r.err());
+                    assertTrue(r.err().startsWith(f + ":"), r.err());
+                }
+                CliTesting.Run r = CliTesting.run("sweep", sweep.toString(), "--out", dir.resolve("sweep").toString());
+                assertEquals(1, r.code(), r.err());
+                assertFalse(r.err().contains("\tat ") || r.err().contains("Exception in thread"), r.err());
+                String row = Files.readAllLines(dir.resolve("sweep/summary.csv")).get(1);
+                assertTrue(row.matches("s,(paper-breakaway)?,failed,.*") && row.contains(f.getFileName().toString()), row);
             }
+        } finally {
+            ChildJvm.deleteTree(dir);
         }
     }
 
