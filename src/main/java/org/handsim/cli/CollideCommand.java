@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -85,7 +86,7 @@ public final class CollideCommand implements Callable<Integer> {
         try {
             return Integer.parseInt(text.trim());
         } catch (NumberFormatException e) {
-            throw CliError.usage("handsim: " + option + ": '" + text + "' is not an integer");
+            throw CliError.usage("handsim: " + option + ": '" + SafeText.quote(text) + "' is not an integer");
         }
     }
 

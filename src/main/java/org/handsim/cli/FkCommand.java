@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -59,7 +60,7 @@ public final class FkCommand implements Callable<Integer> {
             j = Args.numbers("--joints", joints, 3);
         } else {
             String[] p = counts.split(",", -1);
-            if (p.length < 1 || p.length > 2) throw CliError.usage("handsim: --counts needs q or q,qSpread, got '" + counts + "'");
+            if (p.length < 1 || p.length > 2) throw CliError.usage("handsim: --counts needs q or q,qSpread, got '" + SafeText.quote(counts) + "'");
             double[] q = Args.numbers("--counts", counts, p.length);
             try {
                 j = Transmission.barrettHand().joints(k, q[0], p.length == 2 ? q[1] : 0, null);

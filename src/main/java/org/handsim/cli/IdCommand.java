@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -68,7 +69,7 @@ public final class IdCommand implements Callable<Integer> {
         HandDynamics.Method m;
         if (method.equals("le")) m = HandDynamics.Method.LAGRANGE_EULER;
         else if (method.equals("ne")) m = HandDynamics.Method.NEWTON_EULER;
-        else throw CliError.usage("handsim: --method must be le or ne, got '" + method + "'");
+        else throw CliError.usage("handsim: --method must be le or ne, got '" + SafeText.quote(method) + "'");
         HandDynamics hand = HandDynamics.of(HandDescription.barrettHand(), m);
         if (input != null || output != null) return bulk(hand);
         Args.finger(finger);

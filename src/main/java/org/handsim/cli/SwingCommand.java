@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -189,7 +190,7 @@ public final class SwingCommand implements Callable<Integer> {
         try {
             return IntegratorKind.named(name).create(n, DOPRI_TOL);
         } catch (IllegalArgumentException e) {
-            throw CliError.usage("handsim: --integrator must be euler, semi-implicit, rk4 or dopri, got '" + name + "'");
+            throw CliError.usage("handsim: --integrator must be euler, semi-implicit, rk4 or dopri, got '" + SafeText.quote(name) + "'");
         }
     }
 

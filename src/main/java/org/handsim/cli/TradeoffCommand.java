@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -90,7 +91,7 @@ public final class TradeoffCommand implements Callable<Integer> {
             if (hit == null) {
                 List<String> ids = new ArrayList<>();
                 for (Study s : all) ids.add(s.id());
-                throw CliError.usage("handsim: --only: no study '" + want + "' (known: " + String.join(", ", ids) + ")");
+                throw CliError.usage("handsim: --only: no study '" + SafeText.quote(want) + "' (known: " + String.join(", ", ids) + ")");
             }
             if (!chosen.contains(hit)) chosen.add(hit);
         }
