@@ -89,6 +89,8 @@ public final class RunCommand implements Callable<Integer> {
         Map<String, Object> summary;
         HandModel model;
         double wall, setup, chartSeconds = 0;
+        List<Path> created = SwingCommand.missingDirectories(dir);   // removed again if the run fails
+        boolean ok = false;
         // memory stays flat in the number of steps: the trace streams to its file as the run
         // goes, and memory keeps only the rows the charts draw (Recorder.bounded)
         try (Recorder rec = scenario.writeTrace() || charts
@@ -133,12 +135,15 @@ public final class RunCommand implements Callable<Integer> {
             chartSeconds = (System.nanoTime() - t3) / 1e9;
             // the trace writer worked on its own thread during the run and the charts; now it completes and is renamed
             if (rec != null) rec.finish();
+            ok = true;
             Map<String, Object> phases = new java.util.LinkedHashMap<>();
             phases.put("load_s", setup);
             phases.put("run_s", wall);
             phases.put("trace_s", rec != null ? rec.writeSeconds() : 0.0);
             phases.put("charts_s", chartSeconds);
             summary.put("phase_times", phases);
+        } finally {
+            if (!ok) SwingCommand.removeEmpty(created);   // the trace's temporary file is gone (Recorder.close): leave no empty folder
         }
         AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
         written.add("summary.json");

@@ -203,13 +203,13 @@ public final class SwingCommand implements Callable<Integer> {
     }
 
     /** The folders of {@code dir} that do not exist yet, deepest first (to remove again if the run fails). */
-    private static List<Path> missingDirectories(Path dir) {
+    static List<Path> missingDirectories(Path dir) {
         List<Path> missing = new ArrayList<>();
         for (Path p = dir.toAbsolutePath(); p != null && !Files.exists(p); p = p.getParent()) missing.add(p);
         return missing;
     }
 
-    private static void removeEmpty(List<Path> created) {
+    static void removeEmpty(List<Path> created) {
         for (Path p : created) {
             try {
                 Files.deleteIfExists(p);

@@ -189,6 +189,27 @@ class CleanOutputTest {
         }
     }
 
+    /** An output folder that cannot be made: one line, exit 1, the stack in a log file; nothing left behind. */
+    @Test
+    void anOutputErrorIsOneLine() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-ioerror");
+        try {
+            Path file = Files.writeString(dir.resolve("a-file"), "x");
+            CliTesting.Run r = CliTesting.run("run", "--no-charts", "--out", file.resolve("sub").toString());
+            assertEquals(1, r.code(), r.err());
+            assertOneLineNoStackTrace("run", r.err());
+            assertTrue(r.err().startsWith("handsim: input/output error: ") && r.err().contains("Not a directory"), r.err());
+            Matcher m = Pattern.compile("\\(stack trace in (.+\\.log)\\)$").matcher(r.err());
+            assertTrue(m.find(), r.err());
+            Files.deleteIfExists(Path.of(m.group(1)));
+            try (var s = Files.list(dir)) {
+                assertEquals(1, s.count(), "only the file the test made");
+            }
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
     /** An option that does nothing in context says so on standard error, and the command still runs. */
     @Test
     void divisionsOnAFixedMeshSayItHaveNoEffect() throws Exception {
