@@ -184,12 +184,12 @@ public final class Recorder implements AutoCloseable {
             this.full = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
             this.counts = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
             setDaemon(true);
+            for (int i = 0; i < chunks; i++) free.add(new double[CHUNK * WIDTH]);   // before the file: nothing to clean up if this fails
             try {
                 file = new AtomicFile(target);
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             }
-            for (int i = 0; i < chunks; i++) free.add(new double[CHUNK * WIDTH]);
             start();
         }
 

@@ -26,17 +26,10 @@ class BoundedMemoryTest {
     static final long MB = 1L << 20;
 
     @Test
-    @SuppressWarnings("unchecked")
     void aMillionStepRunWithItsTraceFitsIn256MegabytesOfHeap() throws Exception {
         Path dir = Files.createTempDirectory("handsim-long-run");
         try {
-            Path paper = TestPaths.root().resolve("scenarios/paper-breakaway.json");
-            Map<String, Object> s = (Map<String, Object>) Json.parse(paper.toString(), Files.readString(paper));
-            s.put("name", "long-trace");
-            s.put("duration_s", 1000.0);
-            ((Map<String, Object>) s.get("object")).put("file", TestPaths.root().resolve("vrml/objects/cube.wrl").toString());
-            Path scenario = dir.resolve("long.json");
-            Files.writeString(scenario, JsonWriter.pretty(s));
+            Path scenario = longScenario(dir);
             Path out = dir.resolve("out");
             ChildJvm.Result r = ChildJvm.run(dir, "256m", 15, "run", scenario.toString(), "--out", out.toString());
             assertEquals(0, r.code(), r.err());
@@ -58,6 +51,38 @@ class BoundedMemoryTest {
             assertTrue(Files.size(out.resolve("trace.csv")) > 50 * MB, "trace of " + Files.size(out.resolve("trace.csv")) + " bytes");
             assertTrue(Files.exists(out.resolve("fig7_finger3.png")) && Files.exists(out.resolve("summary.json")));
             System.out.println("BoundedMemoryTest: 10^6 steps with trace in -Xmx256m, peak resident " + r.peakBytes() / MB + " MB");
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
+    /** The paper's experiment held for 1 000 s (10⁶ steps at dt = 1 ms). */
+    @SuppressWarnings("unchecked")
+    static Path longScenario(Path dir) throws Exception {
+        Path paper = TestPaths.root().resolve("scenarios/paper-breakaway.json");
+        Map<String, Object> s = (Map<String, Object>) Json.parse(paper.toString(), Files.readString(paper));
+        s.put("name", "long-trace");
+        s.put("duration_s", 1000.0);
+        ((Map<String, Object>) s.get("object")).put("file", TestPaths.root().resolve("vrml/objects/cube.wrl").toString());
+        return Files.writeString(dir.resolve("long.json"), JsonWriter.pretty(s));
+    }
+
+    /**
+     * Out of memory for real (a 24 MB heap: the 10⁶-step run's 21 MB trace-writer pool does not fit
+     * beside the scene): one line naming the cause and the remedy, exit 1, no output left.
+     */
+    @Test
+    void runningOutOfMemoryIsOneLineAndLeavesNothing() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-oom");
+        try {
+            Path out = dir.resolve("out");
+            ChildJvm.Result r = ChildJvm.run(dir, "24m", 5, "run", longScenario(dir).toString(), "--out", out.toString());
+            assertEquals(1, r.code(), r.err());
+            String last = r.err().substring(r.err().lastIndexOf('\n') + 1);
+            assertTrue(last.startsWith("handsim: out of memory (Java heap space): give Java more heap, e.g. HANDSIM_JAVA_OPTS=-Xmx8g"), r.err());
+            assertTrue(last.matches(".*\\(stack trace in .*handsim-logs.*\\.log\\)"), last);
+            assertTrue(!r.err().contains("\tat ") && !r.err().contains("Exception in thread"), r.err());
+            assertTrue(!Files.exists(out), "a failed run leaves no output folder");
         } finally {
             ChildJvm.deleteTree(dir);
         }

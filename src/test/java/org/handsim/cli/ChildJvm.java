@@ -49,6 +49,7 @@ public final class ChildJvm {
         cmd.add("-Xmx" + heap);
         cmd.add("-Djava.awt.headless=true");
         cmd.add("-Dj3d.rend=noop");
+        cmd.add("-Djava.io.tmpdir=" + dir.toAbsolutePath());   // its log files, if any, stay in the test's folder
         cmd.add("-Dhandsim.home=" + TestPaths.root());
         cmd.add("-cp");
         cmd.add(System.getProperty("java.class.path"));
