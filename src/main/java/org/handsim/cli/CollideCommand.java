@@ -43,7 +43,7 @@ import org.handsim.vrml.VrmlScene;
         "A's frame, metres. build_ms: both trees; query_us_median: the tree query",
         "including B's placement, once the JIT has compiled it: warm-up of at least",
         "0.5 s and 10 000 queries, then the median of --repeat timed batches of about",
-        "5 ms each (util.SteadyTiming, the scheme of gradle bench).",
+        "1 ms each (util.SteadyTiming, the scheme of gradle bench).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
@@ -64,8 +64,8 @@ public final class CollideCommand implements Callable<Integer> {
     @Option(names = "--repeat", paramLabel = "N", description = {"timed batches after the warm-up (1..10000,", "default " + DEFAULT_REPEAT + "); the median per query is reported"})
     String repeatText = String.valueOf(DEFAULT_REPEAT);
 
-    /** Timed batches by default: the median of 21 batches of about 5 ms. */
-    static final int DEFAULT_REPEAT = 21;
+    /** Timed batches by default: the median of 101 batches of about 1 ms (0.1 s after the warm-up). */
+    static final int DEFAULT_REPEAT = 101;
 
     @Override
     public Integer call() {
