@@ -19,8 +19,8 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code handsim gui}: the desktop program (Swing + Java3D), interactive or scripted. */
 @Command(name = "gui", mixinStandardHelpOptions = true,
     description = {"Opens the simulator's window (paper Fig. 5).",
-        "It has the Kinematics, Path Planning,",
-        "Dynamics and Objects panels, Play/Pause/Step/Reset, the 3D view of the hand",
+        "It has the Kinematics, Path Planning, Dynamics and Objects panels,",
+        "Play/Pause/Step/Reset, the 3D view of the hand",
         "and the object with contact points and normals (mouse: left drag orbits,",
         "wheel or middle drag zooms, right drag pans) and live joint traces.",
         "Default scenario: the paper's experiment, scenarios/paper-breakaway.json.",

@@ -26,8 +26,8 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "tradeoff", mixinStandardHelpOptions = true,
     description = {
         "Runs the speed-against-accuracy studies and charts them.",
-        "Per study it writes <id>.png,",
-        "<id>.svg and <id>.csv (header: series,setting,default,<study columns>)",
+        "Per study it writes <id>.png, <id>.svg and <id>.csv",
+        "(header: series,setting,default,<study columns>)",
         "into --out DIR (default out/tradeoff), and tradeoff.json (per study:",
         "rows, wall_time_s, files). Each chart plots cost against error on log",
         "axes, one point per setting, the Pareto front dashed, the default marked.",
