@@ -23,12 +23,12 @@ import org.junit.jupiter.api.Test;
  * command list without arguments; help that works; and output files read back with no -0, no
  * integer written as a float and no accumulated time noise.
  */
-class CleanOutputTest {
+public class CleanOutputTest {
     /** A number token of JSON or CSV text. */
     static final Pattern NUMBER = Pattern.compile("(?<![\\w.\"-])-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?(?![\\w.\"])");
 
     /** Fails on -0, on an integer written as a float (44732.0, 1.0E7), on a Java exponent (5.0E-4). */
-    static void assertCleanNumbers(String what, String text) {
+    public static void assertCleanNumbers(String what, String text) {
         Matcher m = NUMBER.matcher(text);
         int n = 0;
         while (m.find()) {
@@ -41,7 +41,7 @@ class CleanOutputTest {
         assertTrue(n > 0, what + ": no numbers found");
     }
 
-    static void assertOneLineNoStackTrace(String what, String err) {
+    public static void assertOneLineNoStackTrace(String what, String err) {
         assertFalse(err.isEmpty(), what + ": no message");
         assertEquals(1, err.split("\n", -1).length, what + ": one line: " + err);
         assertFalse(err.contains("\tat ") || err.contains("Exception in thread") || err.matches("(?s).*\\bat org\\.handsim\\..*"), what + ": " + err);
