@@ -547,6 +547,14 @@ public final class HandModel {
     public double breakawayCounts(int k) { return breakQ[k - 1]; }
     /** Motor count where finger k's inner link (first) met the object, NaN if never. */
     public double contactCounts(int k) { return contactQ[k - 1]; }
+    /**
+     * The object's centroid in the world and its characteristic length R, {cx, cy, cz, R} in
+     * metres (a new array; {@link LinkContacts#centroidAndRadius()}), or null when the scene has
+     * no object geometry.
+     */
+    public double[] objectCentroidAndRadius() {
+        return objectContacts == null ? null : objectContacts.centroidAndRadius();
+    }
     /** Work counters since {@link #initialise()}. */
     public long counter(Counter c) { return counters[c.ordinal()]; }
     public long[] counters() { return counters.clone(); }
