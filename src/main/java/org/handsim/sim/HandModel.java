@@ -1,6 +1,7 @@
 package org.handsim.sim;
 
 import org.handsim.contact.ContactForces;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
@@ -88,6 +89,9 @@ public final class HandModel {
     private boolean lazy = true;
     private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
+    private final double mu;                         // Coulomb coefficient of the contacts (0: the frictionless solve)
+    private final int coneEdges;
+    private double[] cones = new double[0];          // the contacts' friction-cone edges, 3·m per contact
 
     /** Work counters, for the savings table (issue 8). */
     public enum Counter {
@@ -106,6 +110,8 @@ public final class HandModel {
         this.objectContacts = objectContacts;
         this.dynamics = dynamics;
         this.dt = scenario.dt();
+        this.mu = scenario.friction();
+        this.coneEdges = scenario.coneEdges();
         this.totalSteps = Math.round(Math.ceil(scenario.duration() / dt - 1e-9));
         this.recorder = record ? new Recorder() : null;
         this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
@@ -396,8 +402,9 @@ public final class HandModel {
 
     /**
      * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
-     * the contact forces that carry the transmitted part (eq 11 as non-negative least squares
-     * over the flexion joints k2, k3).
+     * the contact forces that carry the transmitted part over the flexion joints k2, k3: eq (11)
+     * as non-negative least squares without friction, the least-norm forces in the friction
+     * cones with it ({@link ContactForces#solveWithFriction}, DESIGN.md).
      */
     private void torquesAndForces(int k) {
         int i = k - 1;
@@ -425,9 +432,19 @@ public final class HandModel {
         ContactSet cs = contacts[i];
         int n = cs.size();
         if (n > 0) {
-            solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            if (mu == 0) {
+                solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            } else {
+                int m = coneEdges;
+                if (cones.length < 3 * m * n) cones = new double[3 * m * Math.max(n, 2 * cones.length / (3 * m))];
+                for (int c = 0; c < n; c++) {
+                    FrictionCone.edges(cs.pushDirs[3 * c], cs.pushDirs[3 * c + 1], cs.pushDirs[3 * c + 2], mu, m, cones, 3 * m * c);
+                }
+                solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, cones, m);
+            }
             for (int c = 0; c < n; c++) {
                 cs.forces[c] = solver.force(c);
+                solver.forceVector(c, cs.forceVectors, 3 * c);
                 cs.undetermined[c] = solver.undetermined(c);
             }
         }
@@ -446,7 +463,7 @@ public final class HandModel {
         double tauK2 = 0, forceInner = 0;
         for (int j = 0; j < cs.size(); j++) {
             if (cs.links[j] != 2) continue;
-            tauK2 += solver.arm(j, 1) * cs.forces[j];
+            tauK2 += solver.jointTorque(j, 1);
             forceInner += cs.forces[j];
         }
         double qm = c.motor();
