@@ -80,6 +80,9 @@ public final class ContactForces {
     private final double[] y = new double[3], yTrial = new double[3], g = new double[3], step = new double[3];
     private final double[] hess = new double[9], tauActive = new double[3], pa = new double[3];
     private double rho;
+    private int activeCount;                         // d of the last friction solve
+    private int lastN = -1, lastM, lastD;            // what the pieces in piece[] belong to (warm start)
+    private final int[] lastJoint = new int[3];
 
     /**
      * Solves for the contact magnitudes.
@@ -202,9 +205,20 @@ public final class ContactForces {
             }
             if (used) { tauActive[d] = tau[jm]; joint[d++] = jm; }
         }
-        for (int i = 0; i < n; i++) { mag[i] = 0; piece[i] = ConeProjection.APEX; }
-        if (d == 0) return;
+        activeCount = d;
+        if (d == 0) {
+            for (int i = 0; i < n; i++) { mag[i] = 0; piece[i] = ConeProjection.APEX; }
+            lastN = -1;
+            return;
+        }
         rho = RHO * s;
+        // warm start: the pieces of the last solve (a held grasp keeps them while its torques
+        // grow). Any y with Σ T_iᵀ Π_i(T_i y) = τ is optimal (the KKT conditions of a convex
+        // problem), so if the exact solve on those pieces lands on the same pieces, it is the answer.
+        if (lastN == n && lastM == m && lastD == d && sameJoints(d) && exactOnPieces(n, m, d, cones)) {
+            finish(n);
+            return;
+        }
         // start: every contact inside its cone, y = (Σ TᵀT + ρI)⁻¹ τ
         for (int i = 0; i < n; i++) piece[i] = 2 * m;
         hessian(n, m, d, cones, piece, true);
@@ -212,7 +226,12 @@ public final class ContactForces {
         if (!org.handsim.math.Cholesky.decompose(hess, d)) java.util.Arrays.fill(y, 0, d, 0);
         else org.handsim.math.Cholesky.solve(hess, d, y);
         double phi = evaluate(y, n, m, d, cones, fvec, piece, g);
+        double tauMax = 0;
+        for (int a = 0; a < d; a++) tauMax = Math.max(tauMax, Math.abs(tauActive[a]));
         for (int it = 0; it < NEWTON_ITER; it++) {
+            double gMax = 0, yMax = 0;
+            for (int a = 0; a < d; a++) { gMax = Math.max(gMax, Math.abs(g[a])); yMax = Math.max(yMax, Math.abs(y[a])); }
+            if (gMax <= 1e-13 * (tauMax + s * yMax) + Double.MIN_NORMAL) break;     // stationary to rounding
             hessian(n, m, d, cones, piece, true);
             if (!org.handsim.math.Cholesky.decompose(hess, d)) break;
             for (int a = 0; a < d; a++) step[a] = -g[a];
@@ -239,21 +258,41 @@ public final class ContactForces {
             if (samePieces) break;                        // a full step inside one quadratic piece: its minimum
         }
         // polish: the exact torques on the final pieces, if the system is regular there
+        exactOnPieces(n, m, d, cones);
+        finish(n);
+    }
+
+    /**
+     * Solves Σ T_iᵀ DΠ_i T_i y = τ on the current pieces (no regularisation); if the system is
+     * regular and the projections at that y stay on the same pieces, takes y and its forces.
+     */
+    private boolean exactOnPieces(int n, int m, int d, double[] cones) {
         hessian(n, m, d, cones, piece, false);
-        if (org.handsim.math.Cholesky.decompose(hess, d)) {
-            for (int a = 0; a < d; a++) yTrial[a] = tauActive[a];
-            org.handsim.math.Cholesky.solve(hess, d, yTrial);
-            evaluate(yTrial, n, m, d, cones, fTrial, pieceTrial, res);
-            boolean same = true;
-            for (int i = 0; i < n && same; i++) same = pieceTrial[i] == piece[i];
-            if (same) {
-                System.arraycopy(yTrial, 0, y, 0, d);
-                System.arraycopy(fTrial, 0, fvec, 0, 3 * n);
-            }
-        }
+        if (!org.handsim.math.Cholesky.decompose(hess, d)) return false;
+        for (int a = 0; a < d; a++) yTrial[a] = tauActive[a];
+        org.handsim.math.Cholesky.solve(hess, d, yTrial);
+        evaluate(yTrial, n, m, d, cones, fTrial, pieceTrial, res);
+        for (int i = 0; i < n; i++) if (pieceTrial[i] != piece[i]) return false;
+        System.arraycopy(yTrial, 0, y, 0, d);
+        System.arraycopy(fTrial, 0, fvec, 0, 3 * n);
+        return true;
+    }
+
+    private boolean sameJoints(int d) {
+        for (int a = 0; a < d; a++) if (lastJoint[a] != joint[a]) return false;
+        return true;
+    }
+
+    /** Magnitudes, and what the next solve may warm-start from. */
+    private void finish(int n) {
         for (int i = 0; i < n; i++) {
             mag[i] = Math.sqrt(fvec[3 * i] * fvec[3 * i] + fvec[3 * i + 1] * fvec[3 * i + 1] + fvec[3 * i + 2] * fvec[3 * i + 2]);
         }
+        lastN = n;
+        lastM = edgesPerCone;
+        int d = 0;
+        while (d < 3 && d < lastJoint.length) { lastJoint[d] = joint[d]; d++; }
+        lastD = activeCount;
     }
 
     /**
@@ -311,6 +350,7 @@ public final class ContactForces {
             fvec = new double[3 * c];
             fTrial = new double[3 * c];
             piece = new int[c];
+            lastN = -1;
             pieceTrial = new int[c];
         }
         if (facetNormals.length < 3 * m * n) facetNormals = new double[Math.max(3 * m * n, 2 * facetNormals.length)];

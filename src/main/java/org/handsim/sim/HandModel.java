@@ -83,7 +83,7 @@ public final class HandModel {
     private final long[] counters = new long[Counter.values().length];
 
     // scratch (no allocation in the step)
-    private final ContactForces solver = new ContactForces();
+    private final ContactForces[] solvers = {new ContactForces(), new ContactForces(), new ContactForces()};   // per finger (warm starts)
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
     private boolean lazy = true;
@@ -91,7 +91,9 @@ public final class HandModel {
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
     private final double mu;                         // Coulomb coefficient of the contacts (0: the frictionless solve)
     private final int coneEdges;
-    private double[] cones = new double[0];          // the contacts' friction-cone edges, 3·m per contact
+    private final double[][] cones = {new double[0], new double[0], new double[0]};      // per finger: cone edges, 3·m per contact
+    private final double[][] conesFor = {new double[0], new double[0], new double[0]};   // per finger: the push directions they were made for
+    private final int[] conesCount = new int[3];
 
     /** Work counters, for the savings table (issue 8). */
     public enum Counter {
@@ -431,16 +433,12 @@ public final class HandModel {
         tau[i][2] = tauDyn[i][2] + transmitted[1];
         ContactSet cs = contacts[i];
         int n = cs.size();
+        ContactForces solver = solvers[i];
         if (n > 0) {
             if (mu == 0) {
                 solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
             } else {
-                int m = coneEdges;
-                if (cones.length < 3 * m * n) cones = new double[3 * m * Math.max(n, 2 * cones.length / (3 * m))];
-                for (int c = 0; c < n; c++) {
-                    FrictionCone.edges(cs.pushDirs[3 * c], cs.pushDirs[3 * c + 1], cs.pushDirs[3 * c + 2], mu, m, cones, 3 * m * c);
-                }
-                solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, cones, m);
+                solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
             }
             for (int c = 0; c < n; c++) {
                 cs.forces[c] = solver.force(c);
@@ -448,6 +446,28 @@ public final class HandModel {
                 cs.undetermined[c] = solver.undetermined(c);
             }
         }
+    }
+
+    /**
+     * The friction-cone edges of finger i's contacts ({@link FrictionCone}), made again only
+     * when the contacts' push directions changed (held links keep theirs for many steps).
+     */
+    private double[] conesOf(int i, ContactSet cs) {
+        int n = cs.size(), m = coneEdges;
+        boolean same = conesCount[i] == n;
+        for (int c = 0; c < 3 * n && same; c++) same = conesFor[i][c] == cs.pushDirs[c];
+        if (same) return cones[i];
+        if (cones[i].length < 3 * m * n) {
+            int cap = Math.max(n, 2 * cones[i].length / (3 * m));
+            cones[i] = new double[3 * m * cap];
+            conesFor[i] = new double[3 * cap];
+        }
+        for (int c = 0; c < n; c++) {
+            FrictionCone.edges(cs.pushDirs[3 * c], cs.pushDirs[3 * c + 1], cs.pushDirs[3 * c + 2], mu, m, cones[i], 3 * m * c);
+        }
+        System.arraycopy(cs.pushDirs, 0, conesFor[i], 0, 3 * n);
+        conesCount[i] = n;
+        return cones[i];
     }
 
     /**
@@ -463,7 +483,7 @@ public final class HandModel {
         double tauK2 = 0, forceInner = 0;
         for (int j = 0; j < cs.size(); j++) {
             if (cs.links[j] != 2) continue;
-            tauK2 += solver.jointTorque(j, 1);
+            tauK2 += solvers[i].jointTorque(j, 1);
             forceInner += cs.forces[j];
         }
         double qm = c.motor();
