@@ -558,6 +558,10 @@ public final class HandModel {
     public long totalSteps() { return totalSteps; }
     public Recorder recorder() { return recorder; }
     public ClutchState state(int k) { return clutch[k - 1].state(); }
+    /** Whether finger k's clutch still couples its inner link to the motor ({@link FingerClutch#engaged()}). */
+    public boolean clutchEngaged(int k) { return clutch[k - 1].engaged(); }
+    /** The hand's description (the BarrettHand). */
+    public HandDescription hand() { return hand; }
     /** Joint angles of finger k (a new array, radians). */
     public double[] joints(int k) { return q[k - 1].clone(); }
     /** Joint velocities of finger k (a new array, rad/s). */
