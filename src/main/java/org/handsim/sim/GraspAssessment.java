@@ -62,7 +62,8 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
             ContactSet cs = model.contacts(k);
             for (int i = 0; i < cs.size(); i++) {
                 double[] n = cs.normal(i);
-                contacts.add(new Contact(k, cs.link(i), cs.point(i), new double[] {-n[0], -n[1], -n[2]}, cs.forceVector(i)));
+                // into the object: 0 − n, which turns a zero component into +0, not −0
+                contacts.add(new Contact(k, cs.link(i), cs.point(i), new double[] {0.0 - n[0], 0.0 - n[1], 0.0 - n[2]}, cs.forceVector(i)));
             }
         }
         int n = contacts.size();
