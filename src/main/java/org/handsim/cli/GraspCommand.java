@@ -119,8 +119,9 @@ public final class GraspCommand implements Callable<Integer> {
 
     private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
         double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
-        ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, "Grasp quality and hold against time (" + name + ", μ = "
-            + model.scenario().friction() + ")"), base, 900, 500);
+        ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
+            "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "
+            + model.scenario().coneEdges() + " cone edges)"), base, 900, 650);
         try (AtomicFile f = new AtomicFile(Path.of(base + ".csv"))) {
             Writer w = f.writer();
             w.write(CHART_HEADER);

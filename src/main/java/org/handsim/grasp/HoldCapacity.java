@@ -68,6 +68,10 @@ public final class HoldCapacity {
     private final List<double[]> joints = new ArrayList<>();      // {zx, zy, zz, ox, oy, oz, L}
     private final List<double[]> contacts = new ArrayList<>();    // {px, py, pz, nx, ny, nz}
     private final List<int[]> loads = new ArrayList<>();          // the joints each contact loads
+    // the LP's coefficients, made at the first hold() after the last change (null: to be made)
+    private double[] coneEdges;
+    private double[][] balance, torquePerEdge;
+    private boolean[] jointUsed;
 
     /**
      * @param mu     Coulomb coefficient μ ≥ 0 of every contact
@@ -100,6 +104,7 @@ public final class HoldCapacity {
         double l = Math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
         if (!(l > 0) || !finite(axis) || !finite(origin)) throw new IllegalArgumentException("joint axis and origin must be finite, the axis non-zero");
         joints.add(new double[] {axis[0] / l, axis[1] / l, axis[2] / l, origin[0], origin[1], origin[2], limitNm});
+        coneEdges = null;
         return joints.size() - 1;
     }
 
@@ -114,6 +119,7 @@ public final class HoldCapacity {
         }
         contacts.add(new double[] {point[0], point[1], point[2], normal[0], normal[1], normal[2]});
         loads.add(jointIndices.clone());
+        coneEdges = null;
     }
 
     /** @return the number of contacts added */
@@ -133,63 +139,28 @@ public final class HoldCapacity {
     public Result hold(double[] direction) {
         double dl = Math.sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
         if (!(dl > 0) || !finite(direction)) throw new IllegalArgumentException("load direction must be a finite non-zero vector");
-        int n = contacts.size(), nj = joints.size();
+        int n = contacts.size(), nj = joints.size(), m = edges;
         if (n == 0) return new Result(0, Outcome.NO_CONTACTS, new double[0], new double[nj]);
-        double[] dir = {direction[0] / dl, direction[1] / dl, direction[2] / dl};
-        int m = edges;
-        double[] e = new double[3 * m * n];
-        for (int i = 0; i < n; i++) {
-            double[] c = contacts.get(i);
-            FrictionCone.edges(c[3], c[4], c[5], mu, m, e, 3 * m * i);
-        }
+        if (coneEdges == null) coefficients();
+        // a new model per direction: ojAlgo's presolve changes a model it has solved, so one
+        // model re-solved with the load's coefficients changed gives wrong answers (tried)
         ExpressionsBasedModel model = new ExpressionsBasedModel();
         Variable load = model.addVariable("F").lower(0).upper(capN).weight(1);
         Variable[] lambda = new Variable[n * m];
         for (int v = 0; v < n * m; v++) lambda[v] = model.addVariable("l" + v).lower(0);
-        // balance: 3 force rows, 3 torque rows (/R)
-        Expression[] rows = new Expression[6];
-        for (int r = 0; r < 6; r++) rows[r] = model.addExpression("balance" + r).level(0);
-        for (int r = 0; r < 3; r++) rows[r].set(load, dir[r]);
-        for (int i = 0; i < n; i++) {
-            double[] c = contacts.get(i);
-            double rx = c[0] - center[0], ry = c[1] - center[1], rz = c[2] - center[2];
-            for (int k = 0; k < m; k++) {
-                int o = 3 * m * i + 3 * k;
-                double fx = e[o], fy = e[o + 1], fz = e[o + 2];
-                Variable v = lambda[i * m + k];
-                rows[0].set(v, fx);
-                rows[1].set(v, fy);
-                rows[2].set(v, fz);
-                rows[3].set(v, (ry * fz - rz * fy) / radius);
-                rows[4].set(v, (rz * fx - rx * fz) / radius);
-                rows[5].set(v, (rx * fy - ry * fx) / radius);
-            }
+        for (int r = 0; r < 6; r++) {
+            Expression row = model.addExpression("balance" + r).level(0);
+            if (r < 3) row.set(load, direction[r] / dl);
+            for (int v = 0; v < n * m; v++) if (balance[r][v] != 0) row.set(lambda[v], balance[r][v]);
         }
-        // joint limits
-        double[][] torquePerEdge = new double[nj][];
         for (int j = 0; j < nj; j++) {
-            double[] jt = joints.get(j);
-            double[] coeff = new double[n * m];
-            boolean used = false;
-            for (int i = 0; i < n; i++) {
-                if (!contains(loads.get(i), j)) continue;
-                double[] c = contacts.get(i);
-                double rx = c[0] - jt[3], ry = c[1] - jt[4], rz = c[2] - jt[5];
-                double tx = jt[1] * rz - jt[2] * ry, ty = jt[2] * rx - jt[0] * rz, tz = jt[0] * ry - jt[1] * rx;
-                for (int k = 0; k < m; k++) {
-                    int o = 3 * m * i + 3 * k;
-                    coeff[i * m + k] = tx * e[o] + ty * e[o + 1] + tz * e[o + 2];
-                    used |= coeff[i * m + k] != 0;
-                }
-            }
-            torquePerEdge[j] = coeff;
-            if (!used) continue;
-            Expression row = model.addExpression("joint" + j).lower(-jt[6]).upper(jt[6]);
-            for (int v = 0; v < n * m; v++) if (coeff[v] != 0) row.set(lambda[v], coeff[v]);
+            if (!jointUsed[j]) continue;
+            double lim = joints.get(j)[6];
+            Expression row = model.addExpression("joint" + j).lower(-lim).upper(lim);
+            for (int v = 0; v < n * m; v++) if (torquePerEdge[j][v] != 0) row.set(lambda[v], torquePerEdge[j][v]);
         }
         Optimisation.Result r = model.maximise();
-        Optimisation.State state = r.getState();
-        if (!state.isOptimal()) return new Result(0, Outcome.SOLVER_FAILED, new double[3 * n], new double[nj]);
+        if (!r.getState().isOptimal()) return new Result(0, Outcome.SOLVER_FAILED, new double[3 * n], new double[nj]);
         double f = Math.max(0, Math.min(capN, load.getValue().doubleValue()));
         double[] forces = new double[3 * n];
         double[] w = new double[n * m];
@@ -197,13 +168,58 @@ public final class HoldCapacity {
         for (int i = 0; i < n; i++) {
             for (int k = 0; k < m; k++) {
                 int o = 3 * m * i + 3 * k;
-                for (int c = 0; c < 3; c++) forces[3 * i + c] += w[i * m + k] * e[o + c];
+                for (int c = 0; c < 3; c++) forces[3 * i + c] += w[i * m + k] * coneEdges[o + c];
             }
         }
         double[] torques = new double[nj];
         for (int j = 0; j < nj; j++) for (int v = 0; v < n * m; v++) torques[j] += torquePerEdge[j][v] * w[v];
         Outcome outcome = f >= capN * (1 - 1e-9) ? Outcome.CAPPED : Outcome.HELD;
         return new Result(f, outcome, forces, torques);
+    }
+
+    /**
+     * The LP's coefficients, which do not depend on the load's direction: the cone edges, the
+     * balance rows (force; torque about c divided by R) and each joint's torque per edge weight.
+     */
+    private void coefficients() {
+        int n = contacts.size(), nj = joints.size(), m = edges;
+        double[] e = new double[3 * m * n];
+        for (int i = 0; i < n; i++) {
+            double[] c = contacts.get(i);
+            FrictionCone.edges(c[3], c[4], c[5], mu, m, e, 3 * m * i);
+        }
+        balance = new double[6][n * m];
+        for (int i = 0; i < n; i++) {
+            double[] c = contacts.get(i);
+            double rx = c[0] - center[0], ry = c[1] - center[1], rz = c[2] - center[2];
+            for (int k = 0; k < m; k++) {
+                int o = 3 * m * i + 3 * k, v = i * m + k;
+                double fx = e[o], fy = e[o + 1], fz = e[o + 2];
+                balance[0][v] = fx;
+                balance[1][v] = fy;
+                balance[2][v] = fz;
+                balance[3][v] = (ry * fz - rz * fy) / radius;
+                balance[4][v] = (rz * fx - rx * fz) / radius;
+                balance[5][v] = (rx * fy - ry * fx) / radius;
+            }
+        }
+        torquePerEdge = new double[nj][n * m];
+        jointUsed = new boolean[nj];
+        for (int j = 0; j < nj; j++) {
+            double[] jt = joints.get(j);
+            for (int i = 0; i < n; i++) {
+                if (!contains(loads.get(i), j)) continue;
+                double[] c = contacts.get(i);
+                double rx = c[0] - jt[3], ry = c[1] - jt[4], rz = c[2] - jt[5];
+                double tx = jt[1] * rz - jt[2] * ry, ty = jt[2] * rx - jt[0] * rz, tz = jt[0] * ry - jt[1] * rx;
+                for (int k = 0; k < m; k++) {
+                    int o = 3 * m * i + 3 * k;
+                    torquePerEdge[j][i * m + k] = tx * e[o] + ty * e[o + 1] + tz * e[o + 2];
+                    jointUsed[j] |= torquePerEdge[j][i * m + k] != 0;
+                }
+            }
+        }
+        coneEdges = e;
     }
 
     private static boolean contains(int[] a, int x) {

@@ -89,7 +89,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
      * the z axis of the DH frame before it (world frame, {@link HandModel#framesWorld}), and each
      * contact loading the joints of its link's chain.
      */
-    static HoldCapacity hold(HandModel model, List<Contact> contacts, double mu, int edges, double[] c, double r) {
+    public static HoldCapacity hold(HandModel model, List<Contact> contacts, double mu, int edges, double[] c, double r) {
         HandDescription hand = model.hand();
         HoldCapacity hc = new HoldCapacity(mu, edges, c, r, hand.handRatingN());
         int[][] joint = new int[3][3];
