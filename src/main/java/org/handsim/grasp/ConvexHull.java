@@ -50,6 +50,8 @@ public final class ConvexHull {
     public static final double RANK_TOLERANCE = 1e-9;
     /** τ / S: a point must be farther than τ above a facet to count as outside it. */
     public static final double DISTANCE_TOLERANCE = 1e-11;
+    /** A hyperplane found by rotation is kept when all its vertices lie within this × S of it. */
+    static final double REFIT_TOLERANCE = 1e-13;
     /** Neighbouring simplicial facets within this × S of each other's hyperplane are one facet. */
     public static final double MERGE_TOLERANCE = 1e-9;
 
@@ -75,7 +77,7 @@ public final class ConvexHull {
     private int[] outHead, furthest, gen, mark;
     private boolean[] alive;
     private int[] freeList;
-    private int freeCount, aliveCount;
+    private int freeCount, aliveCount, created;
     private int epoch;
 
     private final double[] interior;
@@ -118,7 +120,7 @@ public final class ConvexHull {
      * @throws IllegalArgumentException for a non-finite coordinate
      */
     public boolean build(double[] points, int count) {
-        if (!start(points, count)) return false;
+        if (!start(points, count, true)) return false;
         workCount = 0;
         for (int f = 0; f < highWater; f++) if (alive[f] && outHead[f] >= 0) pushWork(f);
         while (workCount > 0) {
@@ -139,9 +141,10 @@ public final class ConvexHull {
      * origin's nearest facet). The partial hull H_k after k added points is a convex polytope
      * with H_k ⊆ H. Facets sit in a min-heap by offset; take the smallest-offset facet F:
      * <ul>
-     *   <li>if some point lies above F by more than τ (its outside set, then every pending point
-     *       is checked), add the furthest such point (a Quickhull step; F is visible, so it is
-     *       replaced) and repeat;</li>
+     *   <li>if some point lies above F by more than τ (a scan of the points not yet on the hull:
+     *       this path keeps no outside sets), add the one farthest above it — the support point
+     *       in the direction of F's normal, as EPA does — by a Quickhull step (F is visible from
+     *       it, so F is replaced) and repeat;</li>
      *   <li>otherwise F's hyperplane supports the whole hull H (no point lies above it), so
      *       ε(H) ≤ b_F. If b_F &gt; 0, every facet of H_k has offset ≥ b_F &gt; 0, so the ball of
      *       radius b_F about the origin lies in H_k ⊆ H and ε(H) ≥ b_F: hence ε(H) = b_F. If
@@ -152,14 +155,14 @@ public final class ConvexHull {
      * seeded sets (GraspQualityReferenceTest, WrenchSpaceTest).
      */
     public double epsilon(double[] points, int count) {
-        if (!start(points, count)) return Double.NaN;
+        if (!start(points, count, false)) return Double.NaN;
         heap.clear();
         for (int f = 0; f < highWater; f++) if (alive[f]) heap.push(offset[f], f, gen[f]);
         while (!heap.isEmpty()) {
             int f = heap.topFacet(), g = heap.topGen();
             heap.pop();
             if (!alive[f] || gen[f] != g) continue;
-            int p = refreshOutside(f) ? furthest[f] : farthestPendingAbove(f);
+            int p = farthestPendingAbove(f);
             if (p < 0) return offset[f];
             addPoint(p, f);
             for (int k = 0; k < newCount; k++) {
@@ -232,6 +235,9 @@ public final class ConvexHull {
         return groups;
     }
 
+    /** Facets the last call created, the initial simplex's included (the work done). */
+    public int createdFacetCount() { return created; }
+
     /** Number of points the last call added as hull vertices (the work done). */
     public int vertexCount() {
         int c = 0;
@@ -241,14 +247,14 @@ public final class ConvexHull {
 
     // ------------------------------------------------------------------ set-up
 
-    private boolean start(double[] points, int count) {
+    private boolean start(double[] points, int count, boolean partition) {
         if (count < 0 || points.length < count * d) {
             throw new IllegalArgumentException("need " + d + "*count = " + d * count + " coordinates, got " + points.length);
         }
         pts = points;
         n = count;
         full = false;
-        highWater = 0; freeCount = 0; aliveCount = 0;
+        highWater = 0; freeCount = 0; aliveCount = 0; created = 0;
         scale = 0;
         for (int i = 0; i < n * d; i++) {
             double a = Math.abs(points[i]);
@@ -260,6 +266,13 @@ public final class ConvexHull {
             pointState = new byte[n];
             pointNext = new int[n];
             resid = new double[n * d];
+            int old = hashA.length;
+            hashA = Arrays.copyOf(hashA, n);
+            hashB = Arrays.copyOf(hashB, n);
+            for (int i = old; i < n; i++) {
+                hashA[i] = splitMix((i + 1) * 0x9E3779B97F4A7C15L);
+                hashB[i] = splitMix((i + 1) * 0xD1B54A32D192ED03L + 0x632BE59BD9B4E019L);
+            }
         }
         Arrays.fill(pointState, 0, n, PENDING);
         if (n < d + 1 || scale == 0) return false;
@@ -284,8 +297,9 @@ public final class ConvexHull {
             hyperplane(f, -1);
         }
         for (int j = 0; j <= d; j++) pointState[simplex[j]] = VERTEX;
-        // partition every other point among the simplex's facets
-        for (int i = 0; i < n; i++) {
+        // partition every other point among the simplex's facets (the best-first path keeps no
+        // outside sets: it looks for the point farthest above the facet it takes)
+        for (int i = 0; i < n && partition; i++) {
             if (pointState[i] != PENDING) continue;
             assign(i, d + 1);
         }
@@ -372,7 +386,7 @@ public final class ConvexHull {
                 nbr[g * d + slotOfNeighbour(g, f)] = nf;
                 hnew[f * d + i] = nf;
                 mark[nf] = 0;
-                hyperplane(nf, f);
+                if (!rotatedHyperplane(nf, f, g, p)) hyperplane(nf, f);
                 pushNew(nf);
                 // remember where it came from: the visible facet f and slot i
                 work2Ensure(newCount);
@@ -381,7 +395,35 @@ public final class ConvexHull {
             }
         }
         if (newCount == 0) throw new IllegalStateException("point " + p + " sees every facet (a bug)");
-        // 3. link the new facets to each other: rotate about each (d-3)-face through the visible facets
+        // 3. link the new facets to each other across their ridges through p
+        if (!linkByHash(p)) {
+            for (int q = 0; q < newCount; q++) {
+                int nf = newFacets[q], i0 = origin[2 * q + 1];
+                for (int k = 0; k < d; k++) if (k != i0) nbr[nf * d + k] = -1;
+            }
+            linkByRotation(p, visMark);
+        }
+        // 4. partition the outside sets of the visible facets among the new facets; free them
+        for (int q = 0; q < visibleCount; q++) {
+            int f = visible[q];
+            int pt = outHead[f];
+            while (pt >= 0) {
+                int nextPt = pointNext[pt];
+                if (pointState[pt] == PENDING) assignNew(pt);
+                pt = nextPt;
+            }
+            outHead[f] = -1;
+            freeFacet(f);
+        }
+    }
+
+    /**
+     * Links the new facets by rotating about each (d−3)-face σ of the horizon through the
+     * visible facets, from one horizon ridge to the next: the two new facets on σ ∪ {p} are
+     * those of the horizon ridges that bound the same arc of visible facets around σ. Right
+     * even where rounding pinches the visible region (σ on two arcs).
+     */
+    private void linkByRotation(int p, int visMark) {
         for (int q = 0; q < newCount; q++) {
             int nf = newFacets[q], f0 = origin[2 * q], i0 = origin[2 * q + 1];
             for (int k = 0; k < d; k++) {
@@ -403,18 +445,80 @@ public final class ConvexHull {
                 }
             }
         }
-        // 4. partition the outside sets of the visible facets among the new facets; free them
-        for (int q = 0; q < visibleCount; q++) {
-            int f = visible[q];
-            int pt = outHead[f];
-            while (pt >= 0) {
-                int nextPt = pointNext[pt];
-                if (pointState[pt] == PENDING) assignNew(pt);
-                pt = nextPt;
-            }
-            outHead[f] = -1;
-            freeFacet(f);
+    }
+
+    /**
+     * Links the new facets by matching their ridges through p in a hash table keyed by the
+     * ridge's vertex set: two independent 64-bit sums of per-vertex hashes (Zobrist hashing;
+     * a false match needs both sums to collide, odds about 2^-120 per pair). False if some
+     * ridge is met more than twice (a pinched horizon) or left unmatched: then the caller links
+     * by rotation, which resolves it.
+     */
+    private boolean linkByHash(int p) {
+        int need = Math.max(16, 2 * newCount * (d - 1));
+        int size = Integer.highestOneBit(need - 1) << 1;
+        if (tableKey.length < size) {
+            tableKey = new long[size];
+            tableKey2 = new long[size];
+            tableFacet = new int[size];
+            tableSlot = new int[size];
+            tableStamp = new int[size];
         }
+        int mask = size - 1;
+        int stamp = ++tableEpoch;
+        if (stamp == 0) { Arrays.fill(tableStamp, 0); stamp = ++tableEpoch; }
+        for (int q = 0; q < newCount; q++) {
+            int nf = newFacets[q], i0 = origin[2 * q + 1], no = nf * d;
+            long total = 0, total2 = 0;
+            for (int k = 0; k < d; k++) {
+                int v = verts[no + k];
+                total += hashA[v];
+                total2 += hashB[v];
+            }
+            for (int k = 0; k < d; k++) {
+                if (k == i0) continue;
+                int v = verts[no + k];
+                long key = total - hashA[v], key2 = total2 - hashB[v];
+                int h = (int) (key ^ (key >>> 32)) & mask;
+                while (true) {
+                    if (tableStamp[h] != stamp) {
+                        tableStamp[h] = stamp;
+                        tableKey[h] = key;
+                        tableKey2[h] = key2;
+                        tableFacet[h] = nf;
+                        tableSlot[h] = k;
+                        break;
+                    }
+                    if (tableKey[h] == key && tableKey2[h] == key2) {
+                        int of = tableFacet[h];
+                        if (of < 0) return false;                       // a third facet on this ridge
+                        int os = tableSlot[h];
+                        nbr[no + k] = of;
+                        nbr[of * d + os] = nf;
+                        tableFacet[h] = -1;
+                        break;
+                    }
+                    h = (h + 1) & mask;
+                }
+            }
+        }
+        for (int q = 0; q < newCount; q++) {
+            int no = newFacets[q] * d;
+            for (int k = 0; k < d; k++) if (nbr[no + k] < 0) return false;
+        }
+        return true;
+    }
+
+    private long[] tableKey = new long[0], tableKey2 = new long[0];
+    private int[] tableFacet = new int[0], tableSlot = new int[0], tableStamp = new int[0];
+    private int tableEpoch;
+    /** Two independent 64-bit hashes of each point index (SplitMix64 outputs). */
+    private long[] hashA = new long[0], hashB = new long[0];
+
+    private static long splitMix(long z) {
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
     }
 
     private void work2Ensure(int count) {
@@ -444,28 +548,6 @@ public final class ConvexHull {
         pointNext[i] = outHead[f];
         outHead[f] = i;
         if (pointNext[i] < 0 || dist > furthestDist[f]) { furthest[f] = i; furthestDist[f] = dist; }
-    }
-
-    /** Drops points that became vertices from f's outside set; true if any remain (furthest updated). */
-    private boolean refreshOutside(int f) {
-        int prev = -1, pt = outHead[f];
-        double best = -1;
-        int bestPt = -1;
-        while (pt >= 0) {
-            int nx = pointNext[pt];
-            if (pointState[pt] != PENDING) {
-                if (prev < 0) outHead[f] = nx; else pointNext[prev] = nx;
-            } else {
-                double dist = distance(pt, f);
-                if (dist > best) { best = dist; bestPt = pt; }
-                prev = pt;
-            }
-            pt = nx;
-        }
-        if (bestPt < 0) { outHead[f] = -1; return false; }
-        furthest[f] = bestPt;
-        furthestDist[f] = best;
-        return true;
     }
 
     /** The pending point farthest above facet f by more than τ, or −1 (then f supports the hull). */
@@ -562,6 +644,54 @@ public final class ConvexHull {
         offset[f] = b;
     }
 
+    /**
+     * The hyperplane of new facet nf (horizon ridge of visible f and hidden g, plus p) without
+     * elimination: the ridge's normal space is spanned by n_f and n_g, so the new normal is
+     * n ∝ δ_g n_f − δ_f n_g with δ the signed distances of p (then n·(p − r) = 0 for a ridge
+     * point r); O(d) instead of O(d³). Accepted only if every vertex lies within
+     * {@link #REFIT_TOLERANCE} × S of the result — the accuracy Gaussian elimination gives —
+     * else false (nearly parallel n_f and n_g), and the caller eliminates.
+     */
+    private boolean rotatedHyperplane(int nf, int f, int g, int p) {
+        double df = distance(p, f), dg = distance(p, g);
+        int fo = f * d, go = g * d, no = nf * d;
+        double len = 0;
+        for (int c = 0; c < d; c++) {
+            double v = dg * normal[fo + c] - df * normal[go + c];
+            normal[no + c] = v;
+            len += v * v;
+        }
+        len = Math.sqrt(len);
+        if (!(len > 0)) return false;
+        double inv = 1 / len;
+        for (int c = 0; c < d; c++) normal[no + c] *= inv;
+        return fitOffset(nf);
+    }
+
+    /** Sets the offset of f from its normal (mean over the vertices, oriented out); false if a vertex is off by more than REFIT_TOLERANCE·S. */
+    private boolean fitOffset(int f) {
+        int fo = f * d;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY, b = 0;
+        for (int r = 0; r < d; r++) {
+            int v = verts[fo + r] * d;
+            double s = 0;
+            for (int c = 0; c < d; c++) s += normal[fo + c] * pts[v + c];
+            b += s;
+            if (s < lo) lo = s;
+            if (s > hi) hi = s;
+        }
+        if (hi - lo > REFIT_TOLERANCE * scale) return false;
+        b /= d;
+        double bi = 0;
+        for (int c = 0; c < d; c++) bi += normal[fo + c] * interior[c];
+        if (bi > b) {
+            for (int c = 0; c < d; c++) normal[fo + c] = -normal[fo + c];
+            b = -b;
+        }
+        offset[f] = b;
+        return true;
+    }
+
     /** Determinant of the n×n matrix a (row-major, destroyed), Gaussian elimination with partial pivoting. */
     private static double determinant(double[] a, int n) {
         double det = 1;
@@ -599,6 +729,7 @@ public final class ConvexHull {
         }
         alive[f] = true;
         gen[f]++;
+        created++;
         outHead[f] = -1;
         furthest[f] = -1;
         furthestDist[f] = 0;

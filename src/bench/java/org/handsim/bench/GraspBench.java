@@ -1,0 +1,149 @@
+package org.handsim.bench;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import org.handsim.grasp.FrictionCone;
+import org.handsim.grasp.GraspQuality;
+import org.handsim.grasp.GraspWrenches;
+import org.handsim.grasp.WrenchSpace;
+
+/**
+ * Suite "grasp": the grasp wrench space's quality for 3, 6 and 12 contacts × 8 cone edges
+ * (μ = 0.5), the whole hull ({@link WrenchSpace#quality}: hull, ε, volume, facets) and ε with
+ * force closure alone ({@link WrenchSpace#epsilon}), side by side with qhull through SciPy on
+ * the SAME wrenches in the same run. Contacts: fingertip-like contacts on a mug-sized cylinder
+ * (radius 40 mm, height 100 mm; c its centre, R its centre-to-rim distance), spread round it
+ * at roughly even azimuths with random heights and normals tilted up to ~0.2 rad, 8 seeded sets
+ * per size, cycled. The wrenches go to {@code build/bench/grasp-NxM.csv}; then
+ * {@code tools/grasp/qhull_bench.py} times qhull on them (options QJ, the issue's anchor and
+ * GraspIt!'s, and Qt Qx, the reference tests') if a python3 with scipy is found
+ * ({@code HANDSIM_PYTHON}, {@code ~/.cache/handsim-py/bin/python}, or {@code python3}); else the
+ * command is printed. Anchor (issue 12): qhull 1.6 / 8 / 31 ms; goals: whole quality ≤ qhull,
+ * ε and force closure ≤ qhull / 20.
+ */
+final class GraspBench implements BenchMain.Suite {
+    static final int[] CONTACTS = {3, 6, 12};
+    static final int EDGES = FrictionCone.DEFAULT_EDGES, SETS = 8;
+    static final double MU = FrictionCone.DEFAULT_MU, RADIUS = 0.04, HALF_HEIGHT = 0.05;
+
+    @Override
+    public void run() throws Exception {
+        Path dir = Path.of(System.getProperty("handsim.root", ".")).resolve("build/bench");
+        Files.createDirectories(dir);
+        Map<Integer, Double> whole = new LinkedHashMap<>(), eps = new LinkedHashMap<>();
+        List<String> files = new ArrayList<>();
+        for (int n : CONTACTS) {
+            double[][] sets = sets(n, new Random(1000 + n));
+            int closure = 0;
+            for (double[] w : sets) {
+                GraspQuality q = WrenchSpace.quality(w, n * EDGES, n), e = WrenchSpace.epsilon(w, n * EDGES, n);
+                if (q.forceClosure() != e.forceClosure() || Math.abs(q.epsilon() - e.epsilon()) > 1e-12 * Math.max(1, q.epsilon())) {
+                    throw new IllegalStateException("epsilon paths disagree: " + q + " vs " + e);
+                }
+                if (q.forceClosure()) closure++;
+            }
+            System.out.printf(Locale.ROOT, "%d x %d wrenches: %d of %d sets in force closure%n", n, EDGES, closure, SETS);
+            int[] k = {0};
+            whole.put(n, Bench.measure(String.format(Locale.ROOT, "whole quality (hull, eps, volume, facets), %d x %d", n, EDGES), () -> {
+                double[] w = sets[k[0]++ % SETS];
+                GraspQuality q = WrenchSpace.quality(w, n * EDGES, n);
+                return q.volume() + q.facets();
+            }, 1000, 11, 50).medianMs());
+            eps.put(n, Bench.measure(String.format(Locale.ROOT, "eps + force closure only, %d x %d", n, EDGES), () -> {
+                double[] w = sets[k[0]++ % SETS];
+                return WrenchSpace.epsilon(w, n * EDGES, n).epsilon();
+            }, 1000, 11, 50).medianMs());
+            Path file = dir.resolve("grasp-" + n + "x" + EDGES + ".csv");
+            StringBuilder sb = new StringBuilder("set,fx,fy,fz,tx,ty,tz\n");
+            for (int s = 0; s < SETS; s++) {
+                for (int j = 0; j < n * EDGES; j++) {
+                    sb.append(s);
+                    for (int c = 0; c < 6; c++) sb.append(',').append(sets[s][6 * j + c]);
+                    sb.append('\n');
+                }
+            }
+            Files.writeString(file, sb.toString());
+            files.add(file.toString());
+        }
+        String python = python();
+        Path script = Path.of(System.getProperty("handsim.root", ".")).resolve("tools/grasp/qhull_bench.py");
+        List<String> cmd = new ArrayList<>(List.of(python == null ? "python3" : python, script.toString()));
+        cmd.addAll(files);
+        if (python == null) {
+            System.out.println("no python3 with scipy found: time qhull on the same wrenches with\n  " + String.join(" ", cmd));
+            return;
+        }
+        Map<String, Double> qj = new LinkedHashMap<>(), qx = new LinkedHashMap<>();
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+            for (String line; (line = r.readLine()) != null; ) {
+                System.out.println(line);
+                String[] f = line.split(" ");
+                if (f.length < 4 || !f[0].equals("qhull")) continue;
+                double ms = Double.parseDouble(f[3].substring("median_ms=".length()));
+                (f[2].equals("QJ") ? qj : qx).put(f[1], ms);
+            }
+        }
+        p.waitFor();
+        System.out.println("\n| wrenches | qhull QJ | qhull Qt Qx | whole quality | ratio to QJ | eps + closure | ratio to QJ |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|");
+        for (int i = 0; i < CONTACTS.length; i++) {
+            int n = CONTACTS[i];
+            Double a = qj.get(files.get(i)), b = qx.get(files.get(i));
+            if (a == null) continue;
+            System.out.printf(Locale.ROOT, "| %d x %d | %.3f ms | %.3f ms | %.3f ms | 1/%.1f | %.4f ms | 1/%.0f |%n", n, EDGES, a, b,
+                whole.get(n), a / whole.get(n), eps.get(n), a / eps.get(n));
+        }
+    }
+
+    /** SETS seeded contact sets of n contacts round the cylinder, as wrenches. */
+    static double[][] sets(int n, Random rnd) {
+        double[][] out = new double[SETS][];
+        double[] c = {0, 0, 0};
+        double r = Math.sqrt(RADIUS * RADIUS + HALF_HEIGHT * HALF_HEIGHT);
+        for (int s = 0; s < SETS; s++) {
+            double[] pts = new double[3 * n], nrm = new double[3 * n];
+            double phase = rnd.nextDouble() * 2 * Math.PI;
+            for (int i = 0; i < n; i++) {
+                double az = phase + 2 * Math.PI * i / n + 0.3 * (rnd.nextDouble() - 0.5);
+                double z = HALF_HEIGHT * (2 * rnd.nextDouble() - 1) * 0.8;
+                pts[3 * i] = RADIUS * Math.cos(az);
+                pts[3 * i + 1] = RADIUS * Math.sin(az);
+                pts[3 * i + 2] = z;
+                nrm[3 * i] = -Math.cos(az) + 0.2 * rnd.nextGaussian();
+                nrm[3 * i + 1] = -Math.sin(az) + 0.2 * rnd.nextGaussian();
+                nrm[3 * i + 2] = 0.2 * rnd.nextGaussian();
+            }
+            out[s] = GraspWrenches.of(n, pts, nrm, MU, EDGES, c, r);
+        }
+        return out;
+    }
+
+    /** A python3 that imports scipy, or null. */
+    static String python() {
+        List<String> candidates = new ArrayList<>();
+        String env = System.getenv("HANDSIM_PYTHON");
+        if (env != null) candidates.add(env);
+        candidates.add(System.getProperty("user.home") + "/.cache/handsim-py/bin/python");
+        candidates.add("python3");
+        for (String c : candidates) {
+            try {
+                Process p = new ProcessBuilder(c, "-c", "import scipy.spatial").redirectErrorStream(true).start();
+                p.getInputStream().readAllBytes();
+                if (p.waitFor() == 0) return c;
+            } catch (java.io.IOException | InterruptedException e) {
+                // not there: try the next
+            }
+        }
+        return null;
+    }
+}
