@@ -46,8 +46,15 @@ import java.util.Arrays;
  * proof). Not thread-safe: one instance per thread.
  */
 public final class ConvexHull {
-    /** Lower-dimensional when no point is farther than this × S from the span of the chosen ones. */
-    public static final double RANK_TOLERANCE = 1e-9;
+    /**
+     * Lower-dimensional when no point is farther than this × S from the span of the chosen ones.
+     * Thinner point sets are degenerate ones blurred by rounding: their hulls are slivers whose
+     * simplicial facets have ill-determined hyperplanes (a 1e-9 S sliver gave facets that points
+     * lay 0.4 % of S above; at 1e-6 S the worst is 10 τ, at 1e-5 S below τ — measured on 200
+     * perturbed coincident and collinear grasps each), and a wrench space that thin holds
+     * nothing physically meaningful.
+     */
+    public static final double RANK_TOLERANCE = 1e-6;
     /** τ / S: a point must be farther than τ above a facet to count as outside it. */
     public static final double DISTANCE_TOLERANCE = 1e-11;
     /** A hyperplane found by rotation is kept when all its vertices lie within this × S of it. */
@@ -90,7 +97,9 @@ public final class ConvexHull {
     private final int[] perm;
     private double[] resid = new double[0];
     private final double[] basis;
-    private final int[] simplex;
+    private final int[] simplex, chosen;
+    private final double[] refit;
+    private int[] near = new int[0];
     private final FacetHeap heap = new FacetHeap();
     private int[] unionParent = new int[0];
 
@@ -105,6 +114,8 @@ public final class ConvexHull {
         perm = new int[d];
         basis = new double[d * d];
         simplex = new int[d + 1];
+        chosen = new int[d];
+        refit = new double[d];
         ensureFacets(256);
     }
 
@@ -151,26 +162,35 @@ public final class ConvexHull {
      *       b_F ≤ 0, a supporting hyperplane of H has the origin on or beyond it: the origin is
      *       not strictly inside H, no force closure.</li>
      * </ul>
-     * It ends because every step adds a point. Tested against {@link #build} on hundreds of
+     * It ends because every step adds a point. Facets whose offsets are within τ of the best
+     * final one are settled too, and every final candidate's offset is refined
+     * ({@link #minOffset()}), so this path and {@link #build} report the same ε to rounding.
+     * Tested against {@link #build} on hundreds of
      * seeded sets (GraspQualityReferenceTest, WrenchSpaceTest).
      */
     public double epsilon(double[] points, int count) {
         if (!start(points, count, false)) return Double.NaN;
         heap.clear();
         for (int f = 0; f < highWater; f++) if (alive[f]) heap.push(offset[f], f, gen[f]);
-        while (!heap.isEmpty()) {
+        double best = Double.POSITIVE_INFINITY;
+        while (!heap.isEmpty() && heap.topKey() <= best + tau) {
             int f = heap.topFacet(), g = heap.topGen();
             heap.pop();
             if (!alive[f] || gen[f] != g) continue;
             int p = farthestPendingAbove(f);
-            if (p < 0) return offset[f];
-            addPoint(p, f);
-            for (int k = 0; k < newCount; k++) {
-                int nf = newFacets[k];
-                heap.push(offset[nf], nf, gen[nf]);
+            if (p >= 0) {
+                addPoint(p, f);
+                for (int k = 0; k < newCount; k++) {
+                    int nf = newFacets[k];
+                    heap.push(offset[nf], nf, gen[nf]);
+                }
+                continue;
             }
+            best = Math.min(best, refinedOffset(f));
+            if (best <= tau) return best;          // the origin is not strictly inside: settled
         }
-        throw new IllegalStateException("best-first hull ran out of facets (a bug)");
+        if (best == Double.POSITIVE_INFINITY) throw new IllegalStateException("best-first hull ran out of facets (a bug)");
+        return best;
     }
 
     /** True if the last build or epsilon call found the points to span d dimensions. */
@@ -185,12 +205,74 @@ public final class ConvexHull {
     /** Simplicial facets of the last {@link #build} (0 when lower-dimensional). */
     public int simplicialFacetCount() { return full ? aliveCount : 0; }
 
-    /** The smallest facet offset of the last build (see {@link #epsilon}); NaN if lower-dimensional. */
+    /**
+     * The smallest facet offset of the last build (see {@link #epsilon}); NaN if
+     * lower-dimensional. The facets within τ of the smallest get their hyperplane refitted to
+     * every input point within τ of it (the vertices of the polytope's facet: a well-spread
+     * d-subset chosen by pivoted Gram–Schmidt, then elimination), so a thin simplicial facet's
+     * rounding does not decide ε; positive results are these refitted offsets.
+     */
     public double minOffset() {
         if (!full) return Double.NaN;
         double m = Double.POSITIVE_INFINITY;
         for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] < m) m = offset[f];
-        return m;
+        if (m <= tau) return m;
+        double best = Double.POSITIVE_INFINITY;
+        for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] <= m + tau) best = Math.min(best, refinedOffset(f));
+        return best;
+    }
+
+    /**
+     * Facet f's offset from a hyperplane refitted to the input points within τ of its own: d of
+     * them spread as widely as pivoted Gram–Schmidt finds, their null vector by elimination,
+     * the offset averaged over all of them. Falls back to the stored offset when f's own d
+     * vertices are all there is.
+     */
+    private double refinedOffset(int f) {
+        int fo = f * d, k = 0;
+        for (int i = 0; i < n; i++) {
+            if (Math.abs(distance(i, f)) <= tau) near[k++] = i;
+        }
+        if (k <= d) return offset[f];
+        // pivoted Gram-Schmidt inside the facet: the first point, then the farthest from the span
+        int p0 = near[0];
+        for (int j = 0; j < k; j++) {
+            int q = near[j];
+            for (int c = 0; c < d; c++) resid[j * d + c] = pts[q * d + c] - pts[p0 * d + c];
+        }
+        chosen[0] = p0;
+        for (int r = 1; r < d; r++) {
+            int bestJ = -1;
+            double bestSq = -1;
+            for (int j = 0; j < k; j++) {
+                double sq = 0;
+                for (int c = 0; c < d; c++) sq += resid[j * d + c] * resid[j * d + c];
+                if (sq > bestSq) { bestSq = sq; bestJ = j; }
+            }
+            if (!(bestSq > 0)) return offset[f];
+            chosen[r] = near[bestJ];
+            double len = Math.sqrt(bestSq);
+            for (int c = 0; c < d; c++) basis[c] = resid[bestJ * d + c] / len;
+            for (int pass = 0; pass < 2; pass++) {
+                for (int j = 0; j < k; j++) {
+                    double dot = 0;
+                    for (int c = 0; c < d; c++) dot += resid[j * d + c] * basis[c];
+                    for (int c = 0; c < d; c++) resid[j * d + c] -= dot * basis[c];
+                }
+            }
+        }
+        if (!nullVector(chosen, 0, refit, 0)) return offset[f];
+        double dir = 0;
+        for (int c = 0; c < d; c++) dir += refit[c] * normal[fo + c];
+        double b = 0;
+        for (int j = 0; j < k; j++) {
+            int q = near[j] * d;
+            double sdot = 0;
+            for (int c = 0; c < d; c++) sdot += refit[c] * pts[q + c];
+            b += sdot;
+        }
+        b /= k;
+        return dir < 0 ? -b : b;
     }
 
     /** d-dimensional volume of the last build's hull (0 when lower-dimensional). */
@@ -235,6 +317,18 @@ public final class ConvexHull {
         return groups;
     }
 
+    /** The facets of the last build as rows {n_1, .., n_d, b} (n·x ≤ b inside); for tests. */
+    double[][] facetPlanes() {
+        double[][] out = new double[full ? aliveCount : 0][];
+        int k = 0;
+        for (int f = 0; f < highWater && full; f++) {
+            if (!alive[f]) continue;
+            out[k] = Arrays.copyOf(Arrays.copyOfRange(normal, f * d, f * d + d), d + 1);
+            out[k++][d] = offset[f];
+        }
+        return out;
+    }
+
     /** Facets the last call created, the initial simplex's included (the work done). */
     public int createdFacetCount() { return created; }
 
@@ -266,6 +360,7 @@ public final class ConvexHull {
             pointState = new byte[n];
             pointNext = new int[n];
             resid = new double[n * d];
+            near = new int[n];
             int old = hashA.length;
             hashA = Arrays.copyOf(hashA, n);
             hashB = Arrays.copyOf(hashB, n);
@@ -579,54 +674,9 @@ public final class ConvexHull {
      */
     private void hyperplane(int f, int fallback) {
         int fo = f * d;
-        int v0 = verts[fo] * d;
-        int rows = d - 1;
-        for (int r = 0; r < rows; r++) {
-            int v = verts[fo + r + 1] * d;
-            for (int c = 0; c < d; c++) ge[r * d + c] = pts[v + c] - pts[v0 + c];
-        }
-        for (int c = 0; c < d; c++) perm[c] = c;
-        boolean degenerate = false;
-        for (int k = 0; k < rows; k++) {
-            int pr = k, pc = k;
-            double big = 0;
-            for (int r = k; r < rows; r++) {
-                for (int c = k; c < d; c++) {
-                    double a = Math.abs(ge[r * d + c]);
-                    if (a > big) { big = a; pr = r; pc = c; }
-                }
-            }
-            if (big == 0) { degenerate = true; break; }
-            if (pr != k) {
-                for (int c = 0; c < d; c++) { double t = ge[k * d + c]; ge[k * d + c] = ge[pr * d + c]; ge[pr * d + c] = t; }
-            }
-            if (pc != k) {
-                for (int r = 0; r < rows; r++) { double t = ge[r * d + k]; ge[r * d + k] = ge[r * d + pc]; ge[r * d + pc] = t; }
-                int t = perm[k]; perm[k] = perm[pc]; perm[pc] = t;
-            }
-            double piv = ge[k * d + k];
-            for (int r = k + 1; r < rows; r++) {
-                double fac = ge[r * d + k] / piv;
-                if (fac == 0) continue;
-                for (int c = k + 1; c < d; c++) ge[r * d + c] -= fac * ge[k * d + c];
-                ge[r * d + k] = 0;
-            }
-        }
-        if (degenerate) {
+        if (!nullVector(verts, fo, normal, fo)) {
             if (fallback < 0) throw new IllegalStateException("degenerate initial simplex (a bug)");
             System.arraycopy(normal, fallback * d, normal, fo, d);
-        } else {
-            // free column: perm[d-1] = 1; back substitution
-            gx[d - 1] = 1;
-            for (int k = rows - 1; k >= 0; k--) {
-                double s = ge[k * d + d - 1];
-                for (int c = k + 1; c < rows; c++) s += ge[k * d + c] * gx[c];
-                gx[k] = -s / ge[k * d + k];
-            }
-            double len = 0;
-            for (int c = 0; c < d; c++) len += gx[c] * gx[c];
-            len = Math.sqrt(len);
-            for (int c = 0; c < d; c++) normal[fo + perm[c]] = gx[c] / len;
         }
         double b = 0, bi = 0;
         for (int r = 0; r < d; r++) {
@@ -642,6 +692,58 @@ public final class ConvexHull {
             b = -b;
         }
         offset[f] = b;
+    }
+
+    /**
+     * The unit normal of the hyperplane through the d points {@code vertices[from..from+d-1]}:
+     * the null vector of their (d−1)×d edge matrix by Gaussian elimination with full pivoting,
+     * into {@code out[at..at+d-1]}; false if a pivot is exactly zero (degenerate points).
+     */
+    private boolean nullVector(int[] vertices, int from, double[] out, int at) {
+        int v0 = vertices[from] * d;
+        int rows = d - 1;
+        for (int r = 0; r < rows; r++) {
+            int v = vertices[from + r + 1] * d;
+            for (int c = 0; c < d; c++) ge[r * d + c] = pts[v + c] - pts[v0 + c];
+        }
+        for (int c = 0; c < d; c++) perm[c] = c;
+        for (int k = 0; k < rows; k++) {
+            int pr = k, pc = k;
+            double big = 0;
+            for (int r = k; r < rows; r++) {
+                for (int c = k; c < d; c++) {
+                    double a = Math.abs(ge[r * d + c]);
+                    if (a > big) { big = a; pr = r; pc = c; }
+                }
+            }
+            if (big == 0) return false;
+            if (pr != k) {
+                for (int c = 0; c < d; c++) { double t = ge[k * d + c]; ge[k * d + c] = ge[pr * d + c]; ge[pr * d + c] = t; }
+            }
+            if (pc != k) {
+                for (int r = 0; r < rows; r++) { double t = ge[r * d + k]; ge[r * d + k] = ge[r * d + pc]; ge[r * d + pc] = t; }
+                int t = perm[k]; perm[k] = perm[pc]; perm[pc] = t;
+            }
+            double piv = ge[k * d + k];
+            for (int r = k + 1; r < rows; r++) {
+                double fac = ge[r * d + k] / piv;
+                if (fac == 0) continue;
+                for (int c = k + 1; c < d; c++) ge[r * d + c] -= fac * ge[k * d + c];
+                ge[r * d + k] = 0;
+            }
+        }
+        // the free column perm[d-1] = 1; back substitution
+        gx[d - 1] = 1;
+        for (int k = rows - 1; k >= 0; k--) {
+            double s = ge[k * d + d - 1];
+            for (int c = k + 1; c < rows; c++) s += ge[k * d + c] * gx[c];
+            gx[k] = -s / ge[k * d + k];
+        }
+        double len = 0;
+        for (int c = 0; c < d; c++) len += gx[c] * gx[c];
+        len = Math.sqrt(len);
+        for (int c = 0; c < d; c++) out[at + perm[c]] = gx[c] / len;
+        return true;
     }
 
     /**
