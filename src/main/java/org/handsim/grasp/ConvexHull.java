@@ -93,7 +93,7 @@ public final class ConvexHull {
     /** For new facet k of the current step: the visible facet and the slot it was made from. */
     private int[] origin = new int[128];
     private int visibleCount, newCount, workCount;
-    private final double[] ge, gx, rowTmp;
+    private final double[] ge, gx;
     private final int[] perm;
     private double[] resid = new double[0];
     private final double[] basis;
@@ -110,9 +110,8 @@ public final class ConvexHull {
         interior = new double[d];
         ge = new double[d * d];
         gx = new double[d];
-        rowTmp = new double[d];
         perm = new int[d];
-        basis = new double[d * d];
+        basis = new double[d];
         simplex = new int[d + 1];
         chosen = new int[d];
         refit = new double[d];
@@ -484,7 +483,7 @@ public final class ConvexHull {
                 if (!rotatedHyperplane(nf, f, g, p)) hyperplane(nf, f);
                 pushNew(nf);
                 // remember where it came from: the visible facet f and slot i
-                work2Ensure(newCount);
+                ensureOrigin(newCount);
                 origin[2 * (newCount - 1)] = f;
                 origin[2 * (newCount - 1) + 1] = i;
             }
@@ -616,7 +615,7 @@ public final class ConvexHull {
         return z ^ (z >>> 31);
     }
 
-    private void work2Ensure(int count) {
+    private void ensureOrigin(int count) {
         if (origin.length < 2 * count) origin = Arrays.copyOf(origin, 4 * count);
     }
 
