@@ -7,6 +7,8 @@ qhull option string (QJ, as GraspIt! and the issue's anchor; and Qt Qx, the refe
 it warms up for 0.5 s, then times batches of about 50 ms cycling through the file's sets, and
 prints one line per file and option:
   qhull FILE OPTIONS median_ms=M sets=K
+and first, per set, `check FILE SET EPSILON VOLUME` (options Qt Qx), which the benchmark compares
+with its own results.
 The median is per ConvexHull call (hull, volume and facet equations: SciPy computes them all).
 `gradle bench -Ponly=grasp` runs it itself when python3 has scipy (or HANDSIM_PYTHON names one).
 """
@@ -50,6 +52,10 @@ def median_ms(sets, options, warmup=0.5, batch_s=0.05, samples=11):
 def main():
     for path in sys.argv[1:]:
         sets = load(path)
+        for i, w in enumerate(sets):   # the values, for the benchmark to compare: epsilon (0 if none) and volume
+            h = ConvexHull(w, qhull_options='Qt Qx')
+            eps = float(-h.equations[:, -1].max())
+            print(f'check {path} {i} {max(eps, 0.0)!r} {float(h.volume)!r}', flush=True)
         for options in ('QJ', 'Qt Qx'):
             print(f'qhull {path} {options.replace(" ", "_")} median_ms={median_ms(sets, options):.4f} sets={len(sets)}', flush=True)
 

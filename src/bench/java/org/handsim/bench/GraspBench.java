@@ -22,8 +22,8 @@ import org.handsim.grasp.WrenchSpace;
  * force closure alone ({@link WrenchSpace#epsilon}), side by side with qhull through SciPy on
  * the SAME wrenches in the same run. Contacts: fingertip-like contacts on a mug-sized cylinder
  * (radius 40 mm, height 100 mm; c its centre, R its centre-to-rim distance), spread round it
- * at roughly even azimuths with random heights and normals tilted up to ~0.2 rad, 8 seeded sets
- * per size, cycled. The wrenches go to {@code build/bench/grasp-NxM.csv}; then
+ * at roughly even azimuths with random heights and normals tilted by ~0.2 rad, 8 seeded sets
+ * per size in force closure, cycled. The wrenches go to {@code build/bench/grasp-NxM.csv}; then
  * {@code tools/grasp/qhull_bench.py} times qhull on them (options QJ, the issue's anchor and
  * GraspIt!'s, and Qt Qx, the reference tests') if a python3 with scipy is found
  * ({@code HANDSIM_PYTHON}, {@code ~/.cache/handsim-py/bin/python}, or {@code python3}); else the
@@ -41,8 +41,10 @@ final class GraspBench implements BenchMain.Suite {
         Files.createDirectories(dir);
         Map<Integer, Double> whole = new LinkedHashMap<>(), eps = new LinkedHashMap<>();
         List<String> files = new ArrayList<>();
+        Map<Integer, double[][]> setsBySize = new LinkedHashMap<>();
         for (int n : CONTACTS) {
             double[][] sets = sets(n, new Random(1000 + n));
+            setsBySize.put(n, sets);
             int closure = 0;
             for (double[] w : sets) {
                 GraspQuality q = WrenchSpace.quality(w, n * EDGES, n), e = WrenchSpace.epsilon(w, n * EDGES, n);
@@ -83,17 +85,29 @@ final class GraspBench implements BenchMain.Suite {
             return;
         }
         Map<String, Double> qj = new LinkedHashMap<>(), qx = new LinkedHashMap<>();
+        int checked = 0;
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
             for (String line; (line = r.readLine()) != null; ) {
                 System.out.println(line);
                 String[] f = line.split(" ");
+                if (f.length == 5 && f[0].equals("check")) {       // qhull's epsilon and volume of one set
+                    int n = CONTACTS[files.indexOf(f[1])];
+                    GraspQuality q = WrenchSpace.quality(setsBySize.get(n)[Integer.parseInt(f[2])], n * EDGES, n);
+                    double e = Double.parseDouble(f[3]), v = Double.parseDouble(f[4]);
+                    if (Math.abs(q.epsilon() - e) > 1e-9 * e || Math.abs(q.volume() - v) > 1e-9 * v) {
+                        throw new IllegalStateException("differs from qhull: " + line + " vs " + q);
+                    }
+                    checked++;
+                    continue;
+                }
                 if (f.length < 4 || !f[0].equals("qhull")) continue;
                 double ms = Double.parseDouble(f[3].substring("median_ms=".length()));
                 (f[2].equals("QJ") ? qj : qx).put(f[1], ms);
             }
         }
         p.waitFor();
+        System.out.println(checked + " sets: epsilon and volume equal qhull's (Qt Qx) to 1e-9");
         System.out.println("\n| wrenches | qhull QJ | qhull Qt Qx | whole quality | ratio to QJ | eps + closure | ratio to QJ |");
         System.out.println("|---|---:|---:|---:|---:|---:|---:|");
         for (int i = 0; i < CONTACTS.length; i++) {
@@ -105,12 +119,15 @@ final class GraspBench implements BenchMain.Suite {
         }
     }
 
-    /** SETS seeded contact sets of n contacts round the cylinder, as wrenches. */
+    /**
+     * SETS seeded contact sets of n contacts round the cylinder, as wrenches; only sets in force
+     * closure are kept (a grasp worth rating holds; without closure the ε path stops early).
+     */
     static double[][] sets(int n, Random rnd) {
         double[][] out = new double[SETS][];
         double[] c = {0, 0, 0};
         double r = Math.sqrt(RADIUS * RADIUS + HALF_HEIGHT * HALF_HEIGHT);
-        for (int s = 0; s < SETS; s++) {
+        for (int s = 0; s < SETS; ) {
             double[] pts = new double[3 * n], nrm = new double[3 * n];
             double phase = rnd.nextDouble() * 2 * Math.PI;
             for (int i = 0; i < n; i++) {
@@ -123,7 +140,8 @@ final class GraspBench implements BenchMain.Suite {
                 nrm[3 * i + 1] = -Math.sin(az) + 0.2 * rnd.nextGaussian();
                 nrm[3 * i + 2] = 0.2 * rnd.nextGaussian();
             }
-            out[s] = GraspWrenches.of(n, pts, nrm, MU, EDGES, c, r);
+            double[] w = GraspWrenches.of(n, pts, nrm, MU, EDGES, c, r);
+            if (WrenchSpace.quality(w, n * EDGES, n).forceClosure()) out[s++] = w;
         }
         return out;
     }
