@@ -28,42 +28,33 @@ import org.handsim.grasp.WrenchSpace;
  * GraspIt!'s, and Qt Qx, the reference tests') if a python3 with scipy is found
  * ({@code HANDSIM_PYTHON}, {@code ~/.cache/handsim-py/bin/python}, or {@code python3}); else the
  * command is printed. Anchor (issue 12): qhull 1.6 / 8 / 31 ms; goals: whole quality ≤ qhull,
- * ε and force closure ≤ qhull / 20.
+ * ε and force closure ≤ qhull / 20. Noise on shared cores: {@link #ROUNDS} rounds alternate our
+ * measurements and qhull's; each figure is its best round's median, and the load average is printed.
  */
 final class GraspBench implements BenchMain.Suite {
     static final int[] CONTACTS = {3, 6, 12};
     static final int EDGES = FrictionCone.DEFAULT_EDGES, SETS = 8;
     static final double MU = FrictionCone.DEFAULT_MU, RADIUS = 0.04, HALF_HEIGHT = 0.05;
 
+    /** Rounds of (ours, then qhull's) measurements; each figure is the best round's median. */
+    static final int ROUNDS = 3;
+
     @Override
     public void run() throws Exception {
-        Path dir = Path.of(System.getProperty("handsim.root", ".")).resolve("build/bench");
+        Path root = Path.of(System.getProperty("handsim.root", "."));
+        Path dir = root.resolve("build/bench");
         Files.createDirectories(dir);
-        Map<Integer, Double> whole = new LinkedHashMap<>(), eps = new LinkedHashMap<>();
         List<String> files = new ArrayList<>();
         Map<Integer, double[][]> setsBySize = new LinkedHashMap<>();
         for (int n : CONTACTS) {
             double[][] sets = sets(n, new Random(1000 + n));
             setsBySize.put(n, sets);
-            int closure = 0;
             for (double[] w : sets) {
                 GraspQuality q = WrenchSpace.quality(w, n * EDGES, n), e = WrenchSpace.epsilon(w, n * EDGES, n);
                 if (q.forceClosure() != e.forceClosure() || Math.abs(q.epsilon() - e.epsilon()) > 1e-12 * Math.max(1, q.epsilon())) {
                     throw new IllegalStateException("epsilon paths disagree: " + q + " vs " + e);
                 }
-                if (q.forceClosure()) closure++;
             }
-            System.out.printf(Locale.ROOT, "%d x %d wrenches: %d of %d sets in force closure%n", n, EDGES, closure, SETS);
-            int[] k = {0};
-            whole.put(n, Bench.measure(String.format(Locale.ROOT, "whole quality (hull, eps, volume, facets), %d x %d", n, EDGES), () -> {
-                double[] w = sets[k[0]++ % SETS];
-                GraspQuality q = WrenchSpace.quality(w, n * EDGES, n);
-                return q.volume() + q.facets();
-            }, 1000, 11, 50).medianMs());
-            eps.put(n, Bench.measure(String.format(Locale.ROOT, "eps + force closure only, %d x %d", n, EDGES), () -> {
-                double[] w = sets[k[0]++ % SETS];
-                return WrenchSpace.epsilon(w, n * EDGES, n).epsilon();
-            }, 1000, 11, 50).medianMs());
             Path file = dir.resolve("grasp-" + n + "x" + EDGES + ".csv");
             StringBuilder sb = new StringBuilder("set,fx,fy,fz,tx,ty,tz\n");
             for (int s = 0; s < SETS; s++) {
@@ -77,45 +68,74 @@ final class GraspBench implements BenchMain.Suite {
             files.add(file.toString());
         }
         String python = python();
-        Path script = Path.of(System.getProperty("handsim.root", ".")).resolve("tools/grasp/qhull_bench.py");
-        List<String> cmd = new ArrayList<>(List.of(python == null ? "python3" : python, script.toString()));
+        List<String> cmd = new ArrayList<>(List.of(python == null ? "python3" : python, root.resolve("tools/grasp/qhull_bench.py").toString()));
         cmd.addAll(files);
-        if (python == null) {
-            System.out.println("no python3 with scipy found: time qhull on the same wrenches with\n  " + String.join(" ", cmd));
-            return;
-        }
+        if (python == null) System.out.println("no python3 with scipy found: time qhull on the same wrenches with\n  " + String.join(" ", cmd));
+        Map<Integer, Double> whole = new LinkedHashMap<>(), eps = new LinkedHashMap<>();
         Map<String, Double> qj = new LinkedHashMap<>(), qx = new LinkedHashMap<>();
         int checked = 0;
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
-            for (String line; (line = r.readLine()) != null; ) {
-                System.out.println(line);
-                String[] f = line.split(" ");
-                if (f.length == 5 && f[0].equals("check")) {       // qhull's epsilon and volume of one set
-                    int n = CONTACTS[files.indexOf(f[1])];
-                    GraspQuality q = WrenchSpace.quality(setsBySize.get(n)[Integer.parseInt(f[2])], n * EDGES, n);
-                    double e = Double.parseDouble(f[3]), v = Double.parseDouble(f[4]);
-                    if (Math.abs(q.epsilon() - e) > 1e-9 * e || Math.abs(q.volume() - v) > 1e-9 * v) {
-                        throw new IllegalStateException("differs from qhull: " + line + " vs " + q);
-                    }
-                    checked++;
-                    continue;
-                }
-                if (f.length < 4 || !f[0].equals("qhull")) continue;
-                double ms = Double.parseDouble(f[3].substring("median_ms=".length()));
-                (f[2].equals("QJ") ? qj : qx).put(f[1], ms);
+        for (int round = 1; round <= ROUNDS; round++) {
+            System.out.println("round " + round + " of " + ROUNDS + " (load average " + loadAverage() + ")");
+            for (int n : CONTACTS) {
+                double[][] sets = setsBySize.get(n);
+                int[] k = {0};
+                best(whole, n, Bench.measure(String.format(Locale.ROOT, "whole quality (hull, eps, volume, facets), %d x %d", n, EDGES), () -> {
+                    double[] w = sets[k[0]++ % SETS];
+                    GraspQuality q = WrenchSpace.quality(w, n * EDGES, n);
+                    return q.volume() + q.facets();
+                }, 1000, 11, 50).medianMs());
+                best(eps, n, Bench.measure(String.format(Locale.ROOT, "eps + force closure only, %d x %d", n, EDGES), () -> {
+                    double[] w = sets[k[0]++ % SETS];
+                    return WrenchSpace.epsilon(w, n * EDGES, n).epsilon();
+                }, 1000, 11, 50).medianMs());
             }
+            if (python == null) continue;
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+                for (String line; (line = r.readLine()) != null; ) {
+                    String[] f = line.split(" ");
+                    if (f.length == 5 && f[0].equals("check")) {       // qhull's epsilon and volume of one set
+                        int n = CONTACTS[files.indexOf(f[1])];
+                        GraspQuality q = WrenchSpace.quality(setsBySize.get(n)[Integer.parseInt(f[2])], n * EDGES, n);
+                        double e = Double.parseDouble(f[3]), v = Double.parseDouble(f[4]);
+                        if (Math.abs(q.epsilon() - e) > 1e-9 * e || Math.abs(q.volume() - v) > 1e-9 * v) {
+                            throw new IllegalStateException("differs from qhull: " + line + " vs " + q);
+                        }
+                        checked++;
+                        continue;
+                    }
+                    System.out.println(line);
+                    if (f.length < 4 || !f[0].equals("qhull")) continue;
+                    double ms = Double.parseDouble(f[3].substring("median_ms=".length()));
+                    Map<String, Double> into = f[2].equals("QJ") ? qj : qx;
+                    into.merge(f[1], ms, Math::min);
+                }
+            }
+            p.waitFor();
         }
-        p.waitFor();
-        System.out.println(checked + " sets: epsilon and volume equal qhull's (Qt Qx) to 1e-9");
-        System.out.println("\n| wrenches | qhull QJ | qhull Qt Qx | whole quality | ratio to QJ | eps + closure | ratio to QJ |");
+        if (python == null) return;
+        System.out.println(checked + " set evaluations: epsilon and volume equal qhull's (Qt Qx) to 1e-9");
+        System.out.println("\nbest of " + ROUNDS + " rounds (load average now " + loadAverage() + "):");
+        System.out.println("| wrenches | qhull QJ | qhull Qt Qx | whole quality | ratio to QJ | eps + closure | ratio to QJ |");
         System.out.println("|---|---:|---:|---:|---:|---:|---:|");
         for (int i = 0; i < CONTACTS.length; i++) {
             int n = CONTACTS[i];
             Double a = qj.get(files.get(i)), b = qx.get(files.get(i));
-            if (a == null) continue;
+            if (a == null || b == null) continue;
             System.out.printf(Locale.ROOT, "| %d x %d | %.3f ms | %.3f ms | %.3f ms | 1/%.1f | %.4f ms | 1/%.0f |%n", n, EDGES, a, b,
                 whole.get(n), a / whole.get(n), eps.get(n), a / eps.get(n));
+        }
+    }
+
+    private static void best(Map<Integer, Double> into, int n, double ms) {
+        into.merge(n, ms, Math::min);
+    }
+
+    private static String loadAverage() {
+        try {
+            return Files.readString(Path.of("/proc/loadavg")).split(" ")[0];
+        } catch (java.io.IOException e) {
+            return "unknown";
         }
     }
 
