@@ -28,6 +28,7 @@ public final class HandSim implements Runnable {
         GuiCommand.class,
         TradeoffCommand.class,
         SwingCommand.class,
+        QualityCommand.class,
         GraspCommand.class
         // sub-commands register here, one line each
     );

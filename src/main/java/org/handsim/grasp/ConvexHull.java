@@ -46,10 +46,19 @@ import java.util.Arrays;
  * proof). Not thread-safe: one instance per thread.
  */
 public final class ConvexHull {
-    /** Lower-dimensional when no point is farther than this × S from the span of the chosen ones. */
-    public static final double RANK_TOLERANCE = 1e-9;
+    /**
+     * Lower-dimensional when no point is farther than this × S from the span of the chosen ones.
+     * Thinner point sets are degenerate ones blurred by rounding: their hulls are slivers whose
+     * simplicial facets have ill-determined hyperplanes (a 1e-9 S sliver gave facets that points
+     * lay 0.4 % of S above; at 1e-6 S the worst is 10 τ, at 1e-5 S below τ — measured on 200
+     * perturbed coincident and collinear grasps each), and a wrench space that thin holds
+     * nothing physically meaningful.
+     */
+    public static final double RANK_TOLERANCE = 1e-6;
     /** τ / S: a point must be farther than τ above a facet to count as outside it. */
     public static final double DISTANCE_TOLERANCE = 1e-11;
+    /** A hyperplane found by rotation is kept when all its vertices lie within this × S of it. */
+    static final double REFIT_TOLERANCE = 1e-13;
     /** Neighbouring simplicial facets within this × S of each other's hyperplane are one facet. */
     public static final double MERGE_TOLERANCE = 1e-9;
 
@@ -75,7 +84,7 @@ public final class ConvexHull {
     private int[] outHead, furthest, gen, mark;
     private boolean[] alive;
     private int[] freeList;
-    private int freeCount, aliveCount;
+    private int freeCount, aliveCount, created;
     private int epoch;
 
     private final double[] interior;
@@ -84,11 +93,13 @@ public final class ConvexHull {
     /** For new facet k of the current step: the visible facet and the slot it was made from. */
     private int[] origin = new int[128];
     private int visibleCount, newCount, workCount;
-    private final double[] ge, gx, rowTmp;
+    private final double[] ge, gx;
     private final int[] perm;
     private double[] resid = new double[0];
     private final double[] basis;
-    private final int[] simplex;
+    private final int[] simplex, chosen;
+    private final double[] refit;
+    private int[] near = new int[0];
     private final FacetHeap heap = new FacetHeap();
     private int[] unionParent = new int[0];
 
@@ -99,10 +110,11 @@ public final class ConvexHull {
         interior = new double[d];
         ge = new double[d * d];
         gx = new double[d];
-        rowTmp = new double[d];
         perm = new int[d];
-        basis = new double[d * d];
+        basis = new double[d];
         simplex = new int[d + 1];
+        chosen = new int[d];
+        refit = new double[d];
         ensureFacets(256);
     }
 
@@ -118,7 +130,7 @@ public final class ConvexHull {
      * @throws IllegalArgumentException for a non-finite coordinate
      */
     public boolean build(double[] points, int count) {
-        if (!start(points, count)) return false;
+        if (!start(points, count, true)) return false;
         workCount = 0;
         for (int f = 0; f < highWater; f++) if (alive[f] && outHead[f] >= 0) pushWork(f);
         while (workCount > 0) {
@@ -139,35 +151,45 @@ public final class ConvexHull {
      * origin's nearest facet). The partial hull H_k after k added points is a convex polytope
      * with H_k ⊆ H. Facets sit in a min-heap by offset; take the smallest-offset facet F:
      * <ul>
-     *   <li>if some point lies above F by more than τ (its outside set, then every pending point
-     *       is checked), add the furthest such point (a Quickhull step; F is visible, so it is
-     *       replaced) and repeat;</li>
+     *   <li>if some point lies above F by more than τ (a scan of the points not yet on the hull:
+     *       this path keeps no outside sets), add the one farthest above it — the support point
+     *       in the direction of F's normal, as EPA does — by a Quickhull step (F is visible from
+     *       it, so F is replaced) and repeat;</li>
      *   <li>otherwise F's hyperplane supports the whole hull H (no point lies above it), so
      *       ε(H) ≤ b_F. If b_F &gt; 0, every facet of H_k has offset ≥ b_F &gt; 0, so the ball of
      *       radius b_F about the origin lies in H_k ⊆ H and ε(H) ≥ b_F: hence ε(H) = b_F. If
      *       b_F ≤ 0, a supporting hyperplane of H has the origin on or beyond it: the origin is
      *       not strictly inside H, no force closure.</li>
      * </ul>
-     * It ends because every step adds a point. Tested against {@link #build} on hundreds of
+     * It ends because every step adds a point. Facets whose offsets are within τ of the best
+     * final one are settled too, and every final candidate's offset is refined
+     * ({@link #minOffset()}), so this path and {@link #build} report the same ε to rounding.
+     * Tested against {@link #build} on hundreds of
      * seeded sets (GraspQualityReferenceTest, WrenchSpaceTest).
      */
     public double epsilon(double[] points, int count) {
-        if (!start(points, count)) return Double.NaN;
+        if (!start(points, count, false)) return Double.NaN;
         heap.clear();
         for (int f = 0; f < highWater; f++) if (alive[f]) heap.push(offset[f], f, gen[f]);
-        while (!heap.isEmpty()) {
+        double best = Double.POSITIVE_INFINITY;
+        while (!heap.isEmpty() && heap.topKey() <= best + tau) {
             int f = heap.topFacet(), g = heap.topGen();
             heap.pop();
             if (!alive[f] || gen[f] != g) continue;
-            int p = refreshOutside(f) ? furthest[f] : farthestPendingAbove(f);
-            if (p < 0) return offset[f];
-            addPoint(p, f);
-            for (int k = 0; k < newCount; k++) {
-                int nf = newFacets[k];
-                heap.push(offset[nf], nf, gen[nf]);
+            int p = farthestPendingAbove(f);
+            if (p >= 0) {
+                addPoint(p, f);
+                for (int k = 0; k < newCount; k++) {
+                    int nf = newFacets[k];
+                    heap.push(offset[nf], nf, gen[nf]);
+                }
+                continue;
             }
+            best = Math.min(best, refinedOffset(f));
+            if (best <= tau) return best;          // the origin is not strictly inside: settled
         }
-        throw new IllegalStateException("best-first hull ran out of facets (a bug)");
+        if (best == Double.POSITIVE_INFINITY) throw new IllegalStateException("best-first hull ran out of facets (a bug)");
+        return best;
     }
 
     /** True if the last build or epsilon call found the points to span d dimensions. */
@@ -182,12 +204,74 @@ public final class ConvexHull {
     /** Simplicial facets of the last {@link #build} (0 when lower-dimensional). */
     public int simplicialFacetCount() { return full ? aliveCount : 0; }
 
-    /** The smallest facet offset of the last build (see {@link #epsilon}); NaN if lower-dimensional. */
+    /**
+     * The smallest facet offset of the last build (see {@link #epsilon}); NaN if
+     * lower-dimensional. The facets within τ of the smallest get their hyperplane refitted to
+     * every input point within τ of it (the vertices of the polytope's facet: a well-spread
+     * d-subset chosen by pivoted Gram–Schmidt, then elimination), so a thin simplicial facet's
+     * rounding does not decide ε; positive results are these refitted offsets.
+     */
     public double minOffset() {
         if (!full) return Double.NaN;
         double m = Double.POSITIVE_INFINITY;
         for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] < m) m = offset[f];
-        return m;
+        if (m <= tau) return m;
+        double best = Double.POSITIVE_INFINITY;
+        for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] <= m + tau) best = Math.min(best, refinedOffset(f));
+        return best;
+    }
+
+    /**
+     * Facet f's offset from a hyperplane refitted to the input points within τ of its own: d of
+     * them spread as widely as pivoted Gram–Schmidt finds, their null vector by elimination,
+     * the offset averaged over all of them. Falls back to the stored offset when f's own d
+     * vertices are all there is.
+     */
+    private double refinedOffset(int f) {
+        int fo = f * d, k = 0;
+        for (int i = 0; i < n; i++) {
+            if (Math.abs(distance(i, f)) <= tau) near[k++] = i;
+        }
+        if (k <= d) return offset[f];
+        // pivoted Gram-Schmidt inside the facet: the first point, then the farthest from the span
+        int p0 = near[0];
+        for (int j = 0; j < k; j++) {
+            int q = near[j];
+            for (int c = 0; c < d; c++) resid[j * d + c] = pts[q * d + c] - pts[p0 * d + c];
+        }
+        chosen[0] = p0;
+        for (int r = 1; r < d; r++) {
+            int bestJ = -1;
+            double bestSq = -1;
+            for (int j = 0; j < k; j++) {
+                double sq = 0;
+                for (int c = 0; c < d; c++) sq += resid[j * d + c] * resid[j * d + c];
+                if (sq > bestSq) { bestSq = sq; bestJ = j; }
+            }
+            if (!(bestSq > 0)) return offset[f];
+            chosen[r] = near[bestJ];
+            double len = Math.sqrt(bestSq);
+            for (int c = 0; c < d; c++) basis[c] = resid[bestJ * d + c] / len;
+            for (int pass = 0; pass < 2; pass++) {
+                for (int j = 0; j < k; j++) {
+                    double dot = 0;
+                    for (int c = 0; c < d; c++) dot += resid[j * d + c] * basis[c];
+                    for (int c = 0; c < d; c++) resid[j * d + c] -= dot * basis[c];
+                }
+            }
+        }
+        if (!nullVector(chosen, 0, refit, 0)) return offset[f];
+        double dir = 0;
+        for (int c = 0; c < d; c++) dir += refit[c] * normal[fo + c];
+        double b = 0;
+        for (int j = 0; j < k; j++) {
+            int q = near[j] * d;
+            double sdot = 0;
+            for (int c = 0; c < d; c++) sdot += refit[c] * pts[q + c];
+            b += sdot;
+        }
+        b /= k;
+        return dir < 0 ? -b : b;
     }
 
     /** d-dimensional volume of the last build's hull (0 when lower-dimensional). */
@@ -232,6 +316,21 @@ public final class ConvexHull {
         return groups;
     }
 
+    /** The facets of the last build as rows {n_1, .., n_d, b} (n·x ≤ b inside); for tests. */
+    double[][] facetPlanes() {
+        double[][] out = new double[full ? aliveCount : 0][];
+        int k = 0;
+        for (int f = 0; f < highWater && full; f++) {
+            if (!alive[f]) continue;
+            out[k] = Arrays.copyOf(Arrays.copyOfRange(normal, f * d, f * d + d), d + 1);
+            out[k++][d] = offset[f];
+        }
+        return out;
+    }
+
+    /** Facets the last call created, the initial simplex's included (the work done). */
+    public int createdFacetCount() { return created; }
+
     /** Number of points the last call added as hull vertices (the work done). */
     public int vertexCount() {
         int c = 0;
@@ -241,14 +340,14 @@ public final class ConvexHull {
 
     // ------------------------------------------------------------------ set-up
 
-    private boolean start(double[] points, int count) {
+    private boolean start(double[] points, int count, boolean partition) {
         if (count < 0 || points.length < count * d) {
             throw new IllegalArgumentException("need " + d + "*count = " + d * count + " coordinates, got " + points.length);
         }
         pts = points;
         n = count;
         full = false;
-        highWater = 0; freeCount = 0; aliveCount = 0;
+        highWater = 0; freeCount = 0; aliveCount = 0; created = 0;
         scale = 0;
         for (int i = 0; i < n * d; i++) {
             double a = Math.abs(points[i]);
@@ -260,6 +359,14 @@ public final class ConvexHull {
             pointState = new byte[n];
             pointNext = new int[n];
             resid = new double[n * d];
+            near = new int[n];
+            int old = hashA.length;
+            hashA = Arrays.copyOf(hashA, n);
+            hashB = Arrays.copyOf(hashB, n);
+            for (int i = old; i < n; i++) {
+                hashA[i] = splitMix((i + 1) * 0x9E3779B97F4A7C15L);
+                hashB[i] = splitMix((i + 1) * 0xD1B54A32D192ED03L + 0x632BE59BD9B4E019L);
+            }
         }
         Arrays.fill(pointState, 0, n, PENDING);
         if (n < d + 1 || scale == 0) return false;
@@ -284,8 +391,9 @@ public final class ConvexHull {
             hyperplane(f, -1);
         }
         for (int j = 0; j <= d; j++) pointState[simplex[j]] = VERTEX;
-        // partition every other point among the simplex's facets
-        for (int i = 0; i < n; i++) {
+        // partition every other point among the simplex's facets (the best-first path keeps no
+        // outside sets: it looks for the point farthest above the facet it takes)
+        for (int i = 0; i < n && partition; i++) {
             if (pointState[i] != PENDING) continue;
             assign(i, d + 1);
         }
@@ -372,16 +480,44 @@ public final class ConvexHull {
                 nbr[g * d + slotOfNeighbour(g, f)] = nf;
                 hnew[f * d + i] = nf;
                 mark[nf] = 0;
-                hyperplane(nf, f);
+                if (!rotatedHyperplane(nf, f, g, p)) hyperplane(nf, f);
                 pushNew(nf);
                 // remember where it came from: the visible facet f and slot i
-                work2Ensure(newCount);
+                ensureOrigin(newCount);
                 origin[2 * (newCount - 1)] = f;
                 origin[2 * (newCount - 1) + 1] = i;
             }
         }
         if (newCount == 0) throw new IllegalStateException("point " + p + " sees every facet (a bug)");
-        // 3. link the new facets to each other: rotate about each (d-3)-face through the visible facets
+        // 3. link the new facets to each other across their ridges through p
+        if (!linkByHash(p)) {
+            for (int q = 0; q < newCount; q++) {
+                int nf = newFacets[q], i0 = origin[2 * q + 1];
+                for (int k = 0; k < d; k++) if (k != i0) nbr[nf * d + k] = -1;
+            }
+            linkByRotation(p, visMark);
+        }
+        // 4. partition the outside sets of the visible facets among the new facets; free them
+        for (int q = 0; q < visibleCount; q++) {
+            int f = visible[q];
+            int pt = outHead[f];
+            while (pt >= 0) {
+                int nextPt = pointNext[pt];
+                if (pointState[pt] == PENDING) assignNew(pt);
+                pt = nextPt;
+            }
+            outHead[f] = -1;
+            freeFacet(f);
+        }
+    }
+
+    /**
+     * Links the new facets by rotating about each (d−3)-face σ of the horizon through the
+     * visible facets, from one horizon ridge to the next: the two new facets on σ ∪ {p} are
+     * those of the horizon ridges that bound the same arc of visible facets around σ. Right
+     * even where rounding pinches the visible region (σ on two arcs).
+     */
+    private void linkByRotation(int p, int visMark) {
         for (int q = 0; q < newCount; q++) {
             int nf = newFacets[q], f0 = origin[2 * q], i0 = origin[2 * q + 1];
             for (int k = 0; k < d; k++) {
@@ -403,21 +539,83 @@ public final class ConvexHull {
                 }
             }
         }
-        // 4. partition the outside sets of the visible facets among the new facets; free them
-        for (int q = 0; q < visibleCount; q++) {
-            int f = visible[q];
-            int pt = outHead[f];
-            while (pt >= 0) {
-                int nextPt = pointNext[pt];
-                if (pointState[pt] == PENDING) assignNew(pt);
-                pt = nextPt;
-            }
-            outHead[f] = -1;
-            freeFacet(f);
-        }
     }
 
-    private void work2Ensure(int count) {
+    /**
+     * Links the new facets by matching their ridges through p in a hash table keyed by the
+     * ridge's vertex set: two independent 64-bit sums of per-vertex hashes (Zobrist hashing;
+     * a false match needs both sums to collide, odds about 2^-120 per pair). False if some
+     * ridge is met more than twice (a pinched horizon) or left unmatched: then the caller links
+     * by rotation, which resolves it.
+     */
+    private boolean linkByHash(int p) {
+        int need = Math.max(16, 2 * newCount * (d - 1));
+        int size = Integer.highestOneBit(need - 1) << 1;
+        if (tableKey.length < size) {
+            tableKey = new long[size];
+            tableKey2 = new long[size];
+            tableFacet = new int[size];
+            tableSlot = new int[size];
+            tableStamp = new int[size];
+        }
+        int mask = size - 1;
+        int stamp = ++tableEpoch;
+        if (stamp == 0) { Arrays.fill(tableStamp, 0); stamp = ++tableEpoch; }
+        for (int q = 0; q < newCount; q++) {
+            int nf = newFacets[q], i0 = origin[2 * q + 1], no = nf * d;
+            long total = 0, total2 = 0;
+            for (int k = 0; k < d; k++) {
+                int v = verts[no + k];
+                total += hashA[v];
+                total2 += hashB[v];
+            }
+            for (int k = 0; k < d; k++) {
+                if (k == i0) continue;
+                int v = verts[no + k];
+                long key = total - hashA[v], key2 = total2 - hashB[v];
+                int h = (int) (key ^ (key >>> 32)) & mask;
+                while (true) {
+                    if (tableStamp[h] != stamp) {
+                        tableStamp[h] = stamp;
+                        tableKey[h] = key;
+                        tableKey2[h] = key2;
+                        tableFacet[h] = nf;
+                        tableSlot[h] = k;
+                        break;
+                    }
+                    if (tableKey[h] == key && tableKey2[h] == key2) {
+                        int of = tableFacet[h];
+                        if (of < 0) return false;                       // a third facet on this ridge
+                        int os = tableSlot[h];
+                        nbr[no + k] = of;
+                        nbr[of * d + os] = nf;
+                        tableFacet[h] = -1;
+                        break;
+                    }
+                    h = (h + 1) & mask;
+                }
+            }
+        }
+        for (int q = 0; q < newCount; q++) {
+            int no = newFacets[q] * d;
+            for (int k = 0; k < d; k++) if (nbr[no + k] < 0) return false;
+        }
+        return true;
+    }
+
+    private long[] tableKey = new long[0], tableKey2 = new long[0];
+    private int[] tableFacet = new int[0], tableSlot = new int[0], tableStamp = new int[0];
+    private int tableEpoch;
+    /** Two independent 64-bit hashes of each point index (SplitMix64 outputs). */
+    private long[] hashA = new long[0], hashB = new long[0];
+
+    private static long splitMix(long z) {
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+
+    private void ensureOrigin(int count) {
         if (origin.length < 2 * count) origin = Arrays.copyOf(origin, 4 * count);
     }
 
@@ -444,28 +642,6 @@ public final class ConvexHull {
         pointNext[i] = outHead[f];
         outHead[f] = i;
         if (pointNext[i] < 0 || dist > furthestDist[f]) { furthest[f] = i; furthestDist[f] = dist; }
-    }
-
-    /** Drops points that became vertices from f's outside set; true if any remain (furthest updated). */
-    private boolean refreshOutside(int f) {
-        int prev = -1, pt = outHead[f];
-        double best = -1;
-        int bestPt = -1;
-        while (pt >= 0) {
-            int nx = pointNext[pt];
-            if (pointState[pt] != PENDING) {
-                if (prev < 0) outHead[f] = nx; else pointNext[prev] = nx;
-            } else {
-                double dist = distance(pt, f);
-                if (dist > best) { best = dist; bestPt = pt; }
-                prev = pt;
-            }
-            pt = nx;
-        }
-        if (bestPt < 0) { outHead[f] = -1; return false; }
-        furthest[f] = bestPt;
-        furthestDist[f] = best;
-        return true;
     }
 
     /** The pending point farthest above facet f by more than τ, or −1 (then f supports the hull). */
@@ -497,54 +673,9 @@ public final class ConvexHull {
      */
     private void hyperplane(int f, int fallback) {
         int fo = f * d;
-        int v0 = verts[fo] * d;
-        int rows = d - 1;
-        for (int r = 0; r < rows; r++) {
-            int v = verts[fo + r + 1] * d;
-            for (int c = 0; c < d; c++) ge[r * d + c] = pts[v + c] - pts[v0 + c];
-        }
-        for (int c = 0; c < d; c++) perm[c] = c;
-        boolean degenerate = false;
-        for (int k = 0; k < rows; k++) {
-            int pr = k, pc = k;
-            double big = 0;
-            for (int r = k; r < rows; r++) {
-                for (int c = k; c < d; c++) {
-                    double a = Math.abs(ge[r * d + c]);
-                    if (a > big) { big = a; pr = r; pc = c; }
-                }
-            }
-            if (big == 0) { degenerate = true; break; }
-            if (pr != k) {
-                for (int c = 0; c < d; c++) { double t = ge[k * d + c]; ge[k * d + c] = ge[pr * d + c]; ge[pr * d + c] = t; }
-            }
-            if (pc != k) {
-                for (int r = 0; r < rows; r++) { double t = ge[r * d + k]; ge[r * d + k] = ge[r * d + pc]; ge[r * d + pc] = t; }
-                int t = perm[k]; perm[k] = perm[pc]; perm[pc] = t;
-            }
-            double piv = ge[k * d + k];
-            for (int r = k + 1; r < rows; r++) {
-                double fac = ge[r * d + k] / piv;
-                if (fac == 0) continue;
-                for (int c = k + 1; c < d; c++) ge[r * d + c] -= fac * ge[k * d + c];
-                ge[r * d + k] = 0;
-            }
-        }
-        if (degenerate) {
+        if (!nullVector(verts, fo, normal, fo)) {
             if (fallback < 0) throw new IllegalStateException("degenerate initial simplex (a bug)");
             System.arraycopy(normal, fallback * d, normal, fo, d);
-        } else {
-            // free column: perm[d-1] = 1; back substitution
-            gx[d - 1] = 1;
-            for (int k = rows - 1; k >= 0; k--) {
-                double s = ge[k * d + d - 1];
-                for (int c = k + 1; c < rows; c++) s += ge[k * d + c] * gx[c];
-                gx[k] = -s / ge[k * d + k];
-            }
-            double len = 0;
-            for (int c = 0; c < d; c++) len += gx[c] * gx[c];
-            len = Math.sqrt(len);
-            for (int c = 0; c < d; c++) normal[fo + perm[c]] = gx[c] / len;
         }
         double b = 0, bi = 0;
         for (int r = 0; r < d; r++) {
@@ -560,6 +691,106 @@ public final class ConvexHull {
             b = -b;
         }
         offset[f] = b;
+    }
+
+    /**
+     * The unit normal of the hyperplane through the d points {@code vertices[from..from+d-1]}:
+     * the null vector of their (d−1)×d edge matrix by Gaussian elimination with full pivoting,
+     * into {@code out[at..at+d-1]}; false if a pivot is exactly zero (degenerate points).
+     */
+    private boolean nullVector(int[] vertices, int from, double[] out, int at) {
+        int v0 = vertices[from] * d;
+        int rows = d - 1;
+        for (int r = 0; r < rows; r++) {
+            int v = vertices[from + r + 1] * d;
+            for (int c = 0; c < d; c++) ge[r * d + c] = pts[v + c] - pts[v0 + c];
+        }
+        for (int c = 0; c < d; c++) perm[c] = c;
+        for (int k = 0; k < rows; k++) {
+            int pr = k, pc = k;
+            double big = 0;
+            for (int r = k; r < rows; r++) {
+                for (int c = k; c < d; c++) {
+                    double a = Math.abs(ge[r * d + c]);
+                    if (a > big) { big = a; pr = r; pc = c; }
+                }
+            }
+            if (big == 0) return false;
+            if (pr != k) {
+                for (int c = 0; c < d; c++) { double t = ge[k * d + c]; ge[k * d + c] = ge[pr * d + c]; ge[pr * d + c] = t; }
+            }
+            if (pc != k) {
+                for (int r = 0; r < rows; r++) { double t = ge[r * d + k]; ge[r * d + k] = ge[r * d + pc]; ge[r * d + pc] = t; }
+                int t = perm[k]; perm[k] = perm[pc]; perm[pc] = t;
+            }
+            double piv = ge[k * d + k];
+            for (int r = k + 1; r < rows; r++) {
+                double fac = ge[r * d + k] / piv;
+                if (fac == 0) continue;
+                for (int c = k + 1; c < d; c++) ge[r * d + c] -= fac * ge[k * d + c];
+                ge[r * d + k] = 0;
+            }
+        }
+        // the free column perm[d-1] = 1; back substitution
+        gx[d - 1] = 1;
+        for (int k = rows - 1; k >= 0; k--) {
+            double s = ge[k * d + d - 1];
+            for (int c = k + 1; c < rows; c++) s += ge[k * d + c] * gx[c];
+            gx[k] = -s / ge[k * d + k];
+        }
+        double len = 0;
+        for (int c = 0; c < d; c++) len += gx[c] * gx[c];
+        len = Math.sqrt(len);
+        for (int c = 0; c < d; c++) out[at + perm[c]] = gx[c] / len;
+        return true;
+    }
+
+    /**
+     * The hyperplane of new facet nf (horizon ridge of visible f and hidden g, plus p) without
+     * elimination: the ridge's normal space is spanned by n_f and n_g, so the new normal is
+     * n ∝ δ_g n_f − δ_f n_g with δ the signed distances of p (then n·(p − r) = 0 for a ridge
+     * point r); O(d) instead of O(d³). Accepted only if every vertex lies within
+     * {@link #REFIT_TOLERANCE} × S of the result — the accuracy Gaussian elimination gives —
+     * else false (nearly parallel n_f and n_g), and the caller eliminates.
+     */
+    private boolean rotatedHyperplane(int nf, int f, int g, int p) {
+        double df = distance(p, f), dg = distance(p, g);
+        int fo = f * d, go = g * d, no = nf * d;
+        double len = 0;
+        for (int c = 0; c < d; c++) {
+            double v = dg * normal[fo + c] - df * normal[go + c];
+            normal[no + c] = v;
+            len += v * v;
+        }
+        len = Math.sqrt(len);
+        if (!(len > 0)) return false;
+        double inv = 1 / len;
+        for (int c = 0; c < d; c++) normal[no + c] *= inv;
+        return fitOffset(nf);
+    }
+
+    /** Sets the offset of f from its normal (mean over the vertices, oriented out); false if a vertex is off by more than REFIT_TOLERANCE·S. */
+    private boolean fitOffset(int f) {
+        int fo = f * d;
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY, b = 0;
+        for (int r = 0; r < d; r++) {
+            int v = verts[fo + r] * d;
+            double s = 0;
+            for (int c = 0; c < d; c++) s += normal[fo + c] * pts[v + c];
+            b += s;
+            if (s < lo) lo = s;
+            if (s > hi) hi = s;
+        }
+        if (hi - lo > REFIT_TOLERANCE * scale) return false;
+        b /= d;
+        double bi = 0;
+        for (int c = 0; c < d; c++) bi += normal[fo + c] * interior[c];
+        if (bi > b) {
+            for (int c = 0; c < d; c++) normal[fo + c] = -normal[fo + c];
+            b = -b;
+        }
+        offset[f] = b;
+        return true;
     }
 
     /** Determinant of the n×n matrix a (row-major, destroyed), Gaussian elimination with partial pivoting. */
@@ -599,6 +830,7 @@ public final class ConvexHull {
         }
         alive[f] = true;
         gen[f]++;
+        created++;
         outHead[f] = -1;
         furthest[f] = -1;
         furthestDist[f] = 0;
