@@ -24,15 +24,19 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim grasp}: how good the grasp of a scenario is, and how much it holds. */
 @Command(name = "grasp", mixinStandardHelpOptions = true,
-    description = {"Runs a scenario (default: the paper's experiment) to time T (default: its end) and prints",
-        "the grasp there as one JSON line: {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
-        "\"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,\"volume\":v,",
-        "\"hold_N\":{\"+x\":F,\"-x\":F,\"+y\":F,\"-y\":F,\"+z\":F,\"-z\":F},\"hold_min_N\":F}",
-        "(world frame; normals point into the object; epsilon and volume of the grasp wrench",
-        "space with torques divided by the object's radius R; hold_N: the largest force through",
-        "the object's centroid the grasp holds, at most the hand's rated 58.84 N).",
-        "--chart BASE also samples the grasp every --every seconds along the run and writes",
-        "BASE.png, BASE.svg (epsilon and the smallest hold against time) and BASE.csv."})
+    description = {"Runs a scenario (default: the paper's experiment) to time T (default: its",
+        "end) and prints its grasp there as one JSON line (README, output contracts):",
+        "  {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
+        "   \"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,",
+        "   \"volume\":v,\"hold_N\":{\"+x\":F,\"-x\":F,\"+y\":F,\"-y\":F,\"+z\":F,\"-z\":F},",
+        "   \"hold_min_N\":F}",
+        "World frame; normals point into the object; epsilon and volume of the grasp",
+        "wrench space (torques divided by the object's radius R); hold_N: the largest",
+        "force through the object's centroid the grasp holds with every joint within",
+        "its limit, at most the hand's rated 58.84 N.",
+        "--chart BASE also evaluates the grasp every --every seconds along the run and",
+        "writes BASE.png, BASE.svg (epsilon and the smallest hold against time) and",
+        "BASE.csv."})
 public final class GraspCommand implements Callable<Integer> {
     /** Header of the {@code --chart} CSV. */
     static final String CHART_HEADER = "time_s,force_closure,epsilon,volume,hold_min_N";
