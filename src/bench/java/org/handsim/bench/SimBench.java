@@ -68,6 +68,34 @@ final class SimBench implements BenchMain.Suite {
         System.out.print(table);
         System.out.println();
         System.out.print(frictionCost());
+        System.out.println();
+        System.out.print(allocation());
+    }
+
+    /**
+     * Bytes the step allocates: a model run once (its scratch arrays grow to the scene's contact
+     * counts), reset with {@code initialise()} and run again, the second run's allocation by the
+     * thread (com.sun.management.ThreadMXBean). Run with {@code -Xint} the second run allocates
+     * nothing at all; compiled, the odd few hundred bytes are the JIT's (deoptimisation), not a
+     * {@code new} of the step.
+     */
+    private static String allocation() {
+        com.sun.management.ThreadMXBean tb = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        StringBuilder t = new StringBuilder("| scene | mu | steps | bytes allocated by the second run |\n|---|---:|---:|---:|\n");
+        for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
+            for (double mu : new double[] {0.5, 0}) {
+                Scenario s = Scenario.load(file).withFriction(mu);
+                HandModel m = Simulation.model(s, false);
+                m.run(null);
+                m.initialise();
+                long id = Thread.currentThread().getId();
+                long b0 = tb.getThreadAllocatedBytes(id);
+                m.run(null);
+                long bytes = tb.getThreadAllocatedBytes(id) - b0;
+                t.append(String.format(Locale.ROOT, "| %s | %s | %d | %d |%n", s.name(), mu, m.stepIndex(), bytes));
+            }
+        }
+        return t.toString();
     }
 
     /** μ = 0.5 against μ = 0, alternating rounds, the best median of each. */
