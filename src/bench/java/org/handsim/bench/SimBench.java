@@ -77,9 +77,8 @@ final class SimBench implements BenchMain.Suite {
     /**
      * Bytes the step allocates: a model run once (its scratch arrays grow to the scene's contact
      * counts), reset with {@code initialise()} and run again, the second run's allocation by the
-     * thread (com.sun.management.ThreadMXBean). Run with {@code -Xint} the second run allocates
-     * nothing at all; compiled, the odd few hundred bytes are the JIT's (deoptimisation), not a
-     * {@code new} of the step.
+     * thread (com.sun.management.ThreadMXBean). An odd few hundred bytes seen in some runs were
+     * the JIT's (deoptimisation): the same second run interpreted ({@code -Xint}) allocated none.
      */
     private static String allocation() {
         com.sun.management.ThreadMXBean tb = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
