@@ -23,16 +23,19 @@ import java.util.Arrays;
  *   <li><b>Adding a point</b> p (the furthest point of a facet's outside set): the facets p sees
  *       (signed distance &gt; τ) are found by a breadth-first walk from that facet; each ridge
  *       between a visible and a hidden facet (the horizon) gets a new facet, the ridge plus p.
- *       The new facets are linked to each other by rotating about each (d−3)-face of the horizon
- *       through the visible facets (the walk stops at the first hidden facet): this pairs the
- *       new facets consistently even where rounding makes the visible region pinched, so the
- *       facet graph stays a closed pseudomanifold, never a dangling pointer. The points of the
+ *       The new facets are linked to each other across their ridges through p by a hash of the
+ *       ridges' vertex sets. Where rounding pinches the visible region (a ridge through p would
+ *       get four new facets, and the facet graph would stop being a manifold), the step is undone
+ *       and retried with the visibility threshold moved off τ ({@link #THRESHOLDS}), so the
+ *       facet graph always stays a closed manifold, never a dangling pointer. The points of the
  *       visible facets' outside sets are partitioned among the new facets (a point above no new
  *       facet is inside the new hull: Barber et al., Lemma 3.3 and §3).</li>
  *   <li>Repeat while an outside set is non-empty; an explicit work list, no recursion.</li>
  * </ol>
- * A facet's hyperplane n·x = b (unit n, pointing out) comes from its d vertices by Gaussian
- * elimination with full pivoting; b is the mean of n·v over the vertices. The interior point
+ * A facet's hyperplane n·x = b (unit n, pointing out) comes from its parents' (a rotation of the
+ * horizon ridge, kept when every vertex lies within {@link #REFIT_TOLERANCE} × S of it) or
+ * else from its d vertices by Gaussian elimination with full pivoting; b is the mean of n·v
+ * over the vertices. The interior point
  * (the initial simplex's centroid) orients it.
  *
  * <h2>What it reports</h2>
@@ -62,6 +65,7 @@ public final class ConvexHull {
     /** Neighbouring simplicial facets within this × S of each other's hyperplane are one facet. */
     public static final double MERGE_TOLERANCE = 1e-9;
 
+    static final boolean DEBUG = Boolean.getBoolean("handsim.hullDebug");
     private static final byte INSIDE = 0, PENDING = 1, VERTEX = 2;
 
     private final int d;
@@ -79,10 +83,18 @@ public final class ConvexHull {
     // facets (index f: vertices and neighbours at f*d .. f*d+d-1; neighbour i is opposite vertex i)
     private int capacity;
     private int highWater;
-    private int[] verts, nbr, hnew;
+    private int[] verts, nbr;
     private double[] normal, offset, furthestDist;
     private int[] outHead, furthest, gen, mark;
     private boolean[] alive;
+    /**
+     * +1 or −1: the sign that makes facet f's ordered vertices an outward simplex. Set from the
+     * geometry for the initial simplex, then inherited (a new facet is its visible parent with
+     * one vertex replaced in place, which keeps the orientation), so the volume is a signed sum
+     * over a consistently oriented surface: where rounding folds nearly coplanar facets over
+     * each other, the folds cancel instead of counting twice.
+     */
+    private byte[] orientation;
     private int[] freeList;
     private int freeCount, aliveCount, created;
     private int epoch;
@@ -130,13 +142,86 @@ public final class ConvexHull {
      * @throws IllegalArgumentException for a non-finite coordinate
      */
     public boolean build(double[] points, int count) {
+        if (!buildOnce(points, count)) return false;
+        if (!suspicious && !droppedPointOutside()) return true;
+        if (supportsEveryPoint()) return true;
+        // rounding spoiled the hull (nearly coplanar points): joggle, as qhull's QJ does
+        if (joggled.length < count * d) joggled = new double[count * d];
+        java.util.Random rnd = new java.util.Random(JOGGLE_SEED);
+        for (double j = JOGGLE_FIRST; j <= JOGGLE_LAST; j *= 10) {
+            double amount = j * scale;
+            for (int i = 0; i < count * d; i++) joggled[i] = points[i] + amount * (2 * rnd.nextDouble() - 1);
+            joggles++;
+            if (!buildOnce(joggled, count)) return false;
+            if (!suspicious && !droppedPointOutside() || supportsEveryPoint()) return true;
+        }
+        return true;
+    }
+
+    /**
+     * True if every point lies below every facet within {@link #CONVEXITY_SLACK} τ: the check
+     * of a hull built after a step that needed a retry (O(facets × points)).
+     */
+    private boolean supportsEveryPoint() {
+        double slack = CONVEXITY_SLACK * tau;
+        for (int f = 0; f < highWater; f++) {
+            if (!alive[f]) continue;
+            for (int i = 0; i < n; i++) if (distance(i, f) > slack) return false;
+        }
+        return true;
+    }
+
+    /**
+     * True if the built hull shows a flaw that Quickhull's steps, exact only in exact
+     * arithmetic, can leave with nearly coplanar points: a ridge where the neighbour's far
+     * vertex lies above the facet by more than {@link #CONVEXITY_SLACK} τ (a fold), or a point
+     * off the surface (dropped as inside, or a vertex whose facets all went) above some facet.
+     * O(facets × d) plus O(off-surface points × facets); in 6-D grasps nearly every wrench is a
+     * vertex, so it costs little.
+     */
+    private boolean droppedPointOutside() {
+        double slack = CONVEXITY_SLACK * tau;
+        for (int i = 0; i < n; i++) onSurface[i] = false;
+        for (int f = 0; f < highWater; f++) {
+            if (!alive[f]) continue;
+            int fo = f * d;
+            for (int k = 0; k < d; k++) {
+                onSurface[verts[fo + k]] = true;
+                int g = nbr[fo + k];
+                if (g > f && distance(verts[g * d + slotOfNeighbour(g, f)], f) > slack) return true;
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            if (onSurface[i]) continue;
+            for (int f = 0; f < highWater; f++) if (alive[f] && distance(i, f) > slack) return true;
+        }
+        return false;
+    }
+
+    private boolean[] onSurface = new boolean[0];
+
+    /** First joggle, × S; then ×10 per retry up to {@link #JOGGLE_LAST}. */
+    static final double JOGGLE_FIRST = 1e-10, JOGGLE_LAST = 1e-6;
+    private static final long JOGGLE_SEED = 20261124L;
+    private double[] joggled = new double[0];
+    private boolean suspicious;
+    /** Rebuilds on joggled points since this instance was made (diagnostics). */
+    long joggles;
+
+    private boolean buildOnce(double[] points, int count) {
         if (!start(points, count, true)) return false;
         workCount = 0;
         for (int f = 0; f < highWater; f++) if (alive[f] && outHead[f] >= 0) pushWork(f);
         while (workCount > 0) {
             int f = work[--workCount];
             if (!alive[f] || outHead[f] < 0) continue;
-            addPoint(furthest[f], f);
+            int p = furthest[f];
+            if (!addPoint(p, f)) {           // p dropped: the seed keeps its other points
+                refreshFurthest(f);
+                if (outHead[f] >= 0) pushWork(f);
+                continue;
+            }
+            if (DEBUG) { String t = checkTopology(); if (t != null) throw new IllegalStateException("after adding " + p + ": " + t); }
             for (int k = 0; k < newCount; k++) if (outHead[newFacets[k]] >= 0) pushWork(newFacets[k]);
         }
         return true;
@@ -178,17 +263,25 @@ public final class ConvexHull {
             if (!alive[f] || gen[f] != g) continue;
             int p = farthestPendingAbove(f);
             if (p >= 0) {
-                addPoint(p, f);
+                if (!addPoint(p, f)) {                  // p dropped (pathological): take f again
+                    heap.push(offset[f], f, gen[f]);
+                    continue;
+                }
                 for (int k = 0; k < newCount; k++) {
                     int nf = newFacets[k];
                     heap.push(offset[nf], nf, gen[nf]);
                 }
                 continue;
             }
-            best = Math.min(best, refinedOffset(f));
+            best = Math.min(best, facetSupport(f));
             if (best <= tau) return best;          // the origin is not strictly inside: settled
         }
         if (best == Double.POSITIVE_INFINITY) throw new IllegalStateException("best-first hull ran out of facets (a bug)");
+        if (suspicious) {                           // a step needed a retry: the whole, checked hull decides
+            double[] original = points;
+            build(original, count);
+            return minOffset();
+        }
         return best;
     }
 
@@ -206,34 +299,60 @@ public final class ConvexHull {
 
     /**
      * The smallest facet offset of the last build (see {@link #epsilon}); NaN if
-     * lower-dimensional. The facets within τ of the smallest get their hyperplane refitted to
-     * every input point within τ of it (the vertices of the polytope's facet: a well-spread
-     * d-subset chosen by pivoted Gram–Schmidt, then elimination), so a thin simplicial facet's
-     * rounding does not decide ε; positive results are these refitted offsets.
+     * lower-dimensional. Precisely: the smallest {@link #facetSupport} over the facets whose
+     * offsets could give it (the smallest, and every one below the best value found + τ), so a
+     * thin simplicial facet's rounding does not decide ε and a spoiled hyperplane cannot make it
+     * smaller.
      */
     public double minOffset() {
         if (!full) return Double.NaN;
         double m = Double.POSITIVE_INFINITY;
-        for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] < m) m = offset[f];
-        if (m <= tau) return m;
-        double best = Double.POSITIVE_INFINITY;
-        for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] <= m + tau) best = Math.min(best, refinedOffset(f));
+        int fm = -1;
+        for (int f = 0; f < highWater; f++) if (alive[f] && offset[f] < m) { m = offset[f]; fm = f; }
+        double best = facetSupport(fm);
+        for (int f = 0; f < highWater; f++) {
+            if (alive[f] && f != fm && offset[f] < best + tau) best = Math.min(best, facetSupport(f));
+        }
         return best;
     }
 
     /**
-     * Facet f's offset from a hyperplane refitted to the input points within τ of its own: d of
-     * them spread as widely as pivoted Gram–Schmidt finds, their null vector by elimination,
-     * the offset averaged over all of them. Falls back to the stored offset when f's own d
-     * vertices are all there is.
+     * The support of the points in the direction of facet f's normal, h(n) = max_i n·p_i, from a
+     * hyperplane refitted to the input points within τ of f's own: d of them spread as widely as
+     * pivoted Gram–Schmidt finds, their null vector by elimination (f's stored normal when its d
+     * vertices are all there is). When every point lies within τ of that hyperplane or below, the
+     * value is its offset averaged over those points (the facet's distance from the origin, free
+     * of one thin simplex's rounding); otherwise — a facet whose hyperplane rounding has spoiled,
+     * possible on nearly degenerate input — it is the support h(n). Either way the value is at
+     * least the distance from the origin to the hull's boundary, since the ball of radius ε
+     * inside the hull has support ε in every direction; so a spoiled facet can never make ε
+     * smaller, and one with a value ≤ τ proves there is no force closure.
      */
-    private double refinedOffset(int f) {
+    private double facetSupport(int f) {
         int fo = f * d, k = 0;
         for (int i = 0; i < n; i++) {
             if (Math.abs(distance(i, f)) <= tau) near[k++] = i;
         }
-        if (k <= d) return offset[f];
-        // pivoted Gram-Schmidt inside the facet: the first point, then the farthest from the span
+        if (k <= d || !refitNormal(k, f)) System.arraycopy(normal, fo, refit, 0, d);
+        double b = 0, h = Double.NEGATIVE_INFINITY;
+        for (int j = 0; j < k; j++) {
+            int q = near[j] * d;
+            double sdot = 0;
+            for (int c = 0; c < d; c++) sdot += refit[c] * pts[q + c];
+            b += sdot;
+        }
+        b = k > 0 ? b / k : offset[f];
+        for (int i = 0; i < n; i++) {
+            int q = i * d;
+            double sdot = 0;
+            for (int c = 0; c < d; c++) sdot += refit[c] * pts[q + c];
+            if (sdot > h) h = sdot;
+        }
+        return h <= b + tau ? b : h;
+    }
+
+    /** The unit normal through the k points of {@code near} (a well-spread d-subset), oriented as f's, into refit; false if degenerate. */
+    private boolean refitNormal(int k, int f) {
         int p0 = near[0];
         for (int j = 0; j < k; j++) {
             int q = near[j];
@@ -248,7 +367,7 @@ public final class ConvexHull {
                 for (int c = 0; c < d; c++) sq += resid[j * d + c] * resid[j * d + c];
                 if (sq > bestSq) { bestSq = sq; bestJ = j; }
             }
-            if (!(bestSq > 0)) return offset[f];
+            if (!(bestSq > 0)) return false;
             chosen[r] = near[bestJ];
             double len = Math.sqrt(bestSq);
             for (int c = 0; c < d; c++) basis[c] = resid[bestJ * d + c] / len;
@@ -260,21 +379,18 @@ public final class ConvexHull {
                 }
             }
         }
-        if (!nullVector(chosen, 0, refit, 0)) return offset[f];
+        if (!nullVector(chosen, 0, refit, 0)) return false;
         double dir = 0;
-        for (int c = 0; c < d; c++) dir += refit[c] * normal[fo + c];
-        double b = 0;
-        for (int j = 0; j < k; j++) {
-            int q = near[j] * d;
-            double sdot = 0;
-            for (int c = 0; c < d; c++) sdot += refit[c] * pts[q + c];
-            b += sdot;
-        }
-        b /= k;
-        return dir < 0 ? -b : b;
+        for (int c = 0; c < d; c++) dir += refit[c] * normal[f * d + c];
+        if (dir < 0) for (int c = 0; c < d; c++) refit[c] = -refit[c];
+        return true;
     }
 
-    /** d-dimensional volume of the last build's hull (0 when lower-dimensional). */
+    /**
+     * d-dimensional volume of the last build's hull (0 when lower-dimensional): the signed sum of
+     * the simplices from the interior point to each facet, oriented consistently (see
+     * {@code orientation}).
+     */
     public double volume() {
         if (!full) return 0;
         double sum = 0;
@@ -286,7 +402,7 @@ public final class ConvexHull {
                 int v = verts[f * d + r];
                 for (int c = 0; c < d; c++) ge[r * d + c] = pts[v * d + c] - interior[c];
             }
-            sum += Math.abs(determinant(ge, d));
+            sum += orientation[f] * determinant(ge, d);
         }
         return sum / fact;
     }
@@ -328,6 +444,31 @@ public final class ConvexHull {
         return out;
     }
 
+    /** Checks the facet graph (tests and debugging): every neighbour alive, mutual, sharing all vertices but one; null if sound. */
+    String checkTopology() {
+        for (int f = 0; f < highWater; f++) {
+            if (!alive[f]) continue;
+            for (int i = 0; i < d; i++) {
+                int g = nbr[f * d + i];
+                if (g < 0 || !alive[g]) return "facet " + f + " slot " + i + ": neighbour " + g + " dead";
+                int back = -1;
+                for (int j = 0; j < d; j++) if (nbr[g * d + j] == f) back = j;
+                if (back < 0) return "facet " + f + " -> " + g + " not mutual";
+                for (int k = 0; k < d; k++) {
+                    if (k == i) continue;
+                    int v = verts[f * d + k];
+                    boolean in = false;
+                    for (int j = 0; j < d; j++) if (j != back && verts[g * d + j] == v) in = true;
+                    if (!in) return "facet " + f + " and " + g + " do not share the ridge";
+                }
+            }
+        }
+        return null;
+    }
+
+    /** State of point i after the last call: 0 inside, 1 pending, 2 vertex (tests). */
+    int pointState(int i) { return pointState[i]; }
+
     /** Facets the last call created, the initial simplex's included (the work done). */
     public int createdFacetCount() { return created; }
 
@@ -348,6 +489,7 @@ public final class ConvexHull {
         n = count;
         full = false;
         highWater = 0; freeCount = 0; aliveCount = 0; created = 0;
+        suspicious = false;
         scale = 0;
         for (int i = 0; i < n * d; i++) {
             double a = Math.abs(points[i]);
@@ -360,6 +502,7 @@ public final class ConvexHull {
             pointNext = new int[n];
             resid = new double[n * d];
             near = new int[n];
+            onSurface = new boolean[n];
             int old = hashA.length;
             hashA = Arrays.copyOf(hashA, n);
             hashB = Arrays.copyOf(hashB, n);
@@ -389,6 +532,11 @@ public final class ConvexHull {
                 slot++;
             }
             hyperplane(f, -1);
+            for (int r = 0; r < d; r++) {
+                int v = verts[f * d + r];
+                for (int c = 0; c < d; c++) ge[r * d + c] = pts[v * d + c] - interior[c];
+            }
+            orientation[f] = determinant(ge, d) > 0 ? (byte) 1 : (byte) -1;
         }
         for (int j = 0; j <= d; j++) pointState[simplex[j]] = VERTEX;
         // partition every other point among the simplex's facets (the best-first path keeps no
@@ -446,11 +594,59 @@ public final class ConvexHull {
 
     // ------------------------------------------------------------------ the Quickhull step
 
-    /** Adds point p, which lies above facet seed by more than τ. The new facets are in newFacets. */
-    private void addPoint(int p, int seed) {
-        epoch += 2;
-        int visMark = epoch, hidMark = epoch + 1;
+    /**
+     * Visibility thresholds, × τ, tried in turn when the horizon of a point is not a manifold:
+     * rounding can leave a facet nearly coplanar with p counted hidden between visible ones
+     * (or the reverse), which pinches the visible region at a (d−3)-face, so some ridge through
+     * p would have four new facets. Counting such facets visible (negative thresholds) or
+     * hidden (larger ones) removes the pinch; the error is at most the threshold.
+     */
+    private static final double[] THRESHOLDS = {1, 10, 100, 1e3, 1e4};
+
+    /**
+     * Adds point p, which lies above facet seed by more than τ; the new facets are in
+     * newFacets. False, with the hull unchanged and p marked inside, in the pathological case
+     * that no threshold gives a manifold horizon (an error below 1e4 τ = 1e-7 S).
+     */
+    private boolean addPoint(int p, int seed) {
         pointState[p] = VERTEX;
+        double seedDist = distance(p, seed);
+        for (double k : THRESHOLDS) {
+            double t = k * tau;
+            if (t >= seedDist) continue;
+            if (k != THRESHOLDS[0]) suspicious = true;
+            if (tryCone(p, seed, t)) {
+                // partition the outside sets of the visible facets among the new facets; free them
+                for (int q = 0; q < visibleCount; q++) {
+                    int f = visible[q];
+                    int pt = outHead[f];
+                    while (pt >= 0) {
+                        int nextPt = pointNext[pt];
+                        if (pointState[pt] == PENDING) assignNew(pt);
+                        pt = nextPt;
+                    }
+                    outHead[f] = -1;
+                    freeFacet(f);
+                }
+                return true;
+            }
+        }
+        pointState[p] = INSIDE;
+        newCount = 0;
+        suspicious = true;
+        return false;
+    }
+
+    /**
+     * One attempt at the cone from p: the facets p lies above by more than t, found breadth-first
+     * from seed, replaced by a new facet on each horizon ridge, linked by {@link #linkByHash}.
+     * False (everything undone) if the horizon is not a manifold.
+     */
+    private boolean tryCone(int p, int seed, double t) {
+        epoch += 3;
+        int visMark = epoch, hidMark = epoch + 1;
+        newMark = epoch + 2;
+        newVertex = p;
         // 1. visible facets: breadth-first from the seed
         visibleCount = 0;
         pushVisible(seed);
@@ -461,7 +657,7 @@ public final class ConvexHull {
                 int g = nbr[f * d + i];
                 int m = mark[g];
                 if (m == visMark || m == hidMark) continue;
-                if (distance(p, g) > tau) { mark[g] = visMark; pushVisible(g); }
+                if (distance(p, g) > t) { mark[g] = visMark; pushVisible(g); }
                 else mark[g] = hidMark;
             }
         }
@@ -478,75 +674,68 @@ public final class ConvexHull {
                 verts[nf * d + i] = p;
                 nbr[nf * d + i] = g;
                 nbr[g * d + slotOfNeighbour(g, f)] = nf;
-                hnew[f * d + i] = nf;
-                mark[nf] = 0;
+                mark[nf] = newMark;
+                orientation[nf] = orientation[f];
                 if (!rotatedHyperplane(nf, f, g, p)) hyperplane(nf, f);
                 pushNew(nf);
-                // remember where it came from: the visible facet f and slot i
                 ensureOrigin(newCount);
                 origin[2 * (newCount - 1)] = f;
                 origin[2 * (newCount - 1) + 1] = i;
             }
         }
-        if (newCount == 0) throw new IllegalStateException("point " + p + " sees every facet (a bug)");
+        if (coneQueue.length < newCount) coneQueue = new int[2 * newCount];
         // 3. link the new facets to each other across their ridges through p
-        if (!linkByHash(p)) {
-            for (int q = 0; q < newCount; q++) {
-                int nf = newFacets[q], i0 = origin[2 * q + 1];
-                for (int k = 0; k < d; k++) if (k != i0) nbr[nf * d + k] = -1;
-            }
-            linkByRotation(p, visMark);
+        if (newCount > 0 && linkByHash(p) && coneIsSound(Math.max(Math.abs(t), tau))) return true;
+        for (int q = 0; q < newCount; q++) {       // undo
+            int nf = newFacets[q], g = nbr[nf * d + origin[2 * q + 1]];
+            nbr[g * d + slotOfNeighbour(g, nf)] = origin[2 * q];
+            freeFacet(nf);
         }
-        // 4. partition the outside sets of the visible facets among the new facets; free them
-        for (int q = 0; q < visibleCount; q++) {
-            int f = visible[q];
-            int pt = outHead[f];
-            while (pt >= 0) {
-                int nextPt = pointNext[pt];
-                if (pointState[pt] == PENDING) assignNew(pt);
-                pt = nextPt;
-            }
-            outHead[f] = -1;
-            freeFacet(f);
-        }
+        newCount = 0;
+        return false;
     }
 
     /**
-     * Links the new facets by rotating about each (d−3)-face σ of the horizon through the
-     * visible facets, from one horizon ridge to the next: the two new facets on σ ∪ {p} are
-     * those of the horizon ridges that bound the same arc of visible facets around σ. Right
-     * even where rounding pinches the visible region (σ on two arcs).
+     * The new cone is sound: every new facet reached from the first across ridges through p
+     * (the horizon is one piece), and locally convex — across each of its ridges the
+     * neighbour's far vertex lies below it, within {@link #CONVEXITY_SLACK} × t. Rounding near
+     * coplanar facets can make a visible region that is not a disc (an annulus, or p on the
+     * wrong side of a nearly flat fold), whose cone folds over; this rejects it.
      */
-    private void linkByRotation(int p, int visMark) {
-        for (int q = 0; q < newCount; q++) {
-            int nf = newFacets[q], f0 = origin[2 * q], i0 = origin[2 * q + 1];
+    private boolean coneIsSound(double t) {
+        double slack = CONVEXITY_SLACK * t;
+        int stamp = ++coneEpoch;
+        int reached = 1, head = 0;
+        coneMark[newFacets[0]] = stamp;
+        coneQueue[0] = newFacets[0];
+        while (head < reached) {
+            int nf = coneQueue[head++], no = nf * d;
             for (int k = 0; k < d; k++) {
-                if (k == i0 || nbr[nf * d + k] >= 0) continue;
-                int cur = f0, v = verts[f0 * d + k], w = verts[f0 * d + i0];
-                int guard = 0;
-                while (true) {
-                    int sv = slotOfVertex(cur, v);
-                    int next = nbr[cur * d + sv];
-                    if (mark[next] != visMark) {
-                        int partner = hnew[cur * d + sv];
-                        nbr[nf * d + k] = partner;
-                        nbr[partner * d + slotOfVertex(cur, w)] = nf;
-                        break;
-                    }
-                    int x = verts[next * d + slotOfNeighbour(next, cur)];
-                    v = w; w = x; cur = next;
-                    if (++guard > visibleCount + 1) throw new IllegalStateException("hull topology broken at point " + p + " (a bug)");
+                int g = nbr[no + k];
+                if (distance(verts[g * d + slotOfNeighbour(g, nf)], nf) > slack) return false;
+                if (verts[no + k] != newVertex && coneMark[g] != stamp && isNew(g)) {
+                    coneMark[g] = stamp;
+                    coneQueue[reached++] = g;
                 }
             }
         }
+        return reached == newCount;
+    }
+
+    private int newMark, newVertex, coneEpoch;
+    private int[] coneMark = new int[0], coneQueue = new int[64];
+    /** A new facet may have a neighbour's far vertex this many × the visibility threshold above it. */
+    static final double CONVEXITY_SLACK = 100;
+
+    private boolean isNew(int f) {
+        return mark[f] == newMark;
     }
 
     /**
      * Links the new facets by matching their ridges through p in a hash table keyed by the
      * ridge's vertex set: two independent 64-bit sums of per-vertex hashes (Zobrist hashing;
      * a false match needs both sums to collide, odds about 2^-120 per pair). False if some
-     * ridge is met more than twice (a pinched horizon) or left unmatched: then the caller links
-     * by rotation, which resolves it.
+     * ridge is met more than twice (a pinched horizon) or left unmatched.
      */
     private boolean linkByHash(int p) {
         int need = Math.max(16, 2 * newCount * (d - 1));
@@ -642,6 +831,22 @@ public final class ConvexHull {
         pointNext[i] = outHead[f];
         outHead[f] = i;
         if (pointNext[i] < 0 || dist > furthestDist[f]) { furthest[f] = i; furthestDist[f] = dist; }
+    }
+
+    /** Drops non-pending points from f's outside set and finds its furthest point again. */
+    private void refreshFurthest(int f) {
+        int prev = -1, pt = outHead[f];
+        while (pt >= 0) {
+            int nx = pointNext[pt];
+            if (pointState[pt] != PENDING) {
+                if (prev < 0) outHead[f] = nx; else pointNext[prev] = nx;
+            } else {
+                double dist = distance(pt, f);
+                if (prev < 0 || dist > furthestDist[f]) { furthest[f] = pt; furthestDist[f] = dist; }
+                prev = pt;
+            }
+            pt = nx;
+        }
     }
 
     /** The pending point farthest above facet f by more than τ, or −1 (then f supports the hull). */
@@ -849,7 +1054,6 @@ public final class ConvexHull {
         if (cap <= capacity) return;
         verts = grow(verts, cap * d);
         nbr = grow(nbr, cap * d);
-        hnew = grow(hnew, cap * d);
         normal = growD(normal, cap * d);
         offset = growD(offset, cap);
         furthestDist = growD(furthestDist, cap);
@@ -858,6 +1062,8 @@ public final class ConvexHull {
         gen = grow(gen, cap);
         mark = grow(mark, cap);
         freeList = grow(freeList, cap);
+        coneMark = grow(coneMark, cap);
+        orientation = orientation == null ? new byte[cap] : Arrays.copyOf(orientation, cap);
         alive = alive == null ? new boolean[cap] : Arrays.copyOf(alive, cap);
         capacity = cap;
     }
