@@ -46,7 +46,9 @@ public final class HandSim implements Runnable {
         SweepCommand.class,
         GuiCommand.class,
         TradeoffCommand.class,
-        SwingCommand.class
+        SwingCommand.class,
+        QualityCommand.class,
+        GraspCommand.class
         // sub-commands register here, one line each
     );
 

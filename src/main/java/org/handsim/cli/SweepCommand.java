@@ -11,6 +11,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.Callable;
+import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
@@ -41,7 +42,8 @@ public final class SweepCommand implements Callable<Integer> {
     static final String HEADER = "run,scenario,status,sim_time_s,steps,wall_time_s,"
         + "final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
         + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,"
-        + "final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error";
+        + "final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error,"
+        + "force_closure,epsilon,volume,hold_min_N";
 
     @Spec CommandSpec spec;
 
@@ -54,6 +56,12 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: the file's, else all cores)")
     Integer threads;
 
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of every run's contacts (default: each scenario's)")
+    Double friction;
+
+    @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
+    Integer edges;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
@@ -63,6 +71,7 @@ public final class SweepCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
+        GraspCommand.checkFriction(friction, edges);
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
         List<Sweep.Run> runs = sweep.runs();
@@ -89,7 +98,7 @@ public final class SweepCommand implements Callable<Integer> {
                 while (next < runs.size() && inFlight.size() < ahead) {
                     Sweep.Run run = runs.get(next++);
                     inFlight.add(pool.submit(() -> {
-                        String row = runOne(run);
+                        String row = runOne(run, friction, edges);
                         int d = done.incrementAndGet();
                         synchronized (err) {
                             err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), SafeText.line(run.label()),
@@ -114,11 +123,11 @@ public final class SweepCommand implements Callable<Integer> {
         return failed == 0 ? 0 : 1;
     }
 
-    private static String runOne(Sweep.Run run) {
+    private static String runOne(Sweep.Run run, Double friction, Integer edges) {
         String label = csvText(run.label());
         String scenarioName = "";
         try {
-            Scenario s = run.scenario().get();
+            Scenario s = GraspCommand.withFriction(run.scenario().get(), friction, edges);
             scenarioName = s.name();
             HandModel m = Simulation.model(s, false);
             long t = System.nanoTime();
@@ -131,10 +140,13 @@ public final class SweepCommand implements Callable<Integer> {
                 sb.append(',').append(m.state(k)).append(',').append(Decimal.orEmpty(m.breakawayTime(k))).append(',')
                     .append(Decimal.orEmpty(m.breakawayForce(k))).append(',').append(Decimal.format(m.maxContactForce(k)));
             }
-            return sb.append(',').toString();
+            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            sb.append(",,").append(g.quality().forceClosure()).append(',').append(Decimal.format(g.quality().epsilon())).append(',')
+                .append(Decimal.format(g.quality().volume())).append(',').append(Decimal.format(g.holdMinN()));
+            return sb.toString();
         } catch (RuntimeException e) {   // ScenarioException, SimulationException, a bad object file ...: this row fails, the others go on
             String why = e instanceof ScenarioException || e instanceof SimulationException ? e.getMessage() : e.toString();
-            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(SafeText.line(why));
+            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(SafeText.line(why)) + ",,,,";
         }
     }
 

@@ -78,12 +78,26 @@ public final class SceneGeometry implements LinkContacts {
             diag = Math.max(diag, m.diagonal());
         }
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
+        double[] centroid = objectMesh.centroid();
+        double r = 0;
+        double[] ov = objectMesh.vertices();
+        for (int i = 0; i < ov.length; i += 3) {
+            r = Math.max(r, sq(ov[i] - centroid[0]) + sq(ov[i + 1] - centroid[1]) + sq(ov[i + 2] - centroid[2]));
+        }
+        double[] cw = object.worldFromObject().apply(centroid);
+        centroidAndRadius = new double[] {cw[0], cw[1], cw[2], Math.sqrt(r)};
         thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.scale(),
             x -> minWidth(objectMesh));
     }
 
     private static final Map<String, Double> THICKNESS = new ConcurrentHashMap<>();
     private final double thickness;
+    private final double[] centroidAndRadius;
+
+    @Override
+    public double[] centroidAndRadius() {
+        return centroidAndRadius.clone();
+    }
 
     /**
      * An estimate from above of a mesh's thinnest width: the smallest extent along the 13
