@@ -158,27 +158,8 @@ public final class ObjectsPanel {
         file.setText(f.getFileName() + " — " + m.mesh().triangleCount() + " triangles");
     }
 
-    /**
-     * The axis-angle vector of a rotation (inverse of Rodrigues' formula), rad. The angle is
-     * {@code atan2(2 sin θ, 2 cos θ)} from the antisymmetric part and the trace (well conditioned
-     * near 0 and π, where {@code acos} of the trace is not).
-     */
+    /** The axis-angle vector of a placement's rotation, rad ({@link RigidTransform#rotationVector()}). */
     static double[] rotationVector(RigidTransform t) {
-        double r00 = t.get(0, 0), r11 = t.get(1, 1), r22 = t.get(2, 2);
-        double ax = t.get(2, 1) - t.get(1, 2), ay = t.get(0, 2) - t.get(2, 0), az = t.get(1, 0) - t.get(0, 1);
-        double s = Math.sqrt(ax * ax + ay * ay + az * az);
-        double angle = Math.atan2(s, r00 + r11 + r22 - 1);
-        if (angle < 1e-12) return new double[3];
-        if (s < 1e-9) {
-            // angle = π: R = 2 n nᵀ − I, so |n_i| from the diagonal; the signs relative to the
-            // largest component from its row (R_ij = 2 n_i n_j)
-            double[] n = {Math.sqrt(Math.max(0, (r00 + 1) / 2)), Math.sqrt(Math.max(0, (r11 + 1) / 2)), Math.sqrt(Math.max(0, (r22 + 1) / 2))};
-            int i = n[0] >= n[1] && n[0] >= n[2] ? 0 : n[1] >= n[2] ? 1 : 2;
-            for (int j = 0; j < 3; j++) {
-                if (j != i && t.get(i, j) < 0) n[j] = -n[j];
-            }
-            return new double[] {angle * n[0], angle * n[1], angle * n[2]};
-        }
-        return new double[] {angle * ax / s, angle * ay / s, angle * az / s};
+        return t.rotationVector();
     }
 }
