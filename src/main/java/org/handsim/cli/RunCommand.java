@@ -83,7 +83,7 @@ public final class RunCommand implements Callable<Integer> {
         long t0 = System.nanoTime();
         HandModel model = Simulation.model(scenario, true).lazy(!noLazy);
         double setup = (System.nanoTime() - t0) / 1e9;
-        List<String> warnings = startWarnings(model);
+        List<String> warnings = model.startWarnings();
         for (String w : warnings) err.println("handsim: warning: " + w);
         long t1 = System.nanoTime();
         try {
@@ -149,23 +149,6 @@ public final class RunCommand implements Callable<Integer> {
         stdout.println(headline(model, wall));
         stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
         return 0;
-    }
-
-    /**
-     * What the user should know before trusting the run: a finger whose links are already in
-     * the object at t = 0 (a misplaced object) gets contact forces from the first step on, as if
-     * it had closed onto it there.
-     */
-    static List<String> startWarnings(HandModel m) {
-        List<String> w = new ArrayList<>();
-        for (int k = 1; k <= 3; k++) {
-            int n = m.contacts(k).size();
-            if (n > 0) {
-                w.add(String.format(Locale.ROOT, "finger %d starts in contact with the object (%d contact%s at t = 0): its links begin inside it;"
-                    + " check the object's pose", k, n, n == 1 ? "" : "s"));
-            }
-        }
-        return w;
     }
 
     /** {@code --tolerance} as metres; exit 2 naming the value if it is not a length. */
