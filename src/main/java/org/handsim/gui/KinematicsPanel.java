@@ -34,7 +34,8 @@ import org.handsim.sim.trajectory.Hold;
  * field) recomputes the others, so a joint angle typed in is rounded to what the one motor can
  * do. The view shows the pose at once ({@link HandSimWindow#preview}, which pauses the
  * simulation); <i>Use as start pose</i> makes every motor hold these counts in the working
- * scenario. While the simulation plays, the sliders follow the motors.
+ * scenario. While the simulation plays, the sliders follow the motors (and show where they
+ * ended when the run is over).
  *
  * <h2>Inverse: fingertip target → joints</h2>
  * A target in the palm frame {P} (metres) is solved in closed form with the joint limits
@@ -236,17 +237,20 @@ public final class KinematicsPanel {
     }
 
     private void showPose() {
-        window.status(String.format(Locale.ROOT, "forward kinematics: M1 %.0f, M2 %.0f, M3 %.0f, M4 %.0f counts (simulation paused)",
-            q[0], q[1], q[2], q[3]), false);
-        preview(Pose.ofJoints(joints(), window.scenario().worldFromPalm()));
+        String fk = String.format(Locale.ROOT, "forward kinematics: M1 %.0f, M2 %.0f, M3 %.0f, M4 %.0f counts (simulation paused)",
+            q[0], q[1], q[2], q[3]);
+        String touch = preview(Pose.ofJoints(joints(), window.scenario().worldFromPalm()));
+        if (touch == null) window.status(fk, false);
+        else window.warning(fk + " — " + touch);
     }
 
     /**
      * Shows a pose with the contacts it would have: the links are collided with the object by
      * the simulator's own collision ({@link SceneGeometry}, as {@code HandModel} does at every
-     * step), the contacts drawn, and a warning given when the pose touches the object.
+     * step) and the contacts drawn. Returns the warning for the status bar when the pose touches
+     * the object, else null.
      */
-    private void preview(Pose p) {
+    private String preview(Pose p) {
         SceneGeometry g = geometry();
         int[] perFinger = new int[3];
         if (g != null) {
@@ -271,7 +275,7 @@ public final class KinematicsPanel {
             }
         }
         lastPreviewContacts = perFinger[0] + perFinger[1] + perFinger[2];
-        if (touching.length() > 0) window.warning("this pose: " + touching + ": a run started from it would begin in contact");
+        return touching.length() == 0 ? null : "this pose: " + touching + ": a run started from it would begin in contact";
     }
 
     /** The collision of the working scenario's object, built when first needed (null: no object, or it does not load). */
@@ -307,7 +311,7 @@ public final class KinematicsPanel {
 
     /** Follows the motors while the simulation plays (called by the window's view update). */
     void follow(SimulationRunner.State s) {
-        if (s.snapshot() == null || !s.playing()) return;
+        if (s.snapshot() == null || !(s.playing() || s.finished()) || window.simulator().previewing()) return;
         for (int k = 0; k < 3; k++) q[k] = s.snapshot().fingers()[k].motorCounts();
         q[3] = s.snapshot().spreadCounts();
         showValues();
@@ -344,14 +348,16 @@ public final class KinematicsPanel {
         sb.append(String.format(Locale.ROOT, "%nCoupled finger (one motor): M%d = %d, M4 = %d counts put the fingertip %.1f mm from the target.",
             k, lastReach.qMk(), lastReach.qM4(), 1000 * lastReach.errorM()));
         ikResult.setText(sb.toString());
-        window.status(r.reachable() ? "inverse kinematics: target reachable" : "inverse kinematics: target UNREACHABLE (closest point shown in cyan)", !r.reachable());
+        String ik = r.reachable() ? "inverse kinematics: target reachable" : "inverse kinematics: target UNREACHABLE (closest point shown in cyan)";
         // show the exact IK joints on finger k, the forward pose on the others, and the markers
         double[][] joints = joints();
         joints[k - 1] = j;
         if (k == 3) joints[2][0] = 0;
         double[] targetWorld = wp.apply(target);
         double[] closestWorld = r.reachable() ? null : wp.apply(r.fingertip());
-        preview(Pose.ofJoints(joints, wp).withMarkers(targetWorld, closestWorld));
+        String touch = preview(Pose.ofJoints(joints, wp).withMarkers(targetWorld, closestWorld));
+        if (touch == null || !r.reachable()) window.status(touch == null ? ik : ik + " — " + touch, !r.reachable());
+        else window.warning(ik + " — " + touch);
     }
 
     private void applyReach() {

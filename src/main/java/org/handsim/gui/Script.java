@@ -35,6 +35,7 @@ import org.handsim.sim.ClutchState;
  * key KEY                   type a key into the window as a user would: SPACE, RIGHT, R, H, F,
  *                           1, 2, 3 (the window's shortcuts)
  * camera home|fit|front|top|side       move the camera
+ * resize WIDTH HEIGHT       make the window that size (pixels; at least 1024 × 700)
  * expect-error TEXT         the next action must fail with TEXT in its message; the script
  *                           goes on (to screenshot error states)
  * play SECONDS | end        play until the simulated time reaches SECONDS (or the scenario's
@@ -50,8 +51,9 @@ import org.handsim.sim.ClutchState;
  *                           finished, reset, ready) contains TEXT
  * assert-time SECONDS       fail unless the model is at that simulated time (within dt/2)
  * assert-contacts N         fail unless the hand has N contacts now (the preview's, if one is shown)
- * log dynamics|state|events|ik         print the Dynamics table, the time and clutch states,
- *                                      the Dynamics events, or the Kinematics answer
+ * log dynamics|state|events|ik|charts  print the Dynamics table, the time and clutch states,
+ *                                      the Dynamics events, the Kinematics answer, or the
+ *                                      charts' time axis, points and series shown
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
  * Output lines start with {@code gui: }. An unknown verb or a bad argument is an error naming
@@ -83,7 +85,7 @@ public final class Script {
         + "  open FILE | save-scenario FILE | export-traces FILE | save-charts FILE.png|.svg%n"
         + "  menu NAME            click a menu item (file.save, view.camera.fit, run.toggle)%n"
         + "  key KEY              a shortcut key: SPACE, RIGHT, R, H, F, 1, 2, 3%n"
-        + "  camera home|fit|front|top|side%n"
+        + "  camera home|fit|front|top|side   resize WIDTH HEIGHT%n"
         + "  expect-error TEXT    the next action must fail with TEXT in its message%n"
         + "  play T|end           play until simulated time T s (or the end), and wait%n"
         + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
@@ -93,7 +95,7 @@ public final class Script {
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
-        + "  log dynamics|state|events|ik%n"
+        + "  log dynamics|state|events|ik|charts%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
         + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
         + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
@@ -108,7 +110,7 @@ public final class Script {
         SCREENSHOT("screenshot"), SHOW("show"), ASSERT_STATE("assert-state"), ASSERT_STATUS("assert-status"),
         LOG("log"), MEASURE_FPS("measure-fps"), OPEN("open"), SAVE_SCENARIO("save-scenario"), EXPORT_TRACES("export-traces"),
         SAVE_CHARTS("save-charts"), MENU("menu"), KEY("key"), CAMERA("camera"), EXPECT_ERROR("expect-error"),
-        ASSERT_RUNSTATE("assert-runstate"), ASSERT_TIME("assert-time"), ASSERT_CONTACTS("assert-contacts");
+        ASSERT_RUNSTATE("assert-runstate"), ASSERT_TIME("assert-time"), ASSERT_CONTACTS("assert-contacts"), RESIZE("resize");
 
         final String word;
 
@@ -263,9 +265,18 @@ public final class Script {
                 }
                 return List.of(p[0], p[1].toUpperCase(Locale.ROOT));
             }
+            case RESIZE: {
+                String[] p = rest.split("\\s+");
+                if (p.length != 2 || !p[0].matches("\\d{3,5}") || !p[1].matches("\\d{3,5}")
+                    || Integer.parseInt(p[0]) < HandSimWindow.MINIMUM.width || Integer.parseInt(p[1]) < HandSimWindow.MINIMUM.height) {
+                    throw error(src, n, "resize needs WIDTH HEIGHT in pixels, at least " + HandSimWindow.MINIMUM.width + " " + HandSimWindow.MINIMUM.height
+                        + ", got '" + rest + "'");
+                }
+                return List.of(p[0], p[1]);
+            }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events or ik, got '" + rest + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik or charts, got '" + rest + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

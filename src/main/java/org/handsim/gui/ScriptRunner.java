@@ -196,6 +196,20 @@ public final class ScriptRunner {
                 break;
             }
             case KEY: key(a.arg(0)); break;
+            case RESIZE: {
+                int w = Integer.parseInt(a.arg(0)), h = Integer.parseInt(a.arg(1));
+                edt(() -> {
+                    window.frame().setSize(w, h);
+                    window.frame().validate();
+                    return null;
+                });
+                Thread.sleep(300);
+                edt(() -> { window.frame().validate(); window.refreshNow(); return null; });
+                window.charts().awaitDrawn();
+                java.awt.Dimension d = edt(() -> window.frame().getSize());
+                say("window " + d.width + "x" + d.height);
+                break;
+            }
             case CAMERA: {
                 SceneView.Camera c = SceneView.Camera.of(a.arg(0));
                 edt(() -> { window.camera(c); return null; });
@@ -432,6 +446,15 @@ public final class ScriptRunner {
             case "ik":
                 for (String l : edt(() -> window.kinematics().ikText()).split("\n")) say("ik: " + l);
                 break;
+            case "charts": {
+                window.charts().awaitDrawn();
+                double[] r = window.charts().timeRange();
+                StringBuilder shown = new StringBuilder();
+                for (int k = 1; k <= 3; k++) if (window.charts().fingerVisible(k)) shown.append(shown.length() == 0 ? "" : ",").append(k);
+                say(String.format(Locale.ROOT, "charts: time axis %s..%s s, %d points, fingers shown %s", Widgets.fmt(r[0], 3),
+                    Widgets.fmt(r[1], 3), window.charts().points(), shown.length() == 0 ? "none" : shown));
+                break;
+            }
             default: {
                 SimulationRunner.State s = window.runner().latest();
                 StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "state: t = %.4f s, %s", s.time(),

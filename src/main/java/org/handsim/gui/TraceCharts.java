@@ -18,6 +18,7 @@ import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -408,6 +409,23 @@ public final class TraceCharts implements AutoCloseable {
         synchronized (lock) {
             return new double[] {time.getLowerBound(), time.getUpperBound()};
         }
+    }
+
+    /**
+     * Draws the chart as the chart thread does, for tests (after {@link #awaitDrawn()}): returns
+     * where everything went.
+     */
+    ChartRenderingInfo drawInto(Graphics2D g, int w, int h) {
+        ChartRenderingInfo ri = new ChartRenderingInfo();
+        synchronized (lock) {
+            chart.draw(g, new Rectangle(0, 0, w, h), ri);
+        }
+        return ri;
+    }
+
+    /** The chart's plots, top to bottom (for tests). */
+    List<XYPlot> plots() {
+        return ((CombinedDomainXYPlot) chart.getPlot()).getSubplots();
     }
 
     @Override
