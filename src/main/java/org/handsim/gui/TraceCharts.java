@@ -49,7 +49,8 @@ import org.jfree.data.xy.XYSeriesCollection;
  *   <li>The time axis spans the run: [0, the scenario's duration] ({@link #setDuration}).</li>
  *   <li>One colour and one marker shape per finger (finger 1 circles, 2 squares, 3 triangles);
  *       joints k2 solid, k3 dashed. The markers of the three fingers sit at different times
- *       (every {@value #MARKER_EVERY} samples, shifted by a third of that per finger), so
+ *       (about {@value #MARKERS} per series over the run, each finger's shifted by a third of
+ *       the spacing), so
  *       fingers that move alike — fingers 1 and 2 often do — stay distinguishable where their
  *       lines coincide.</li>
  *   <li>The legend has one entry per finger and per joint: clicking one hides or shows those
@@ -79,8 +80,8 @@ public final class TraceCharts implements AutoCloseable {
     public static final int[] FINGER_RGB = {0x1F77B4, 0x2CA02C, 0xD62728};
     /** Points kept per series. */
     static final int MAX_ITEMS = 4000;
-    /** Samples between two markers of one finger. */
-    static final int MARKER_EVERY = 30;
+    /** Markers per series over the run's duration (about). */
+    static final int MARKERS = 14;
     /** Pixels between neighbouring plots. */
     static final int GAP = 16;
     private static final double[] MINIMUM_RANGE = {5, 5, 0.1, 1};
@@ -97,6 +98,7 @@ public final class TraceCharts implements AutoCloseable {
     private long generation = -1;
     private long rowIndex;
     private int stride = 1;
+    private long markerEvery = 40;
     private double duration = 10;
     private final boolean[] fingerVisible = {true, true, true};
     private final boolean[] jointVisible = {true, true};
@@ -138,7 +140,7 @@ public final class TraceCharts implements AutoCloseable {
                     series[p][i] = s;
                     data.addSeries(s);
                     XYSeries ms = new XYSeries(name + " markers", true, true);
-                    ms.setMaximumItemCount(MAX_ITEMS / MARKER_EVERY + 2);
+                    ms.setMaximumItemCount(MAX_ITEMS);
                     markers[p][i] = ms;
                     marks.addSeries(ms);
                     Color c = new Color(FINGER_RGB[k]);
@@ -264,6 +266,7 @@ public final class TraceCharts implements AutoCloseable {
         tasks.add(() -> {
             duration = d;
             stride = (int) Math.max(1, Math.ceil(d / SimulationRunner.TRACE_INTERVAL_S / (MAX_ITEMS - 2)));
+            markerEvery = Math.max(6, Math.round(d / SimulationRunner.TRACE_INTERVAL_S / stride / MARKERS));
             time.setRange(0, d);
         });
         flush();
@@ -510,7 +513,7 @@ public final class TraceCharts implements AutoCloseable {
         double t = row[1];
         for (int k = 0; k < 3; k++) {
             int o = 2 + 7 * k;
-            boolean mark = sample % MARKER_EVERY == (long) k * MARKER_EVERY / 3;
+            boolean mark = sample % markerEvery == (long) k * markerEvery / 3;
             for (int j = 0; j < 2; j++) {
                 for (int p = 0; p < 3; p++) {
                     series[p][2 * k + j].add(t, row[o + 2 * p + j], false);
