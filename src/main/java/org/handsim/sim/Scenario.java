@@ -31,8 +31,9 @@ import org.handsim.util.JsonObject;
  *   "hand": { "position_m": [0,0,0], "rotation_rad": [0,0,0] },   // world <- palm (axis-angle)
  *   "gravity_m_s2": [-9.81, 0, 0],            // world frame
  *   "object": {                                // optional
- *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file
- *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24 },
+ *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file; .wrl, .obj or .stl
+ *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24,
+ *     "units": "m" },                          // the file's unit: mm, cm or m (default m)
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
  *     "M3": [ {"type": "trapezoid", "to": 17500, "v_max": 5000, "a_max": 25000},
