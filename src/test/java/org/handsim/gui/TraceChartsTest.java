@@ -108,4 +108,35 @@ class TraceChartsTest {
             }
         }
     }
+
+    @Test
+    void theLegendHasOneEntryPerFingerAndJointAndAClickHidesIt() throws Exception {
+        try (TraceCharts c = new TraceCharts()) {
+            c.setDuration(2);
+            feed(c, 2, 1);
+            c.awaitDrawn();
+            BufferedImage img = new BufferedImage(440, 780, BufferedImage.TYPE_INT_RGB);
+            Graphics2D g = img.createGraphics();
+            ChartRenderingInfo info = c.drawInto(g, 440, 780);
+            g.dispose();
+            List<String> keys = new ArrayList<>();
+            java.awt.Point finger3 = null;
+            for (Object o : info.getEntityCollection().getEntities()) {
+                if (o instanceof org.jfree.chart.entity.LegendItemEntity) {
+                    org.jfree.chart.entity.LegendItemEntity e = (org.jfree.chart.entity.LegendItemEntity) o;
+                    keys.add(String.valueOf(e.getSeriesKey()));
+                    if ("finger3".equals(e.getSeriesKey())) {
+                        java.awt.Rectangle b = e.getArea().getBounds();
+                        finger3 = new java.awt.Point((int) b.getCenterX(), (int) b.getCenterY());
+                    }
+                }
+            }
+            assertEquals(List.of("finger1", "finger2", "finger3", "joint2", "joint3"), keys);
+            assertTrue(c.fingerVisible(3));
+            c.toggle("finger3");
+            c.awaitDrawn();
+            assertTrue(!c.fingerVisible(3) && c.fingerVisible(1), "finger 3 hidden, the others shown");
+            assertEquals(finger3 != null, true);
+        }
+    }
 }

@@ -37,7 +37,8 @@ import org.junit.jupiter.api.Test;
  *   <li>a scenario saved from the window runs in {@code handsim run} to the window's trace, to
  *       the last digit, and the window's exported trace equals {@code handsim run}'s trace.csv;</li>
  *   <li>at 1024 × 768 the charts and the status bar are on screen (pixels);</li>
- *   <li>the shortcuts act (Space, →, R through real key events; menu items);</li>
+ *   <li>the shortcuts act (Space, →, R through real key events; menu items); the Kinematics
+ *       preview shows the contacts a pose would have;</li>
  *   <li>charts span the run, series hide from the View menu; camera actions; expected errors
  *       and field names in scripts.</li>
  * </ul>
@@ -225,6 +226,13 @@ class WindowToolTest {
         Path shown = dir.resolve("three.png"), hidden = dir.resolve("hidden.png");
         Path script = dir.resolve("keys.txt");
         Files.writeString(script, String.join("\n",
+            "# the Kinematics preview collides as the simulation does: finger 3 into the paper's cube",
+            "press Kinematics",
+            "set fk3.counts 6500",
+            "assert-contacts 2",
+            "assert-status finger 3 touches the object (2 contacts)",
+            "set fk3.counts 3000",
+            "assert-contacts 0",
             "speed 0.25",
             "key SPACE",
             "assert-runstate running",
