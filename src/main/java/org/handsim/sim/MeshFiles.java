@@ -74,7 +74,7 @@ public final class MeshFiles {
      * @throws ScenarioException {@code FILE:LINE:COL: message} or {@code FILE: byte N: message}
      */
     public static Loaded load(Path file, int divisions, double scale) {
-        if (!Files.isRegularFile(file)) throw new ScenarioException(file + ": no such file");
+        if (!Files.isRegularFile(file)) throw new ScenarioException(file + ":1:1: cannot read the file: no such file");   // the VRML loader's words
         String label = file.getFileName().toString();
         Format f = Format.of(file);
         try {
@@ -101,7 +101,7 @@ public final class MeshFiles {
         } catch (VrmlParseException | MeshFileException e) {
             throw new ScenarioException(e.getMessage(), e);
         } catch (IOException e) {
-            throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
+            throw new ScenarioException(file + ":1:1: cannot read the file: " + e.getMessage(), e);
         }
     }
 }
