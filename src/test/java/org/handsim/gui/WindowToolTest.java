@@ -89,6 +89,10 @@ class WindowToolTest {
         Path dir = Files.createTempDirectory("handsim-window-test");
         Path stl = mugStl(dir), obj = wideObj(dir);
         Path a = dir.resolve("stl.png"), b = dir.resolve("obj.png"), none = dir.resolve("none.png");
+        Path dark = dir.resolve("black.png"), darkNone = dir.resolve("black-hidden.png");
+        Path black = dir.resolve("black.wrl");
+        Files.writeString(black, "#VRML V2.0 utf8\nShape { appearance Appearance { material Material { diffuseColor 0 0 0 } }\n"
+            + " geometry Box { size 0.08 0.08 0.08 } }\n");
         Path script = dir.resolve("import.txt");
         Files.writeString(script, String.join("\n",
             "# fingers part closed: an object where the cube was would start inside them",
@@ -114,6 +118,12 @@ class WindowToolTest {
             "screenshot " + b,
             "show object off",
             "screenshot " + none,
+            "show object on",
+            "import " + black,
+            "assert-contacts 0",
+            "screenshot " + dark,
+            "show object off",
+            "screenshot " + darkNone,
             ""));
         GuiWindowTest.Child c = runGui(dir, "--script", script.toString());
         assertEquals(0, c.code(), c.log());
@@ -133,6 +143,13 @@ class WindowToolTest {
         }
         BufferedImage n = ImageIO.read(none.toFile());
         assertTrue(fraction(n, regions(c.log(), none)[0], (x, y) -> objectRed(n.getRGB(x, y))) < 0.001, "hidden, the red pixels go");
+        // a black model shows against the background: where it is, the view differs by more than 200
+        // (of 765) from the view without it; on the old background (0x2A313B, 150 from black) it did not
+        BufferedImage k = ImageIO.read(dark.toFile()), kn = ImageIO.read(darkNone.toFile());
+        Rectangle view = regions(c.log(), dark)[0];
+        double blackShows = fraction(k, view, (x, y) -> differs(k.getRGB(x, y), kn.getRGB(x, y), 200));
+        System.out.printf("black model: %.1f%% of the view differ by more than 200 from the view without it%n", 100 * blackShows);
+        assertTrue(blackShows > 0.01, "a black model is visible: " + blackShows);
         VrmlTesting.deleteTree(dir);
     }
 
