@@ -12,7 +12,6 @@ import java.awt.KeyEventDispatcher;
 import java.awt.KeyboardFocusManager;
 import java.awt.Rectangle;
 import java.awt.Robot;
-import java.awt.Toolkit;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
@@ -704,10 +703,4 @@ public final class HandSimWindow {
         sim.tick();
         charts.flush();
     }
-
-    /** Whether the window's frame is on screen with the toolkit's keyboard focus. */
-    boolean focused() { return frame.isFocused(); }
-
-    /** The toolkit, for the key tests. */
-    static Toolkit toolkit() { return Toolkit.getDefaultToolkit(); }
 }

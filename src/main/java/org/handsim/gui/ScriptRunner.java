@@ -2,11 +2,9 @@ package org.handsim.gui;
 
 import java.awt.Component;
 import java.awt.Container;
-import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Files;
@@ -19,7 +17,6 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
-import javax.imageio.ImageIO;
 import javax.swing.AbstractButton;
 import javax.swing.JComboBox;
 import javax.swing.JSlider;
@@ -27,7 +24,6 @@ import javax.swing.SwingUtilities;
 import javax.swing.text.JTextComponent;
 import org.handsim.sim.ClutchState;
 import org.handsim.sim.Home;
-import org.handsim.util.AtomicFile;
 
 /**
  * Runs a {@link Script} against a {@link HandSimWindow}, one action after the other, on the
