@@ -15,7 +15,6 @@ import org.handsim.collision.KdopTree;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
-import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.util.JsonWriter;
 import org.handsim.util.SteadyTiming;
@@ -24,16 +23,15 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlParseException;
-import org.handsim.vrml.VrmlScene;
+import org.handsim.sim.MeshFiles;
+import org.handsim.sim.ScenarioException;
 
 /**
  * {@code handsim collide A.wrl B.wrl [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}: the
  * contact geometry of two VRML objects (paper Section IV, first two steps).
  */
 @Command(name = "collide", mixinStandardHelpOptions = true,
-    description = {"Intersects two VRML97 objects with k-DOP trees (B placed by --pose-b).",
+    description = {"Intersects two objects (VRML97 .wrl, OBJ .obj or STL .stl) with k-DOP trees (B placed by --pose-b).",
         "Prints {\"intersecting\":bool,\"pairs\":n,\"segments\":n,",
         "  \"patches\":[{\"center\":[x,y,z],\"normal\":[x,y,z],\"area_m2\":a,\"pairs\":n}],",
         "  \"counters\":{\"node_tests\":n,\"tri_tests\":n},\"build_ms\":t,\"query_us_median\":t}",
@@ -91,23 +89,20 @@ public final class CollideCommand implements Callable<Integer> {
     }
 
     /**
-     * Loads a VRML97 file as one triangle mesh in the file's frame (VrmlLoader, then the
-     * tessellation walk with every transform applied; vertices as in the file, not welded).
+     * Loads an object file — VRML97, OBJ or STL ({@link MeshFiles}) — as one triangle mesh in the
+     * file's frame (every transform applied; vertices as in the file, not welded).
      *
-     * @throws CliError exit 3 with FILE:LINE:COL: message when the file cannot be loaded
+     * @throws CliError exit 3 with FILE:LINE:COL: message (binary STL: FILE: byte N: message)
      */
+    /** Segments round VRML Sphere, Cylinder and Cone nodes (the VRML loader's default). */
+    static final int VRML_DIVISIONS = 32;
+
     static TriangleMesh loadMesh(Path file) {
         if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
-        VrmlScene scene;
         try {
-            scene = new VrmlLoader().load(file);
-        } catch (VrmlParseException e) {
+            return MeshFiles.load(file, VRML_DIVISIONS, 1.0).mesh();
+        } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage(), e);
-        }
-        try {
-            return new TessellationWalk().name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
-        } catch (IllegalStateException | IllegalArgumentException e) {
-            throw new CliError(CliError.LOAD, file + ":1:1: " + e.getMessage(), e);
         }
     }
 

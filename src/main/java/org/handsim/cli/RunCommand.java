@@ -84,7 +84,7 @@ public final class RunCommand implements Callable<Integer> {
             Resolution.Choice c = o == null ? null : chooseResolution(o, toleranceM, err);
             if (o == null) err.println("handsim: --tolerance has no effect: the scenario has no object");
             if (c != null && !c.fixedMesh()) {
-                scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions(), o.friction()));
+                scenario = scenario.withObject(o.withDivisions(c.divisions()));
                 toleranceLine = String.format(Locale.ROOT, "tolerance %s: divisions %d (%d triangles), expected worst contact-centre error %s"
                     + " (object radius %s, chart 2-tessellation)", Resolution.mm(toleranceM), c.divisions(), c.triangles(),
                     Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));
@@ -110,7 +110,7 @@ public final class RunCommand implements Callable<Integer> {
                 throw new CliError(CliError.LOAD, e.getMessage());
             }
             setup = (System.nanoTime() - t0) / 1e9;
-            List<String> warnings = startWarnings(model);
+            List<String> warnings = model.startWarnings();
             for (String w : warnings) err.println("handsim: warning: " + w);
             long t1 = System.nanoTime();
             try {
@@ -162,23 +162,6 @@ public final class RunCommand implements Callable<Integer> {
         return 0;
     }
 
-    /**
-     * What the user should know before trusting the run: a finger whose links are already in
-     * the object at t = 0 (a misplaced object) gets contact forces from the first step on, as if
-     * it had closed onto it there.
-     */
-    static List<String> startWarnings(HandModel m) {
-        List<String> w = new ArrayList<>();
-        for (int k = 1; k <= 3; k++) {
-            int n = m.contacts(k).size();
-            if (n > 0) {
-                w.add(String.format(Locale.ROOT, "finger %d starts in contact with the object (%d contact%s at t = 0): its links begin inside it;"
-                    + " check the object's pose", k, n, n == 1 ? "" : "s"));
-            }
-        }
-        return w;
-    }
-
     /** {@code --tolerance} as metres; exit 2 naming the value if it is not a length. */
     private static double parseTolerance(String text) {
         try {
@@ -196,7 +179,7 @@ public final class RunCommand implements Callable<Integer> {
     private Resolution.Choice chooseResolution(Scenario.ObjectPlacement o, double toleranceM, PrintWriter err) {
         Resolution.Choice c;
         try {
-            c = Resolution.choose(o.file(), o.scale(), toleranceM);
+            c = Resolution.choose(o.file(), o.meshScale(), toleranceM);
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }

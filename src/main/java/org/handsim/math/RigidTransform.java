@@ -76,6 +76,31 @@ public final class RigidTransform {
     }
 
     /**
+     * The axis-angle vector of the rotation part (inverse of Rodrigues' formula, {@link #fromPose}), rad:
+     * direction = axis, length = angle in [0, π]. The angle is
+     * {@code atan2(2 sin θ, 2 cos θ)} from the antisymmetric part and the trace (well conditioned
+     * near 0 and π, where {@code acos} of the trace is not).
+     */
+    public double[] rotationVector() {
+        double r00 = get(0, 0), r11 = get(1, 1), r22 = get(2, 2);
+        double ax = get(2, 1) - get(1, 2), ay = get(0, 2) - get(2, 0), az = get(1, 0) - get(0, 1);
+        double s = Math.sqrt(ax * ax + ay * ay + az * az);
+        double angle = Math.atan2(s, r00 + r11 + r22 - 1);
+        if (angle < 1e-12) return new double[3];
+        if (s < 1e-9) {
+            // angle = π: R = 2 n nᵀ − I, so |n_i| from the diagonal; the signs relative to the
+            // largest component from its row (R_ij = 2 n_i n_j)
+            double[] n = {Math.sqrt(Math.max(0, (r00 + 1) / 2)), Math.sqrt(Math.max(0, (r11 + 1) / 2)), Math.sqrt(Math.max(0, (r22 + 1) / 2))};
+            int i = n[0] >= n[1] && n[0] >= n[2] ? 0 : n[1] >= n[2] ? 1 : 2;
+            for (int j = 0; j < 3; j++) {
+                if (j != i && get(i, j) < 0) n[j] = -n[j];
+            }
+            return new double[] {angle * n[0], angle * n[1], angle * n[2]};
+        }
+        return new double[] {angle * ax / s, angle * ay / s, angle * az / s};
+    }
+
+    /**
      * The standard Denavit–Hartenberg transform {@code Rz(θ)·Tz(d)·Tx(a)·Rx(α)}
      * (paper Table I; Fu–Gonzalez–Lee eq. 2.2-29). Angles in radians, lengths in metres.
      */

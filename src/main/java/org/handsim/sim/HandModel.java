@@ -83,6 +83,7 @@ public final class HandModel {
     private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3], contactQ = new double[3];
     private final double[] maxForce = new double[3];
     private final long[] counters = new long[Counter.values().length];
+    private final int[] contactsAtStart = new int[3];
 
     // scratch (no allocation in the step)
     private final ContactForces[] solvers = {new ContactForces(), new ContactForces(), new ContactForces()};   // per finger (warm starts)
@@ -179,6 +180,7 @@ public final class HandModel {
             contactQ[i] = Double.NaN;
             maxForce[i] = 0;
             updateFinger(k, false);
+            contactsAtStart[i] = contacts[i].size();
         }
         record();
     }
@@ -596,6 +598,24 @@ public final class HandModel {
 
     /** Whether work saving is on ({@link #lazy(boolean)}). */
     public boolean isLazy() { return lazy; }
+
+    /**
+     * What the user should know before trusting the run, one sentence each (shown by
+     * {@code handsim run} on standard error and in summary.json, and by the window): a finger
+     * whose links are already in the object at t = 0 (a misplaced object) gets contact forces
+     * from the first step on, as if it had closed onto it there.
+     */
+    public java.util.List<String> startWarnings() {
+        java.util.List<String> w = new java.util.ArrayList<>();
+        for (int k = 1; k <= 3; k++) {
+            int n = contactsAtStart[k - 1];
+            if (n > 0) {
+                w.add(String.format(java.util.Locale.ROOT, "finger %d starts in contact with the object (%d contact%s at t = 0): its links begin inside it;"
+                    + " check the object's pose", k, n, n == 1 ? "" : "s"));
+            }
+        }
+        return w;
+    }
 
     // ------------------------------------------------------------------ read-out
     public Scenario scenario() { return scenario; }

@@ -12,7 +12,6 @@ import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlParseException;
 import org.handsim.vrml.VrmlScene;
 
 /**
@@ -61,8 +60,8 @@ public final class SceneGeometry implements LinkContacts {
      * @throws ScenarioException naming the file, line and column if a model cannot be loaded
      */
     public SceneGeometry(Scenario.ObjectPlacement object, int k) {
-        objectMesh = mesh(object.file(), object.divisions(), object.scale());
-        objectTree = tree(object.file(), object.divisions(), object.scale(), k, objectMesh);
+        objectMesh = mesh(object.file(), object.divisions(), object.meshScale());
+        objectTree = tree(object.file(), object.divisions(), object.meshScale(), k, objectMesh);
         for (int j = 1; j <= 3; j++) {
             Path f = linkFile(j);
             linkMeshes[j - 1] = mesh(f, LINK_DIVISIONS, 1.0);
@@ -86,7 +85,7 @@ public final class SceneGeometry implements LinkContacts {
         }
         double[] cw = object.worldFromObject().apply(centroid);
         centroidAndRadius = new double[] {cw[0], cw[1], cw[2], Math.sqrt(r)};
-        thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.scale(),
+        thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.meshScale(),
             x -> minWidth(objectMesh));
     }
 
@@ -161,20 +160,17 @@ public final class SceneGeometry implements LinkContacts {
     }
 
     /**
-     * Loads (once per file, divisions and scale) a VRML file as one triangle mesh in metres,
-     * degenerate triangles dropped.
+     * Loads (once per file, divisions and scale) an object's file — VRML97, OBJ or STL, by its
+     * type ({@link MeshFiles}) — as one triangle mesh in metres, degenerate triangles dropped.
      *
-     * @throws ScenarioException with the loader's {@code FILE:LINE:COL: message}
+     * @throws ScenarioException with the loader's {@code FILE:LINE:COL: message} (or
+     *         {@code FILE: byte N: message} for binary STL)
      */
     public static TriangleMesh mesh(Path file, int divisions, double scale) {
         String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale;
         TriangleMesh m = MESHES.get(key);
         if (m != null) return m;
-        try {
-            m = walk(new VrmlLoader().divisions(divisions).normals(false).load(file), file.getFileName().toString(), scale);
-        } catch (VrmlParseException e) {
-            throw new ScenarioException(e.getMessage(), e);
-        }
+        m = MeshFiles.load(file, divisions, scale).mesh();
         if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
         MESHES.putIfAbsent(key, m);
         return MESHES.get(key);
