@@ -27,7 +27,8 @@ public final class HandSim implements Runnable {
         SweepCommand.class,
         GuiCommand.class,
         TradeoffCommand.class,
-        SwingCommand.class
+        SwingCommand.class,
+        PlanCommand.class
         // sub-commands register here, one line each
     );
 

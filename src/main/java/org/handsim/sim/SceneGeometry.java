@@ -180,7 +180,7 @@ public final class SceneGeometry implements LinkContacts {
         return new TessellationWalk().scale(scale).name(name).run(scene.getSceneGroup()).merged();
     }
 
-    private static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {
+    static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {
         String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
         return TREES.computeIfAbsent(key, x -> KdopTree.build(m, k));
     }
@@ -223,12 +223,89 @@ public final class SceneGeometry implements LinkContacts {
      * the world). True when they are apart, so the tree query can be skipped.
      */
     private boolean apart(int link, double[] w) {
-        double[] s = linkSpheres[link - 1];
+        return apart(linkSpheres[link - 1], w);
+    }
+
+    private boolean apart(double[] s, double[] w) {
         double x = w[0] * s[0] + w[1] * s[1] + w[2] * s[2] + w[3] - objectCentreWorld[0];
         double y = w[4] * s[0] + w[5] * s[1] + w[6] * s[2] + w[7] - objectCentreWorld[1];
         double z = w[8] * s[0] + w[9] * s[1] + w[10] * s[2] + w[11] - objectCentreWorld[2];
         double reach = s[3] + objectRadius;
         return x * x + y * y + z * z > reach * reach;
+    }
+
+    /**
+     * Whether a part of the hand placed in the world by the 12-value {@code worldFromPart}
+     * touches the object: part 0 is the palm ({@code vrml/hand/palm.wrl}, palm frame; loaded
+     * on first use — the step never collides the palm), parts 1..3 the links (frame {kj}).
+     * The test is the contact query's own (surface intersection, k-DOP trees), stopped at the
+     * first intersecting triangle pair; a far part costs its bounding-sphere test. Used by the
+     * planner's approach ({@code plan.Autograsp}).
+     */
+    public boolean touches(int part, double[] worldFromPart) {
+        if (part < 0 || part > 3) throw new IllegalArgumentException("part must be 0 (palm) to 3, got " + part);
+        if (part == 0 && palmTree == null) {
+            Path f = palmFile();
+            TriangleMesh pm = mesh(f, LINK_DIVISIONS, 1.0);
+            palmSphere = boundingSphere(pm);
+            palmTree = tree(f, LINK_DIVISIONS, 1.0, objectTree.k(), pm);
+        }
+        if (apart(part == 0 ? palmSphere : linkSpheres[part - 1], worldFromPart)) return false;
+        poseOfObjectInLink(worldFromPart);
+        return query.intersects(part == 0 ? palmTree : linkTrees[part - 1], objectTree, pose, 0, result);
+    }
+
+    private KdopTree palmTree;
+    private double[] palmSphere;
+
+    /**
+     * The object's centroid in the world frame (metres): the volume centroid (divergence
+     * theorem) of a closed mesh with a positive volume, else the area-weighted centroid of its
+     * triangles.
+     */
+    public double[] objectCentroid() {
+        double[] v = objectMesh.vertices();
+        int[] t = objectMesh.triangles();
+        double vol = 0, cx = 0, cy = 0, cz = 0;
+        for (int i = 0; i < t.length; i += 3) {
+            int a = 3 * t[i], b = 3 * t[i + 1], c = 3 * t[i + 2];
+            double d = v[a] * (v[b + 1] * v[c + 2] - v[b + 2] * v[c + 1]) - v[a + 1] * (v[b] * v[c + 2] - v[b + 2] * v[c])
+                + v[a + 2] * (v[b] * v[c + 1] - v[b + 1] * v[c]);
+            vol += d;
+            cx += d * (v[a] + v[b] + v[c]);
+            cy += d * (v[a + 1] + v[b + 1] + v[c + 1]);
+            cz += d * (v[a + 2] + v[b + 2] + v[c + 2]);
+        }
+        double[] local;
+        if (objectMesh.isClosed() && vol > 0) {
+            local = new double[] {cx / (4 * vol), cy / (4 * vol), cz / (4 * vol)};
+        } else {
+            double[] ar = objectMesh.areas();
+            double sa = 0;
+            local = new double[3];
+            for (int i = 0, f = 0; i < t.length; i += 3, f++) {
+                for (int j = 0; j < 3; j++) {
+                    local[j] += ar[f] * (v[3 * t[i] + j] + v[3 * t[i + 1] + j] + v[3 * t[i + 2] + j]) / 3;
+                }
+                sa += ar[f];
+            }
+            for (int j = 0; j < 3; j++) local[j] /= sa;
+        }
+        return RigidTransform.of(worldFromObject).apply(local);
+    }
+
+    /** The largest distance from {@code p} (world frame) to a vertex of the object, metres. */
+    public double objectReach(double[] p) {
+        double[] v = objectMesh.vertices();
+        RigidTransform w = RigidTransform.of(worldFromObject);
+        double[] q = new double[3];
+        double r = 0;
+        for (int i = 0; i < v.length; i += 3) {
+            q[0] = v[i]; q[1] = v[i + 1]; q[2] = v[i + 2];
+            w.apply(q, q);
+            r = Math.max(r, sq(q[0] - p[0]) + sq(q[1] - p[1]) + sq(q[2] - p[2]));
+        }
+        return Math.sqrt(r);
     }
 
     @Override
