@@ -22,6 +22,7 @@ public final class BenchMain {
         SUITES.put("collision", new CollisionBench(false));
         SUITES.put("collision-fcl", new CollisionBench(true));
         SUITES.put("vrml", new VrmlBench());
+        SUITES.put("plan", new PlanBench());
     }
 
     public static void main(String[] args) throws Exception {
