@@ -46,6 +46,12 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: the file's, else all cores)")
     Integer threads;
 
+    @Option(names = "--engine", paramLabel = "local|spark", description = "local threads (default) or an Apache Spark job", defaultValue = "local")
+    String engine;
+
+    @Option(names = "--master", paramLabel = "URL", description = "Spark master (default local[*]; spark://HOST:7077 for a cluster)")
+    String master;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
@@ -57,6 +63,8 @@ public final class SweepCommand implements Callable<Integer> {
         }
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
+        if (!engine.equals("local")) return SweepJob.runOnEngine(this, sweep, n, engine, master);
+        if (master != null) throw CliError.usage("handsim: --master needs --engine spark");
         List<Sweep.Run> runs = sweep.runs();
         ExecutorService pool = Executors.newFixedThreadPool(n);
         AtomicInteger done = new AtomicInteger();
@@ -94,7 +102,7 @@ public final class SweepCommand implements Callable<Integer> {
         return failed == 0 ? 0 : 1;
     }
 
-    private static String runOne(Sweep.Run run) {
+    static String runOne(Sweep.Run run) {
         String label = csvText(run.label());
         String scenarioName = "";
         try {

@@ -46,7 +46,7 @@ import scala.runtime.BoxedUnit;
  *
  * <p><b>Cluster.</b> With a {@code spark://} master the executors get HandSim's jars
  * ({@code spark.jars}: the files {@code handsim-jars.txt} lists, from the folder of this jar),
- * the Java 17 {@code --add-opens} Spark needs, headless Java3D, and {@code handsim.home} of
+ * headless Java3D, and {@code handsim.home} of
  * the driver: executors read the hand's meshes and the object file at the driver's paths (one
  * machine, or the same install path and a shared file system).
  */
@@ -55,10 +55,6 @@ public final class SparkEngine implements TrialEngine {
     public static final int TASKS_PER_CORE = 4;
     /** Most task indices in one partition. */
     public static final int MAX_CHUNK = 100;
-    /** The JVM options Spark 3.5 needs on Java 17 (its launcher passes the same). */
-    public static final String JAVA17_OPENS = String.join(" ", List.of("java.lang", "java.lang.invoke", "java.lang.reflect",
-        "java.io", "java.net", "java.nio", "java.util", "java.util.concurrent", "java.util.concurrent.atomic", "sun.nio.ch",
-        "sun.nio.cs", "sun.security.action", "sun.util.calendar").stream().map(p -> "--add-opens=java.base/" + p + "=ALL-UNNAMED").toList());
 
     private volatile int duplicates;
 
@@ -87,7 +83,8 @@ public final class SparkEngine implements TrialEngine {
         }
         if (!master.startsWith("local")) {
             c.setJars(handsimJars().toArray(new String[0]));
-            c.set("spark.executor.extraJavaOptions", JAVA17_OPENS + " -Xss16m -Djava.awt.headless=true -Dj3d.rend=noop -Dhandsim.home="
+            // (Spark 3.5 adds the Java 17 --add-opens to executors itself)
+            c.set("spark.executor.extraJavaOptions", "-Xss16m -Djava.awt.headless=true -Dj3d.rend=noop -Dhandsim.home="
                 + Home.dir().toAbsolutePath());
         }
         return c;
