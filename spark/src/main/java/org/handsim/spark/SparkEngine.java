@@ -8,9 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -105,7 +103,9 @@ public final class SparkEngine implements TrialEngine {
         } catch (URISyntaxException e) {
             throw new IOException("cannot locate the HandSim jars: " + e.getMessage(), e);
         }
-        Path lib = Files.isDirectory(here) ? null : here.getParent();
+        // the install's lib/ beside this jar; in the tests (classes from a folder) the installed lib/ the build names
+        Path lib = !Files.isDirectory(here) ? here.getParent()
+            : System.getProperty("handsim.sparkLib") != null ? Path.of(System.getProperty("handsim.sparkLib")) : null;
         List<String> jars = new ArrayList<>();
         try (InputStream in = SparkEngine.class.getResourceAsStream("handsim-jars.txt")) {
             if (in == null || lib == null) throw new IOException("a cluster run needs HandSim installed (gradle :spark:installDist): "
@@ -158,28 +158,19 @@ public final class SparkEngine implements TrialEngine {
         Function0<Object> result = (Function0<Object> & Serializable) () -> BoxedUnit.UNIT;
         List<Object> partitionIds = new ArrayList<>(ids);
         SimpleFutureAction<Object> f = sc.sc().submitJob(rdd.rdd(), work, CollectionConverters.asScala(partitionIds).toSeq(), handler, result);
-        Map<Integer, Chunk<R>> early = new HashMap<>();
-        int next = 0, dropped = 0;
-        while (next < parts) {
+        ChunkOrder<R> order = new ChunkOrder<>(parts, size, sink);
+        while (!order.complete()) {
             Chunk<R> c = done.poll(50, TimeUnit.MILLISECONDS);
             if (c == null) {
                 if (f.isCompleted() && done.isEmpty()) {
                     f.get();   // throws the job's failure
-                    throw new IllegalStateException("the Spark job ended with partition " + next + " of " + parts + " missing");
+                    throw new IllegalStateException("the Spark job ended with partition " + order.next() + " of " + parts + " missing");
                 }
                 continue;
             }
-            if (c.part() < next || early.containsKey(c.part())) {
-                dropped++;
-                continue;
-            }
-            early.put(c.part(), c);
-            for (Chunk<R> d; (d = early.remove(next)) != null; next++) {
-                if (d.from() != next * size) throw new IllegalStateException("partition " + next + " starts at " + d.from());
-                for (R r : d.results()) sink.accept(r);
-            }
+            order.offer(c);
         }
         f.get();
-        return dropped;
+        return order.dropped();
     }
 }

@@ -1,0 +1,107 @@
+package org.handsim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.handsim.plan.PlanTesting;
+import org.junit.jupiter.api.Test;
+
+/** {@code handsim plan}: the outputs of a small plan, and one-line errors with exit 2 or 3 for bad targets and options. */
+class PlanCommandTest {
+    static final String MUG = PlanTesting.MUG.toString();
+
+    @Test
+    void aSmallPlanWritesEveryOutput() throws Exception {
+        Path dir = Files.createTempDirectory("plan-cmd");
+        try {
+            CliTesting.Run r = CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "2", "--out", dir.toString());
+            assertEquals(0, r.code(), r.err());
+            assertTrue(r.out().startsWith("plan-mug: 8 trials (0 failed)"), r.out());
+            for (String f : new String[] {"plan.csv", "plan.json", "best/01.json", "best/08.json", "epsilon-histogram.png",
+                "epsilon-histogram.svg", "epsilon-directions.png", "epsilon-directions.svg"}) {
+                assertTrue(Files.isRegularFile(dir.resolve(f)), f);
+            }
+            assertFalse(Files.exists(dir.resolve("best/09.json")), "8 trials: 8 best files");
+            List<String> csv = Files.readAllLines(dir.resolve("plan.csv"));
+            assertEquals(9, csv.size());
+            // the same plan on one thread: the same table
+            Path one = dir.resolve("one");
+            assertEquals(0, CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "1", "--out", one.toString()).code());
+            assertEquals(PlanTesting.withoutTiming(csv), PlanTesting.withoutTiming(Files.readAllLines(one.resolve("plan.csv"))));
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    @Test
+    void badTargetsAreOneLineExit3() throws Exception {
+        Path dir = Files.createTempDirectory("plan-bad");
+        try {
+            CliTesting.Run missing = CliTesting.run("plan", dir.resolve("nothing.wrl").toString());
+            assertEquals(3, missing.code());
+            assertOneLine(missing.err(), "nothing.wrl");
+
+            Path broken = dir.resolve("broken.wrl");
+            Files.writeString(broken, "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 ] } } }\n");
+            CliTesting.Run bad = CliTesting.run("plan", broken.toString(), "--out", dir.resolve("o").toString());
+            assertEquals(3, bad.code());
+            assertOneLine(bad.err(), "broken.wrl:");
+            assertFalse(Files.exists(dir.resolve("o/plan.csv")), "nothing written");
+
+            Path noObject = dir.resolve("empty.json");
+            Files.writeString(noObject, "{\"name\": \"empty\", \"dt_s\": 0.001, \"duration_s\": 1}");
+            CliTesting.Run none = CliTesting.run("plan", noObject.toString());
+            assertEquals(3, none.code());
+            assertOneLine(none.err(), "no object");
+
+            Path badJson = dir.resolve("bad.json");
+            Files.writeString(badJson, "{\"name\": \"x\", \"dt_s\": -1}");
+            CliTesting.Run bj = CliTesting.run("plan", badJson.toString());
+            assertEquals(3, bj.code());
+            assertOneLine(bj.err(), "dt_s");
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    @Test
+    void badOptionsAreOneLineExit2() {
+        String[][] cases = {
+            {"--trials", "0"}, {"--trials", "many"}, {"--threads", "0"}, {"--friction", "-0.5"}, {"--friction", "NaN"},
+            {"--engine", "hadoop"}, {"--master", "local[2]"}, {"--seed", "1.5"}};
+        String[] expect = {"--trials", "many", "--threads", "--friction", "--friction", "hadoop", "--master", "1.5"};
+        for (int c = 0; c < cases.length; c++) {
+            String[] args = new String[2 + cases[c].length];
+            args[0] = "plan";
+            args[1] = MUG;
+            System.arraycopy(cases[c], 0, args, 2, cases[c].length);
+            CliTesting.Run r = CliTesting.run(args);
+            assertEquals(2, r.code(), String.join(" ", args) + ": " + r.err());
+            assertTrue(r.err().contains(expect[c]), String.join(" ", args) + ": " + r.err());
+            assertFalse(r.err().contains("Exception"), r.err());
+        }
+    }
+
+    /** Without the spark/ build on the class path, --engine spark says how to get it, exit 2. */
+    @Test
+    void sparkEngineOutsideItsBuildSaysWhy() {
+        CliTesting.Run r = CliTesting.run("plan", MUG, "--engine", "spark");
+        assertEquals(2, r.code());
+        assertOneLine(r.err(), "./handsim");
+    }
+
+    static void assertOneLine(String err, String mentions) {
+        assertEquals(1, err.lines().count(), err);
+        assertTrue(err.contains(mentions), err);
+        assertFalse(err.contains("Exception"), err);
+    }
+
+    @Test
+    void noTargetIsExit2() {
+        assertEquals(2, CliTesting.run("plan").code());
+    }
+}
