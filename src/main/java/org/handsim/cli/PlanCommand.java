@@ -46,7 +46,7 @@ public final class PlanCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "S", description = "seed of the trials (default ${DEFAULT-VALUE})", defaultValue = "1")
     long seed;
 
-    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction of the evaluation (default 0.5)")
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction of the contacts (default: the template's object.friction, else 0.5)")
     Double friction;
 
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default out/plan-<name>)")
@@ -70,8 +70,9 @@ public final class PlanCommand implements Callable<Integer> {
         if (threads != null && threads < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + threads);
         if (!engine.equals("local") && !engine.equals("spark")) throw CliError.usage("handsim: --engine must be local or spark, got '" + engine + "'");
         if (master != null && !engine.equals("spark")) throw CliError.usage("handsim: --master needs --engine spark");
-        double mu = friction != null ? friction : FrictionCone.DEFAULT_MU;
-        if (!(mu >= 0) || !Double.isFinite(mu)) throw CliError.usage("handsim: --friction must be a finite number >= 0, got " + friction);
+        if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
+            throw CliError.usage("handsim: --friction must be a finite number >= 0, got " + friction);
+        }
         TrialEngine eng;
         try {
             eng = Engines.find(engine);
@@ -81,7 +82,7 @@ public final class PlanCommand implements Callable<Integer> {
         PlanSpec planSpec;
         TrialRunner runner;
         try {
-            planSpec = PlanSpec.forTarget(target, trials, seed, mu, FrictionCone.DEFAULT_EDGES);
+            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES);
             runner = new TrialRunner(planSpec);      // loads the object once here: a bad file is one error, not N rows
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());

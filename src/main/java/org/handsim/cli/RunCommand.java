@@ -73,7 +73,7 @@ public final class RunCommand implements Callable<Integer> {
             Resolution.Choice c = o == null ? null : chooseResolution(o, toleranceM, err);
             if (o == null) err.println("handsim: --tolerance has no effect: the scenario has no object");
             if (c != null && !c.fixedMesh()) {
-                scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions()));
+                scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions(), o.friction()));
                 toleranceLine = String.format(Locale.ROOT, "tolerance %s: divisions %d (%d triangles), expected worst contact-centre error %s"
                     + " (object radius %s, chart 2-tessellation)", Resolution.mm(toleranceM), c.divisions(), c.triangles(),
                     Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));

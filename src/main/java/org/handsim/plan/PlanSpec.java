@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
 import org.handsim.util.Json;
@@ -52,9 +53,12 @@ public record PlanSpec(String name, String target, String templateJson, String t
      * read) is placed at the origin with the default closing profile; a {@code .json} file is a
      * scenario used as template (it must have an object).
      *
+     * @param mu the Coulomb friction of the trials and of the evaluation; null: the template's
+     *           {@code object.friction}, else {@link FrictionCone#DEFAULT_MU}. Written into the
+     *           trials' scenarios ({@code object.friction}), so the closing and the evaluation use it
      * @throws ScenarioException naming the file (exit 3): unreadable, not a scenario, no object
      */
-    public static PlanSpec forTarget(Path target, int trials, long seed, double mu, int edges) {
+    public static PlanSpec forTarget(Path target, int trials, long seed, Double mu, int edges) {
         Path abs = target.toAbsolutePath().normalize();
         if (!Files.isRegularFile(abs)) throw new ScenarioException(target + ": no such file");
         Map<String, Object> t;
@@ -71,9 +75,15 @@ public record PlanSpec(String name, String target, String templateJson, String t
             name = stem(abs);
             t = objectTemplate(abs, name);
         }
+        @SuppressWarnings("unchecked")
+        Map<String, Object> obj = (Map<String, Object>) t.get("object");
+        double friction = mu != null ? mu : obj.get("friction") instanceof Number ? ((Number) obj.get("friction")).doubleValue()
+            : FrictionCone.DEFAULT_MU;
+        if (!(friction >= 0) || !Double.isFinite(friction)) throw new IllegalArgumentException("--friction must be a finite number >= 0, got " + friction);
+        obj.put("friction", friction);
         String text = JsonWriter.write(t);
         Scenario.parse(abs, text);   // the template must be a valid scenario as it will be run
-        return new PlanSpec(name, target.toString(), text, abs.toString(), trials, seed, mu, edges, DEFAULT_STANDOFF_MAX);
+        return new PlanSpec(name, target.toString(), text, abs.toString(), trials, seed, friction, edges, DEFAULT_STANDOFF_MAX);
     }
 
     /** The template of a bare object file: at the origin, scale 1, the default closing profile and time step. */

@@ -33,11 +33,12 @@ public final class HandClearance {
     public HandClearance(Scenario.ObjectPlacement object) {
         scene = new SceneGeometry(object, SceneGeometry.DEFAULT_K);
         for (int k = 1; k <= 3; k++) fk[k - 1] = new FingerKinematics(hand.finger(k));
-        centroid = scene.objectCentroid();
-        objectReach = scene.objectReach(centroid);
+        double[] cr = scene.centroidAndRadius();   // the torque origin c and R of the grasp evaluation
+        centroid = new double[] {cr[0], cr[1], cr[2]};
+        objectReach = cr[3];
     }
 
-    /** The object's centroid, world frame, metres ({@link SceneGeometry#objectCentroid}); a new array. */
+    /** The object's centroid, world frame, metres (the grasp evaluation's torque origin, {@link SceneGeometry#centroidAndRadius}); a new array. */
     public double[] objectCentroid() { return centroid.clone(); }
 
     /** The largest distance from the centroid to a vertex of the object, metres. */

@@ -1,6 +1,7 @@
 package org.handsim.sim;
 
 import org.handsim.contact.ContactForces;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
@@ -82,12 +83,17 @@ public final class HandModel {
     private final long[] counters = new long[Counter.values().length];
 
     // scratch (no allocation in the step)
-    private final ContactForces solver = new ContactForces();
+    private final ContactForces[] solvers = {new ContactForces(), new ContactForces(), new ContactForces()};   // per finger (warm starts)
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
     private boolean lazy = true;
     private final ContactSet eventContacts = new ContactSet();
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
+    private final double mu;                         // Coulomb coefficient of the contacts (0: the frictionless solve)
+    private final int coneEdges;
+    private final double[][] cones = {new double[0], new double[0], new double[0]};      // per finger: cone edges, 3·m per contact
+    private final double[][] conesFor = {new double[0], new double[0], new double[0]};   // per finger: the push directions they were made for
+    private final int[] conesCount = new int[3];
 
     /** Work counters, for the savings table (issue 8). */
     public enum Counter {
@@ -106,6 +112,8 @@ public final class HandModel {
         this.objectContacts = objectContacts;
         this.dynamics = dynamics;
         this.dt = scenario.dt();
+        this.mu = scenario.friction();
+        this.coneEdges = scenario.coneEdges();
         this.totalSteps = Math.round(Math.ceil(scenario.duration() / dt - 1e-9));
         this.recorder = record ? new Recorder() : null;
         this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
@@ -396,8 +404,9 @@ public final class HandModel {
 
     /**
      * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
-     * the contact forces that carry the transmitted part (eq 11 as non-negative least squares
-     * over the flexion joints k2, k3).
+     * the contact forces that carry the transmitted part over the flexion joints k2, k3: eq (11)
+     * as non-negative least squares without friction, the least-norm forces in the friction
+     * cones with it ({@link ContactForces#solveWithFriction}, DESIGN.md).
      */
     private void torquesAndForces(int k) {
         int i = k - 1;
@@ -424,13 +433,41 @@ public final class HandModel {
         tau[i][2] = tauDyn[i][2] + transmitted[1];
         ContactSet cs = contacts[i];
         int n = cs.size();
+        ContactForces solver = solvers[i];
         if (n > 0) {
-            solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            if (mu == 0) {
+                solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            } else {
+                solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
+            }
             for (int c = 0; c < n; c++) {
                 cs.forces[c] = solver.force(c);
+                solver.forceVector(c, cs.forceVectors, 3 * c);
                 cs.undetermined[c] = solver.undetermined(c);
             }
         }
+    }
+
+    /**
+     * The friction-cone edges of finger i's contacts ({@link FrictionCone}), made again only
+     * when the contacts' push directions changed (held links keep theirs for many steps).
+     */
+    private double[] conesOf(int i, ContactSet cs) {
+        int n = cs.size(), m = coneEdges;
+        boolean same = conesCount[i] == n;
+        for (int c = 0; c < 3 * n && same; c++) same = conesFor[i][c] == cs.pushDirs[c];
+        if (same) return cones[i];
+        if (cones[i].length < 3 * m * n) {
+            int cap = Math.max(n, 2 * cones[i].length / (3 * m));
+            cones[i] = new double[3 * m * cap];
+            conesFor[i] = new double[3 * cap];
+        }
+        for (int c = 0; c < n; c++) {
+            FrictionCone.edges(cs.pushDirs[3 * c], cs.pushDirs[3 * c + 1], cs.pushDirs[3 * c + 2], mu, m, cones[i], 3 * m * c);
+        }
+        System.arraycopy(cs.pushDirs, 0, conesFor[i], 0, 3 * n);
+        conesCount[i] = n;
+        return cones[i];
     }
 
     /**
@@ -446,7 +483,7 @@ public final class HandModel {
         double tauK2 = 0, forceInner = 0;
         for (int j = 0; j < cs.size(); j++) {
             if (cs.links[j] != 2) continue;
-            tauK2 += solver.arm(j, 1) * cs.forces[j];
+            tauK2 += solvers[i].jointTorque(j, 1);
             forceInner += cs.forces[j];
         }
         double qm = c.motor();
@@ -547,6 +584,14 @@ public final class HandModel {
     public double breakawayCounts(int k) { return breakQ[k - 1]; }
     /** Motor count where finger k's inner link (first) met the object, NaN if never. */
     public double contactCounts(int k) { return contactQ[k - 1]; }
+    /**
+     * The object's centroid in the world and its characteristic length R, {cx, cy, cz, R} in
+     * metres (a new array; {@link LinkContacts#centroidAndRadius()}), or null when the scene has
+     * no object geometry.
+     */
+    public double[] objectCentroidAndRadius() {
+        return objectContacts == null ? null : objectContacts.centroidAndRadius();
+    }
     /** Work counters since {@link #initialise()}. */
     public long counter(Counter c) { return counters[c.ordinal()]; }
     public long[] counters() { return counters.clone(); }

@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.trajectory.CartesianLine;
@@ -32,7 +33,8 @@ import org.handsim.util.JsonObject;
  *   "gravity_m_s2": [-9.81, 0, 0],            // world frame
  *   "object": {                                // optional
  *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file
- *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24 },
+ *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24,
+ *     "friction": 0.5 },                       // Coulomb μ of the contacts, ≥ 0 (default 0.5)
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
  *     "M3": [ {"type": "trapezoid", "to": 17500, "v_max": 5000, "a_max": 25000},
@@ -44,6 +46,12 @@ import org.handsim.util.JsonObject;
  * }
  * }</pre>
  * Motors M1–M3 drive fingers 1–3 (counts in [0, 17 500]); M4 is the spread (counts in [0, 3 150]).
+ *
+ * <p><b>Friction.</b> {@code object.friction} is the Coulomb coefficient μ of every contact
+ * with the object (default {@link FrictionCone#DEFAULT_MU} = 0.5; 0 is frictionless, as in the
+ * paper's model). The contact forces of the simulation and the grasp analysis use it with the
+ * friction cone linearised with {@link #coneEdges()} edges ({@link FrictionCone}, DESIGN.md
+ * decision 5); commands override both ({@code --friction}, {@code --edges}).
  */
 public final class Scenario implements Cloneable {
     /** The object's {@code divisions} when the file does not give it. */
@@ -59,10 +67,29 @@ public final class Scenario implements Cloneable {
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
     private boolean writeTrace, writeCharts, computeTorques;
+    private int coneEdges = FrictionCone.DEFAULT_EDGES;
+    private double defaultFriction = FrictionCone.DEFAULT_MU;   // μ when there is no object
     private JsonObject root;
 
-    /** Where the object is and how it is tessellated. */
-    public record ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions) {}
+    /**
+     * Where the object is, how it is tessellated and its Coulomb friction coefficient μ with the
+     * fingers (≥ 0).
+     */
+    public record ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions, double friction) {
+        public ObjectPlacement {
+            FrictionCone.checkMu(friction);
+        }
+
+        /** A placement with the default friction, {@link FrictionCone#DEFAULT_MU}. */
+        public ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions) {
+            this(file, worldFromObject, scale, divisions, FrictionCone.DEFAULT_MU);
+        }
+
+        /** A copy with another friction coefficient μ ≥ 0. */
+        public ObjectPlacement withFriction(double mu) {
+            return new ObjectPlacement(file, worldFromObject, scale, divisions, mu);
+        }
+    }
 
     private Scenario(Path file, JsonObject r, HandDescription hand) {
         this.file = file;
@@ -81,14 +108,15 @@ public final class Scenario implements Cloneable {
         gravity = r.has("gravity_m_s2") ? r.numbers("gravity_m_s2", 3) : new double[] {0, 0, -9.81};
         if (r.has("object")) {
             JsonObject o = r.object("object");
-            o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions");
+            o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions", "friction");
             Path dir = file.toAbsolutePath().getParent();
             Path f = dir.resolve(o.string("file")).normalize();
             if (!Files.isRegularFile(f)) throw o.error("file", "no such file: " + f);
             double scale = o.has("scale") ? o.positive("scale") : 1.0;
             int div = o.has("divisions") ? o.integer("divisions") : DEFAULT_DIVISIONS;
             if (div < 3 || div > 1024) throw o.error("divisions", "must be in [3, 1024], got " + div);
-            object = new ObjectPlacement(f, pose(o), scale, div);
+            double mu = o.has("friction") ? o.nonNegative("friction") : FrictionCone.DEFAULT_MU;
+            object = new ObjectPlacement(f, pose(o), scale, div, mu);
         } else {
             object = null;
         }
@@ -215,6 +243,13 @@ public final class Scenario implements Cloneable {
     public boolean writeTrace() { return writeTrace; }
     public boolean writeCharts() { return writeCharts; }
     public boolean computeTorques() { return computeTorques; }
+    /**
+     * Coulomb coefficient μ of the contacts: the object's {@code friction}, or
+     * {@link FrictionCone#DEFAULT_MU} when the scene has no object (analytic test shapes).
+     */
+    public double friction() { return object != null ? object.friction() : defaultFriction; }
+    /** Edges m of the linearised friction cones (default {@link FrictionCone#DEFAULT_EDGES}). */
+    public int coneEdges() { return coneEdges; }
     /** The parsed file (for fields other tools add). */
     public JsonObject json() { return root; }
 
@@ -273,6 +308,26 @@ public final class Scenario implements Cloneable {
         c.motors[m] = t;
         c.startCounts[m] = t.start();
         c.duration = Math.max(c.duration, t.duration());
+        return c;
+    }
+
+    /**
+     * A copy with another Coulomb coefficient μ ≥ 0 (the object's; without an object, the one
+     * analytic contact back ends get).
+     */
+    public Scenario withFriction(double mu) {
+        FrictionCone.checkMu(mu);
+        Scenario c = copy();
+        if (c.object != null) c.object = c.object.withFriction(mu);
+        c.defaultFriction = mu;
+        return c;
+    }
+
+    /** A copy whose friction cones have m edges (1..1024). */
+    public Scenario withConeEdges(int m) {
+        FrictionCone.checkEdges(m);
+        Scenario c = copy();
+        c.coneEdges = m;
         return c;
     }
 

@@ -78,12 +78,26 @@ public final class SceneGeometry implements LinkContacts {
             diag = Math.max(diag, m.diagonal());
         }
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
+        double[] centroid = objectMesh.centroid();
+        double r = 0;
+        double[] ov = objectMesh.vertices();
+        for (int i = 0; i < ov.length; i += 3) {
+            r = Math.max(r, sq(ov[i] - centroid[0]) + sq(ov[i + 1] - centroid[1]) + sq(ov[i + 2] - centroid[2]));
+        }
+        double[] cw = object.worldFromObject().apply(centroid);
+        centroidAndRadius = new double[] {cw[0], cw[1], cw[2], Math.sqrt(r)};
         thickness = THICKNESS.computeIfAbsent(object.file().toAbsolutePath().normalize() + "|" + object.divisions() + "|" + object.scale(),
             x -> minWidth(objectMesh));
     }
 
     private static final Map<String, Double> THICKNESS = new ConcurrentHashMap<>();
     private final double thickness;
+    private final double[] centroidAndRadius;
+
+    @Override
+    public double[] centroidAndRadius() {
+        return centroidAndRadius.clone();
+    }
 
     /**
      * An estimate from above of a mesh's thinnest width: the smallest extent along the 13
@@ -257,56 +271,6 @@ public final class SceneGeometry implements LinkContacts {
 
     private KdopTree palmTree;
     private double[] palmSphere;
-
-    /**
-     * The object's centroid in the world frame (metres): the volume centroid (divergence
-     * theorem) of a closed mesh with a positive volume, else the area-weighted centroid of its
-     * triangles.
-     */
-    public double[] objectCentroid() {
-        double[] v = objectMesh.vertices();
-        int[] t = objectMesh.triangles();
-        double vol = 0, cx = 0, cy = 0, cz = 0;
-        for (int i = 0; i < t.length; i += 3) {
-            int a = 3 * t[i], b = 3 * t[i + 1], c = 3 * t[i + 2];
-            double d = v[a] * (v[b + 1] * v[c + 2] - v[b + 2] * v[c + 1]) - v[a + 1] * (v[b] * v[c + 2] - v[b + 2] * v[c])
-                + v[a + 2] * (v[b] * v[c + 1] - v[b + 1] * v[c]);
-            vol += d;
-            cx += d * (v[a] + v[b] + v[c]);
-            cy += d * (v[a + 1] + v[b + 1] + v[c + 1]);
-            cz += d * (v[a + 2] + v[b + 2] + v[c + 2]);
-        }
-        double[] local;
-        if (objectMesh.isClosed() && vol > 0) {
-            local = new double[] {cx / (4 * vol), cy / (4 * vol), cz / (4 * vol)};
-        } else {
-            double[] ar = objectMesh.areas();
-            double sa = 0;
-            local = new double[3];
-            for (int i = 0, f = 0; i < t.length; i += 3, f++) {
-                for (int j = 0; j < 3; j++) {
-                    local[j] += ar[f] * (v[3 * t[i] + j] + v[3 * t[i + 1] + j] + v[3 * t[i + 2] + j]) / 3;
-                }
-                sa += ar[f];
-            }
-            for (int j = 0; j < 3; j++) local[j] /= sa;
-        }
-        return RigidTransform.of(worldFromObject).apply(local);
-    }
-
-    /** The largest distance from {@code p} (world frame) to a vertex of the object, metres. */
-    public double objectReach(double[] p) {
-        double[] v = objectMesh.vertices();
-        RigidTransform w = RigidTransform.of(worldFromObject);
-        double[] q = new double[3];
-        double r = 0;
-        for (int i = 0; i < v.length; i += 3) {
-            q[0] = v[i]; q[1] = v[i + 1]; q[2] = v[i + 2];
-            w.apply(q, q);
-            r = Math.max(r, sq(q[0] - p[0]) + sq(q[1] - p[1]) + sq(q[2] - p[2]));
-        }
-        return Math.sqrt(r);
-    }
 
     @Override
     public int collide(int finger, int link, double[] worldFromLink, ContactSet out) {

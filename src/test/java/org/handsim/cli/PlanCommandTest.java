@@ -7,6 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
+import org.handsim.sim.GraspAssessment;
+import org.handsim.sim.HandModel;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.Simulation;
 import org.handsim.plan.PlanTesting;
 import org.junit.jupiter.api.Test;
 
@@ -32,6 +37,45 @@ class PlanCommandTest {
             Path one = dir.resolve("one");
             assertEquals(0, CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "1", "--out", one.toString()).code());
             assertEquals(PlanTesting.withoutTiming(csv), PlanTesting.withoutTiming(Files.readAllLines(one.resolve("plan.csv"))));
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    /**
+     * best/01.json is the best trial as a scenario: run to its end as {@code handsim run} runs it
+     * (trace on, torques on, no early stop), its grasp has the row's ε, force closure and contacts.
+     */
+    @Test
+    void bestScenarioReproducesItsRow() throws Exception {
+        Path dir = Files.createTempDirectory("plan-best");
+        try {
+            CliTesting.Run r = CliTesting.run("plan", MUG, "--trials", "40", "--seed", "1", "--out", dir.toString());
+            assertEquals(0, r.code(), r.err());
+            Map<String, String> best = null;
+            List<String> csv = Files.readAllLines(dir.resolve("plan.csv"));
+            String[] head = csv.get(0).split(",");
+            double bestEps = -1;
+            for (String line : csv.subList(1, csv.size())) {
+                String[] f = line.split(",", -1);
+                if (!f[1].equals("ok")) continue;
+                double e = Double.parseDouble(f[10]);
+                if (e > bestEps) {
+                    bestEps = e;
+                    best = new java.util.HashMap<>();
+                    for (int i = 0; i < head.length; i++) best.put(head[i], f[i]);
+                }
+            }
+            assertTrue(bestEps > 0, "40 mug trials find a force-closure grasp");
+            Scenario s = Scenario.load(dir.resolve("best/01.json"));
+            assertTrue(s.writeTrace() && s.computeTorques(), "the best scenario keeps the template's outputs");
+            HandModel m = Simulation.model(s, true);
+            m.run(null);
+            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            assertEquals(bestEps, g.quality().epsilon(), 1e-12 * bestEps, "epsilon of trial " + best.get("trial"));
+            assertEquals(Boolean.parseBoolean(best.get("force_closure")), g.quality().forceClosure());
+            assertEquals(Integer.parseInt(best.get("contacts")), g.contacts().size());
+            for (int k = 1; k <= 3; k++) assertEquals(best.get("final_state" + k), m.state(k).name());
         } finally {
             PlanTesting.deleteTree(dir);
         }
