@@ -37,7 +37,7 @@ public record PlanSpec(String name, String target, String templateJson, String t
     /** The closing profile of an object-file target: every finger motor 0 → 17 500 counts (as scenarios/mug-grasp.json). */
     public static final double CLOSE_TO_COUNTS = 17_500, CLOSE_V_MAX = 5_000, CLOSE_A_MAX = 25_000;
     /** Time step of an object-file target's trials, seconds (events are located inside the step; docs/BENCHMARKS.md, Planning). */
-    public static final double DEFAULT_DT = 0.005;
+    public static final double DEFAULT_DT = 0.05;
     /** Default largest standoff, metres. */
     public static final double DEFAULT_STANDOFF_MAX = 0.01;
 
