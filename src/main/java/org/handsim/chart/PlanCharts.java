@@ -55,7 +55,7 @@ public final class PlanCharts {
         NumberAxis x = new NumberAxis("ε (Ferrari–Canny, L1 grasp wrench space, N of scaled wrench)");
         NumberAxis y = new NumberAxis("trials");
         y.setStandardTickUnits(NumberAxis.createIntegerTickUnits());
-        x.setLowerBound(0);
+        if (width > 0 && n > 0) x.setRange(0, n * width); else x.setRange(0, 1);
         XYBarRenderer r = new XYBarRenderer(0.05);
         r.setBarPainter(new StandardXYBarPainter());
         r.setShadowVisible(false);
