@@ -194,12 +194,15 @@ public final class SceneGeometry implements LinkContacts {
         return new TessellationWalk().scale(scale).name(name).run(scene.getSceneGroup()).merged();
     }
 
-    static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {
+    private static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {
         String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
         return TREES.computeIfAbsent(key, x -> KdopTree.build(m, k));
     }
 
     public TriangleMesh objectMesh() { return objectMesh; }
+    /** The object's tree (object frame) and link j's (frame {kj}), for other queries on the same trees ({@link HandClearance}). */
+    KdopTree objectTree() { return objectTree; }
+    KdopTree linkTree(int j) { return linkTrees[j - 1]; }
     /** Link j's mesh (1..3), in its own frame {kj}. */
     public TriangleMesh linkMesh(int j) { return linkMeshes[j - 1]; }
     /** {@code world ← object} (12 values, a copy). */
@@ -237,10 +240,7 @@ public final class SceneGeometry implements LinkContacts {
      * the world). True when they are apart, so the tree query can be skipped.
      */
     private boolean apart(int link, double[] w) {
-        return apart(linkSpheres[link - 1], w);
-    }
-
-    private boolean apart(double[] s, double[] w) {
+        double[] s = linkSpheres[link - 1];
         double x = w[0] * s[0] + w[1] * s[1] + w[2] * s[2] + w[3] - objectCentreWorld[0];
         double y = w[4] * s[0] + w[5] * s[1] + w[6] * s[2] + w[7] - objectCentreWorld[1];
         double z = w[8] * s[0] + w[9] * s[1] + w[10] * s[2] + w[11] - objectCentreWorld[2];
@@ -248,29 +248,6 @@ public final class SceneGeometry implements LinkContacts {
         return x * x + y * y + z * z > reach * reach;
     }
 
-    /**
-     * Whether a part of the hand placed in the world by the 12-value {@code worldFromPart}
-     * touches the object: part 0 is the palm ({@code vrml/hand/palm.wrl}, palm frame; loaded
-     * on first use — the step never collides the palm), parts 1..3 the links (frame {kj}).
-     * The test is the contact query's own (surface intersection, k-DOP trees), stopped at the
-     * first intersecting triangle pair; a far part costs its bounding-sphere test. Used by the
-     * planner's approach ({@code plan.Autograsp}).
-     */
-    public boolean touches(int part, double[] worldFromPart) {
-        if (part < 0 || part > 3) throw new IllegalArgumentException("part must be 0 (palm) to 3, got " + part);
-        if (part == 0 && palmTree == null) {
-            Path f = palmFile();
-            TriangleMesh pm = mesh(f, LINK_DIVISIONS, 1.0);
-            palmSphere = boundingSphere(pm);
-            palmTree = tree(f, LINK_DIVISIONS, 1.0, objectTree.k(), pm);
-        }
-        if (apart(part == 0 ? palmSphere : linkSpheres[part - 1], worldFromPart)) return false;
-        poseOfObjectInLink(worldFromPart);
-        return query.intersects(part == 0 ? palmTree : linkTrees[part - 1], objectTree, pose, 0, result);
-    }
-
-    private KdopTree palmTree;
-    private double[] palmSphere;
 
     @Override
     public int collide(int finger, int link, double[] worldFromLink, ContactSet out) {
