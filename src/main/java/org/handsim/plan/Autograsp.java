@@ -64,7 +64,7 @@ public final class Autograsp {
             y[i] = -s * x0[i] + c * y0[i];
         }
         double[] m = {x[0], y[0], a[0], 0, x[1], y[1], a[1], 0, x[2], y[2], a[2], 0};
-        return RigidTransform.of(m).axisAngle();
+        return RigidTransform.of(m).rotationVector();
     }
 
     /**

@@ -20,7 +20,7 @@ class HandClearanceTest {
     static final Path MUG = TestPaths.root().resolve("vrml/objects/mug.wrl");
 
     static String scenario(RigidTransform palm, int spread) {
-        double[] p = palm.origin(), r = palm.axisAngle();
+        double[] p = palm.origin(), r = palm.rotationVector();
         return "{\"name\":\"c\",\"object\":{\"file\":\"" + MUG + "\"},\"hand\":{\"position_m\":[" + p[0] + "," + p[1] + "," + p[2]
             + "],\"rotation_rad\":[" + r[0] + "," + r[1] + "," + r[2] + "]},\"start_counts\":{\"M4\":" + spread
             + "},\"dt_s\":0.01,\"duration_s\":0.01,\"outputs\":{\"trace\":false,\"charts\":false,\"torques\":false}}";
