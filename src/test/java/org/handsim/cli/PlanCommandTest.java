@@ -76,6 +76,17 @@ class PlanCommandTest {
             assertEquals(Boolean.parseBoolean(best.get("force_closure")), g.quality().forceClosure());
             assertEquals(Integer.parseInt(best.get("contacts")), g.contacts().size());
             for (int k = 1; k <= 3; k++) assertEquals(best.get("final_state" + k), m.state(k).name());
+            // and through the command itself: handsim run best/01.json (summary.json's "grasp", once run reports it)
+            CliTesting.Run run = CliTesting.run("run", dir.resolve("best/01.json").toString(), "--no-charts", "--out", dir.resolve("run").toString());
+            assertEquals(0, run.code(), run.err());
+            @SuppressWarnings("unchecked")
+            Map<String, Object> summary = (Map<String, Object>) org.handsim.util.Json.parse("summary.json",
+                Files.readString(dir.resolve("run/summary.json")));
+            if (summary.get("grasp") instanceof Map) {
+                @SuppressWarnings("unchecked")
+                Map<String, Object> grasp = (Map<String, Object>) summary.get("grasp");
+                assertEquals(bestEps, ((Number) grasp.get("epsilon")).doubleValue(), 1e-12 * bestEps, "handsim run's epsilon");
+            }
         } finally {
             PlanTesting.deleteTree(dir);
         }
