@@ -52,7 +52,7 @@ public final class SparkEngine implements TrialEngine {
     /** Partitions per core, for balance. */
     public static final int TASKS_PER_CORE = 4;
     /** Most task indices in one partition. */
-    public static final int MAX_CHUNK = 100;
+    public static final int MAX_CHUNK = 25;
 
     private volatile int duplicates;
 
