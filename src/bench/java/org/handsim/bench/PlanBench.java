@@ -26,7 +26,7 @@ final class PlanBench implements BenchMain.Suite {
     @Override
     public void run() throws Exception {
         StringBuilder table = new StringBuilder();
-        table.append("| object | triangles | trial (mean of " + SAMPLE + ") | approach | closing + evaluation | trials/s per core | sim time per trial | force closure |\n");
+        table.append("| object | triangles | trial (" + SAMPLE + " fixed trials, median of batch means) | approach | closing + evaluation | trials/s per core | sim time per trial | force closure |\n");
         table.append("|---|---:|---:|---:|---:|---:|---:|---:|\n");
         for (Path f : new Path[] {Home.dir().resolve("vrml/objects/mug.wrl"), bigSphere()}) {
             PlanSpec spec = PlanSpec.forTarget(f, TRIALS, 1, 0.5, 8);
