@@ -16,7 +16,7 @@ of the exact input up to rounding (~1e-14 relative), and merged coplanar facets 
 hyperplane, so the facets of the polytope can be counted.
 
 Definitions (the same as org.handsim.grasp.WrenchSpace; S = the largest |wrench coordinate|):
-  lower-dimensional: the 6th singular value of the centred wrenches is below 1e-9 S
+  lower-dimensional: the 6th singular value of the centred wrenches is below 1e-6 S
     (then volume 0, epsilon 0, no force closure, 0 facets; qhull is not asked);
   epsilon: min over facets of -offset (SciPy's equations are n.x + offset <= 0 inside);
   force closure: epsilon > 1e-11 S; else epsilon is reported as 0;
@@ -77,7 +77,7 @@ def quality(w):
     """(rank, force_closure, epsilon, volume, facets) by qhull; None if the set is ambiguous."""
     s_max = float(np.abs(w).max())
     sv = np.linalg.svd(w - w.mean(axis=0), compute_uv=False)
-    rank = int(np.sum(sv > 1e-9 * s_max))
+    rank = int(np.sum(sv > 1e-6 * s_max))
     if len(w) < 7 or rank < 6:
         if len(sv) >= 6 and sv[5] > 1e-12 * s_max:
             return None

@@ -19,9 +19,11 @@ public final class BenchMain {
         SUITES.put("dynamics", new DynamicsBench());
         SUITES.put("sim", new SimBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
+        SUITES.put("hold", new HoldBench());
         SUITES.put("collision", new CollisionBench(false));
         SUITES.put("collision-fcl", new CollisionBench(true));
         SUITES.put("vrml", new VrmlBench());
+        SUITES.put("grasp", new GraspBench());
         SUITES.put("plan", new PlanBench());
     }
 

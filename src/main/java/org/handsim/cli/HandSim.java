@@ -28,6 +28,8 @@ public final class HandSim implements Runnable {
         GuiCommand.class,
         TradeoffCommand.class,
         SwingCommand.class,
+        QualityCommand.class,
+        GraspCommand.class,
         PlanCommand.class
         // sub-commands register here, one line each
     );

@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.chart.ChartExport;
 import org.handsim.chart.PaperCharts;
+import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Home;
 import org.handsim.sim.RunSummary;
@@ -56,6 +57,12 @@ public final class RunCommand implements Callable<Integer> {
         "2-tessellation) is at most LENGTH"})
     String tolerance;
 
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of the contacts (default: the scenario's object.friction, else 0.5)")
+    Double friction;
+
+    @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
+    Integer edges;
+
     @Override
     public Integer call() throws IOException {
         PrintWriter err = spec.commandLine().getErr();
@@ -66,6 +73,7 @@ public final class RunCommand implements Callable<Integer> {
             if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
             scenario = scenario.withDt(dt);
         }
+        scenario = GraspCommand.withFriction(scenario, friction, edges);
         Double toleranceM = tolerance != null ? parseTolerance(tolerance) : null;
         String toleranceLine = null;
         if (toleranceM != null) {
@@ -93,6 +101,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         double wall = (System.nanoTime() - t1) / 1e9;
         Map<String, Object> summary = RunSummary.of(model, wall);
+        summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
         summary.put("setup_time_s", setup);
         summary.put("warnings", warnings);
         if (toleranceM != null) {

@@ -11,6 +11,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.Callable;
+import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
@@ -33,7 +34,8 @@ public final class SweepCommand implements Callable<Integer> {
     static final String HEADER = "run,scenario,status,sim_time_s,steps,wall_time_s,"
         + "final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
         + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,"
-        + "final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error";
+        + "final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error,"
+        + "force_closure,epsilon,volume,hold_min_N";
 
     @Spec CommandSpec spec;
 
@@ -52,6 +54,12 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--master", paramLabel = "URL", description = "Spark master (default local[*]; spark://HOST:7077 for a cluster)")
     String master;
 
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of every run's contacts (default: each scenario's)")
+    Double friction;
+
+    @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
+    Integer edges;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
@@ -61,6 +69,7 @@ public final class SweepCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
+        GraspCommand.checkFriction(friction, edges);
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
         if (!engine.equals("local")) return SweepJob.runOnEngine(this, sweep, n, engine, master);
@@ -72,7 +81,7 @@ public final class SweepCommand implements Callable<Integer> {
         List<Future<String>> rows = new ArrayList<>();
         for (Sweep.Run run : runs) {
             rows.add(pool.submit(() -> {
-                String row = runOne(run);
+                String row = runOne(run, friction, edges);
                 int d = done.incrementAndGet();
                 synchronized (err) {
                     err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), run.label(), (System.nanoTime() - t0) / 1e9));
@@ -102,11 +111,11 @@ public final class SweepCommand implements Callable<Integer> {
         return failed == 0 ? 0 : 1;
     }
 
-    static String runOne(Sweep.Run run) {
+    static String runOne(Sweep.Run run, Double friction, Integer edges) {
         String label = csvText(run.label());
         String scenarioName = "";
         try {
-            Scenario s = run.scenario().get();
+            Scenario s = GraspCommand.withFriction(run.scenario().get(), friction, edges);
             scenarioName = s.name();
             HandModel m = Simulation.model(s, false);
             long t = System.nanoTime();
@@ -119,9 +128,12 @@ public final class SweepCommand implements Callable<Integer> {
                 sb.append(',').append(m.state(k)).append(',').append(num(m.breakawayTime(k))).append(',')
                     .append(num(m.breakawayForce(k))).append(',').append(m.maxContactForce(k));
             }
-            return sb.append(',').toString();
+            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            sb.append(",,").append(g.quality().forceClosure()).append(',').append(g.quality().epsilon()).append(',')
+                .append(g.quality().volume()).append(',').append(g.holdMinN());
+            return sb.toString();
         } catch (ScenarioException | SimulationException | IllegalArgumentException e) {
-            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(e.getMessage());
+            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(e.getMessage()) + ",,,,";
         }
     }
 

@@ -17,10 +17,15 @@ import org.handsim.util.AtomicFile;
 final class SweepJob implements IndexedJob<String> {
     private static final long serialVersionUID = 1L;
     private final String file;
+    private final Double friction;
+    private final Integer edges;
     private transient volatile Sweep sweep;
 
-    SweepJob(Path file) {
+    /** @param friction, edges the command's overrides (null: each scenario's) */
+    SweepJob(Path file, Double friction, Integer edges) {
         this.file = file.toAbsolutePath().normalize().toString();
+        this.friction = friction;
+        this.edges = edges;
     }
 
     @Override
@@ -32,7 +37,7 @@ final class SweepJob implements IndexedJob<String> {
                 s = sweep;
             }
         }
-        return SweepCommand.runOne(s.runs().get(index));
+        return SweepCommand.runOne(s.runs().get(index), friction, edges);
     }
 
     /** {@code handsim sweep} on an engine other than the local threads: the same table. */
@@ -54,7 +59,7 @@ final class SweepJob implements IndexedJob<String> {
             w.write(SweepCommand.HEADER);
             w.write('\n');
             try {
-                eng.run(new SweepJob(c.file), runs, new TrialEngine.Settings(threads, url, "handsim sweep " + sweep.name()), row -> {
+                eng.run(new SweepJob(c.file, c.friction, c.edges), runs, new TrialEngine.Settings(threads, url, "handsim sweep " + sweep.name()), row -> {
                     try {
                         if (row.contains(",failed,")) failed[0]++;
                         w.write(row);

@@ -16,6 +16,9 @@ package org.handsim.contact;
  * points into the cone for m ≥ 3; v is inside K when ν_k · v ≥ 0 for every k. With m = 2 the
  * cone is the flat wedge between its two edges; with m = 1 a ray. Cost O(m), no allocation.
  *
+ * <p>A cone whose edges are parallel to rounding (μ below about 1e-16) is the ray of its first
+ * edge.
+ *
  * <p><b>Piece codes</b> returned by {@link #project}: −1 the apex (Π(v) = 0, derivative 0);
  * 0..m−1 edge k (derivative e eᵀ/|e|²); m..2m−1 facet k − m (derivative I − ν νᵀ); 2m the
  * interior (derivative I). On each piece Π is linear in v.
@@ -61,7 +64,9 @@ public final class ConeProjection {
     public static int project(double[] edges, int eo, double[] normals, int no, int m,
                               double vx, double vy, double vz, double[] out, int oo) {
         int facets = m >= 3 ? m : m == 2 ? 1 : 0;
-        if (m >= 3) {
+        // edges parallel to rounding (μ so small that n + μ t = n): the cone is the ray of e_0
+        boolean ray = facets > 0 && normals[no] == 0 && normals[no + 1] == 0 && normals[no + 2] == 0;
+        if (m >= 3 && !ray) {
             boolean inside = true;
             for (int k = 0; k < m && inside; k++) {
                 int f = no + 3 * k;

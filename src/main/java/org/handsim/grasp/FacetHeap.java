@@ -34,6 +34,9 @@ final class FacetHeap {
         keys[i] = key; facets[i] = facet; gens[i] = gen;
     }
 
+    /** The smallest key (the heap must not be empty). */
+    double topKey() { return keys[0]; }
+
     /** The facet of the smallest key (valid until the next push or pop). */
     int topFacet() { return facets[0]; }
 

@@ -94,6 +94,8 @@ public final class HandModel {
     private final double[][] cones = {new double[0], new double[0], new double[0]};      // per finger: cone edges, 3·m per contact
     private final double[][] conesFor = {new double[0], new double[0], new double[0]};   // per finger: the push directions they were made for
     private final int[] conesCount = new int[3];
+    private final double[][] forceKey = {new double[0], new double[0], new double[0]};   // per finger: the last force solve's inputs
+    private final int[] forceKeyLength = new int[3];
 
     /** Work counters, for the savings table (issue 8). */
     public enum Counter {
@@ -154,6 +156,7 @@ public final class HandModel {
             contacts[i].clear();
             java.util.Arrays.fill(dynAt[i], Double.NaN);
             java.util.Arrays.fill(lastInput[i], Double.NaN);
+            forceKeyLength[i] = 0;
             breakTime[i] = Double.NaN;
             breakTorque[i] = Double.NaN;
             breakForce[i] = Double.NaN;
@@ -435,10 +438,14 @@ public final class HandModel {
         int n = cs.size();
         ContactForces solver = solvers[i];
         if (n > 0) {
-            if (mu == 0) {
-                solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
-            } else {
-                solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
+            // the same inputs as finger k's last solve (a held link, the same transmitted torque):
+            // its solver still holds the answer
+            if (!(lazy && sameForceInputs(i, cs))) {
+                if (mu == 0) {
+                    solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+                } else {
+                    solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
+                }
             }
             for (int c = 0; c < n; c++) {
                 cs.forces[c] = solver.force(c);
@@ -446,6 +453,30 @@ public final class HandModel {
                 cs.undetermined[c] = solver.undetermined(c);
             }
         }
+    }
+
+    /**
+     * True when the contact-force solve of finger i would get what its last one got — the
+     * torques on k2, k3, the frames of joints 1–3 and every contact's link, point and push
+     * direction — and records them otherwise (for the next call). No allocation once the key
+     * array has grown to the contact count.
+     */
+    private boolean sameForceInputs(int i, ContactSet cs) {
+        int n = cs.size(), len = 3 + 36 + 7 * n;
+        double[] key = forceKey[i];
+        if (key.length < len) key = forceKey[i] = java.util.Arrays.copyOf(key, Math.max(len, 2 * key.length));
+        boolean same = forceKeyLength[i] == len;
+        int o = 0;
+        for (int j = 0; j < 3; j++, o++) { same &= key[o] == tauContact[j]; key[o] = tauContact[j]; }
+        double[] f = framesWorld[i];
+        for (int j = 0; j < 36; j++, o++) { same &= key[o] == f[j]; key[o] = f[j]; }
+        for (int c = 0; c < n; c++) {
+            same &= key[o] == cs.links[c]; key[o++] = cs.links[c];
+            for (int a = 0; a < 3; a++, o++) { same &= key[o] == cs.points[3 * c + a]; key[o] = cs.points[3 * c + a]; }
+            for (int a = 0; a < 3; a++, o++) { same &= key[o] == cs.pushDirs[3 * c + a]; key[o] = cs.pushDirs[3 * c + a]; }
+        }
+        forceKeyLength[i] = len;
+        return same;
     }
 
     /**
@@ -558,6 +589,10 @@ public final class HandModel {
     public long totalSteps() { return totalSteps; }
     public Recorder recorder() { return recorder; }
     public ClutchState state(int k) { return clutch[k - 1].state(); }
+    /** Whether finger k's clutch still couples its inner link to the motor ({@link FingerClutch#engaged()}). */
+    public boolean clutchEngaged(int k) { return clutch[k - 1].engaged(); }
+    /** The hand's description (the BarrettHand). */
+    public HandDescription hand() { return hand; }
     /** Joint angles of finger k (a new array, radians). */
     public double[] joints(int k) { return q[k - 1].clone(); }
     /** Joint velocities of finger k (a new array, rad/s). */

@@ -61,6 +61,19 @@ class ConeProjectionTest {
         }
     }
 
+    /** μ so small that every edge is the normal to rounding: the cone is a ray, never "everything inside". */
+    @Test
+    void aVanishingConeIsARay() {
+        int m = 8;
+        double[] e = new double[3 * m], nrm = new double[3 * m], p = new double[3];
+        FrictionCone.edges(0, 0, 1, 1e-300, m, e, 0);
+        ConeProjection.facetNormals(e, 0, m, nrm, 0);
+        assertEquals(0, ConeProjection.project(e, 0, nrm, 0, m, 1, 0, 2, p, 0), "edge 0, the ray");
+        assertEquals(0, p[0]);
+        assertEquals(2, p[2]);
+        assertEquals(ConeProjection.APEX, ConeProjection.project(e, 0, nrm, 0, m, 1, 0, -2, p, 0));
+    }
+
     /** p ∈ K (a non-negative combination of the edges), v − p in the polar cone, (v − p) ⟂ p. */
     static void moreau(double[] e, int m, double[] n, double[] v, double[] p) {
         double scale = 1 + Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
