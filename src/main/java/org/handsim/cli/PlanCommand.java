@@ -25,19 +25,24 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim plan}: grasp planning (issue 13). */
 @Command(name = "plan", mixinStandardHelpOptions = true,
-    description = {"Searches grasps of an object: each trial places the open hand on an approach direction",
-        "(a seeded Fibonacci sphere), roll, spread and standoff, moves it in until the palm or a finger",
-        "meets the object, closes every finger with the clutch model until it stalls, and evaluates",
-        "force closure, epsilon, volume and the minimum hold. Writes out/plan-<name>/ (or --out DIR):",
-        "plan.csv (header: " + TrialResult.HEADER + "),",
-        "plan.json, best/01.json .. best/10.json (scenarios of the ten best grasps by epsilon) and the",
-        "charts epsilon-histogram and epsilon-directions (PNG and SVG). The same seed gives the same",
-        "table on every engine and thread count (timing columns aside)."})
+    description = {"Searches grasps of an object. Each trial places the open hand on an approach",
+        "direction (a seeded Fibonacci sphere), a roll, a spread and a standoff, moves it",
+        "in until the palm or a finger meets the object, closes every finger with the",
+        "clutch model until it stalls, and evaluates force closure, epsilon, volume and",
+        "the minimum hold. Writes out/plan-<name>/ (or --out DIR): plan.csv, plan.json,",
+        "best/01.json .. best/10.json (the ten best grasps by epsilon, as scenarios) and",
+        "the charts epsilon-histogram and epsilon-directions (PNG and SVG).",
+        "The same seed gives the same table on every engine and thread count (timing",
+        "column aside). plan.csv's header:",
+        "  trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,",
+        "  standoff_m,contacts,force_closure,epsilon,volume,hold_min_N,final_state1,",
+        "  final_state2,final_state3,sim_time_s,wall_s,error"})
 public final class PlanCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "TARGET", description = {"an object file (VRML97, or any mesh format scenarios read),",
-        "or a scenario JSON used as template (its object, finger motors, dt and outputs)"})
+    @Parameters(index = "0", paramLabel = "TARGET", description = {"an object file (any format scenarios read), or a",
+        "scenario JSON used as template (its object, finger",
+        "motors, dt and outputs)"})
     Path target;
 
     @Option(names = "--trials", paramLabel = "N", description = "number of trials (default ${DEFAULT-VALUE})", defaultValue = "500")
@@ -55,8 +60,9 @@ public final class PlanCommand implements Callable<Integer> {
     @Option(names = "--engine", paramLabel = "local|spark", description = "local threads (default) or an Apache Spark job", defaultValue = "local")
     String engine;
 
-    @Option(names = "--master", paramLabel = "URL", description = {"Spark master (default local[*], or local[N] with --threads N;",
-        "spark://HOST:7077 for a standalone cluster, e.g. tools/spark-cluster start)"})
+    @Option(names = "--master", paramLabel = "URL", description = {"Spark master: local[*] (default), local[N] with",
+        "--threads N, or spark://HOST:7077 for a standalone",
+        "cluster (e.g. tools/spark-cluster start)"})
     String master;
 
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: all cores)")
