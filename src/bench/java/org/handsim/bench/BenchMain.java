@@ -24,6 +24,7 @@ public final class BenchMain {
         SUITES.put("collision-fcl", new CollisionBench(true));
         SUITES.put("vrml", new VrmlBench());
         SUITES.put("grasp", new GraspBench());
+        SUITES.put("plan", new PlanBench());
     }
 
     public static void main(String[] args) throws Exception {

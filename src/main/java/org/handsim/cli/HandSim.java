@@ -48,7 +48,8 @@ public final class HandSim implements Runnable {
         TradeoffCommand.class,
         SwingCommand.class,
         QualityCommand.class,
-        GraspCommand.class
+        GraspCommand.class,
+        PlanCommand.class
         // sub-commands register here, one line each
     );
 

@@ -56,6 +56,12 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: the file's, else all cores)")
     Integer threads;
 
+    @Option(names = "--engine", paramLabel = "local|spark", description = "local threads (default) or an Apache Spark job", defaultValue = "local")
+    String engine;
+
+    @Option(names = "--master", paramLabel = "URL", description = "Spark master (default local[*]; spark://HOST:7077 for a cluster)")
+    String master;
+
     @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of every run's contacts (default: each scenario's)")
     Double friction;
 
@@ -74,6 +80,8 @@ public final class SweepCommand implements Callable<Integer> {
         GraspCommand.checkFriction(friction, edges);
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
+        if (!engine.equals("local")) return SweepJob.runOnEngine(this, sweep, n, engine, master);
+        if (master != null) throw CliError.usage("handsim: --master needs --engine spark");
         List<Sweep.Run> runs = sweep.runs();
         ExecutorService pool = Executors.newFixedThreadPool(n, r -> {
             Thread t = new Thread(r, "sweep-worker");
@@ -123,7 +131,7 @@ public final class SweepCommand implements Callable<Integer> {
         return failed == 0 ? 0 : 1;
     }
 
-    private static String runOne(Sweep.Run run, Double friction, Integer edges) {
+    static String runOne(Sweep.Run run, Double friction, Integer edges) {
         String label = csvText(run.label());
         String scenarioName = "";
         try {

@@ -102,6 +102,13 @@ public final class TreeQuery {
         return out.intersecting();
     }
 
+    /** As {@link #intersects(KdopTree, KdopTree, RigidTransform, CollisionResult)} with the 12 row-major values at {@code pose[off..]}. */
+    public boolean intersects(KdopTree a, KdopTree b, double[] pose, int off, CollisionResult out) {
+        System.arraycopy(pose, off, m, 0, 12);
+        run(a, b, out, true);
+        return out.intersecting();
+    }
+
     private static boolean isIdentity(double[] m) {
         return m[0] == 1 && m[1] == 0 && m[2] == 0 && m[3] == 0 && m[4] == 0 && m[5] == 1 && m[6] == 0 && m[7] == 0
             && m[8] == 0 && m[9] == 0 && m[10] == 1 && m[11] == 0;

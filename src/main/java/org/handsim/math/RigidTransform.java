@@ -76,28 +76,35 @@ public final class RigidTransform {
     }
 
     /**
-     * The axis-angle vector of the rotation part (inverse of Rodrigues' formula, {@link #fromPose}), rad:
-     * direction = axis, length = angle in [0, π]. The angle is
-     * {@code atan2(2 sin θ, 2 cos θ)} from the antisymmetric part and the trace (well conditioned
-     * near 0 and π, where {@code acos} of the trace is not).
+     * The rotation as an axis-angle vector (direction = unit axis, length = angle in [0, π]
+     * radians): the inverse of the rotation of {@link #fromPose}, so
+     * {@code fromPose(t, rotationVector())} rebuilds R to rounding. The angle is
+     * atan2(|v|, tr R − 1) with v = (r21 − r12, r02 − r20, r10 − r01) = 2 sin θ·u; near θ = π,
+     * where v vanishes, the axis comes from the symmetric part (R + Rᵀ)/2 − cos θ·I
+     * = (1 − cos θ)·u uᵀ (its largest column), signed to agree with v (Murray, Li, Sastry,
+     * <i>A Mathematical Introduction to Robotic Manipulation</i>, §2.2.3).
      */
     public double[] rotationVector() {
-        double r00 = get(0, 0), r11 = get(1, 1), r22 = get(2, 2);
-        double ax = get(2, 1) - get(1, 2), ay = get(0, 2) - get(2, 0), az = get(1, 0) - get(0, 1);
-        double s = Math.sqrt(ax * ax + ay * ay + az * az);
-        double angle = Math.atan2(s, r00 + r11 + r22 - 1);
-        if (angle < 1e-12) return new double[3];
-        if (s < 1e-9) {
-            // angle = π: R = 2 n nᵀ − I, so |n_i| from the diagonal; the signs relative to the
-            // largest component from its row (R_ij = 2 n_i n_j)
-            double[] n = {Math.sqrt(Math.max(0, (r00 + 1) / 2)), Math.sqrt(Math.max(0, (r11 + 1) / 2)), Math.sqrt(Math.max(0, (r22 + 1) / 2))};
-            int i = n[0] >= n[1] && n[0] >= n[2] ? 0 : n[1] >= n[2] ? 1 : 2;
-            for (int j = 0; j < 3; j++) {
-                if (j != i && get(i, j) < 0) n[j] = -n[j];
-            }
-            return new double[] {angle * n[0], angle * n[1], angle * n[2]};
+        double vx = m[9] - m[6], vy = m[2] - m[8], vz = m[4] - m[1];
+        double s2 = Math.sqrt(vx * vx + vy * vy + vz * vz);          // 2 sin θ
+        double c2 = m[0] + m[5] + m[10] - 1;                          // 2 cos θ
+        double angle = Math.atan2(s2, c2);
+        if (angle < 1e-300) return new double[3];
+        double ux, uy, uz;
+        if (c2 > -1.0) {                                              // θ < 120°: v is well conditioned
+            ux = vx / s2; uy = vy / s2; uz = vz / s2;
+        } else {
+            double c = 0.5 * c2;
+            double b00 = m[0] - c, b11 = m[5] - c, b22 = m[10] - c;
+            double b01 = 0.5 * (m[1] + m[4]), b02 = 0.5 * (m[2] + m[8]), b12 = 0.5 * (m[6] + m[9]);
+            if (b00 >= b11 && b00 >= b22) { ux = b00; uy = b01; uz = b02; }
+            else if (b11 >= b22) { ux = b01; uy = b11; uz = b12; }
+            else { ux = b02; uy = b12; uz = b22; }
+            double l = Math.sqrt(ux * ux + uy * uy + uz * uz);
+            ux /= l; uy /= l; uz /= l;
+            if (ux * vx + uy * vy + uz * vz < 0) { ux = -ux; uy = -uy; uz = -uz; }
         }
-        return new double[] {angle * ax / s, angle * ay / s, angle * az / s};
+        return new double[] {ux * angle, uy * angle, uz * angle};
     }
 
     /**

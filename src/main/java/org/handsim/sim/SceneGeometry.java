@@ -196,6 +196,9 @@ public final class SceneGeometry implements LinkContacts {
     }
 
     public TriangleMesh objectMesh() { return objectMesh; }
+    /** The object's tree (object frame) and link j's (frame {kj}), for other queries on the same trees ({@link HandClearance}). */
+    KdopTree objectTree() { return objectTree; }
+    KdopTree linkTree(int j) { return linkTrees[j - 1]; }
     /** Link j's mesh (1..3), in its own frame {kj}. */
     public TriangleMesh linkMesh(int j) { return linkMeshes[j - 1]; }
     /** {@code world ← object} (12 values, a copy). */
@@ -240,6 +243,7 @@ public final class SceneGeometry implements LinkContacts {
         double reach = s[3] + objectRadius;
         return x * x + y * y + z * z > reach * reach;
     }
+
 
     @Override
     public int collide(int finger, int link, double[] worldFromLink, ContactSet out) {
