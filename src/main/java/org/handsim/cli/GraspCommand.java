@@ -24,7 +24,8 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim grasp}: how good the grasp of a scenario is, and how much it holds. */
 @Command(name = "grasp", mixinStandardHelpOptions = true,
-    description = {"Runs a scenario (default: the paper's experiment) to time T (default: its",
+    description = {"Runs a scenario to time T and evaluates its grasp and the load it holds.",
+        "Runs the scenario (default: the paper's experiment) to time T (default: its",
         "end) and prints its grasp there as one JSON line (README, output contracts):",
         "  {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
         "   \"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,",

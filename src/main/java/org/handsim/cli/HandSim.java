@@ -30,7 +30,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * command list on standard error and exits 2.
  */
 @Command(name = "handsim", mixinStandardHelpOptions = true, version = "HandSim 0.1.0",
-    description = "Simulator of the BarrettHand grasping objects from VRML97 files "
+    description = "Simulator of the BarrettHand grasping objects from VRML97, OBJ and STL files "
         + "(Corrales, Jara, Torres: kinematics, dynamics, breakaway clutch, contact).",
     subcommandsRepeatable = false)
 public final class HandSim implements Runnable {

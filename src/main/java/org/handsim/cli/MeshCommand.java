@@ -37,8 +37,9 @@ import picocli.CommandLine.Spec;
  * scene building and tessellation walk. Warnings go to standard error, one per line.
  */
 @Command(name = "mesh", mixinStandardHelpOptions = true,
-    description = {"Loads a VRML97 (.wrl), Wavefront OBJ (.obj) or STL (.stl, ASCII or binary)",
-        "file and prints the statistics of its triangle mesh.",
+    description = {"Loads a VRML97, OBJ or STL file and prints its triangle mesh statistics.",
+        "Formats by extension: .wrl (VRML97, also gzipped), .obj (Wavefront), .stl",
+        "(ASCII or binary).",
         "Prints one JSON line (volume_m3 is null unless the mesh is closed):",
         "  {\"file\":..,\"shapes\":n,\"triangles\":n,\"vertices\":n,\"degenerate\":n,",
         "   \"area_m2\":A,\"volume_m3\":V|null,\"closed\":bool,",

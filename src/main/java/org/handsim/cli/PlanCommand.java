@@ -25,7 +25,8 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim plan}: grasp planning (issue 13). */
 @Command(name = "plan", mixinStandardHelpOptions = true,
-    description = {"Searches grasps of an object. Each trial places the open hand on an approach",
+    description = {"Searches grasps of an object and ranks them by epsilon.",
+        "Each trial places the open hand on an approach",
         "direction (a seeded Fibonacci sphere), a roll, a spread and a standoff, moves it",
         "in until the palm or a finger meets the object, closes every finger with the",
         "clutch model until it stalls, and evaluates force closure, epsilon, volume and",

@@ -28,7 +28,8 @@ import picocli.CommandLine.Spec;
  * ({@link SteadyTiming}). Output contract: one JSON line with the keys {@link #JSON_KEYS}.
  */
 @Command(name = "quality", mixinStandardHelpOptions = true, sortOptions = false,
-    description = {"Grasp quality of point contacts with Coulomb friction (the L1 grasp wrench",
+    description = {"Grasp quality of point contacts: force closure, epsilon and volume.",
+        "Point contacts have Coulomb friction (the L1 grasp wrench",
         "space: the 6-D convex hull of w = (f, (p - c) x f / R) over the m edges f of",
         "each contact's friction cone).",
         "CONTACTS.csv: header x,y,z,nx,ny,nz; one contact a row: the point (metres)",

@@ -62,6 +62,16 @@ public class CleanOutputTest {
         assertTrue(r.err().contains("Commands:") && r.err().endsWith("'handsim help CMD' for one command)"), r.err());
     }
 
+    /** The command list shows each command's first description line: a whole sentence. */
+    @Test
+    void theCommandListShowsWholeFirstSentences() {
+        for (Class<?> c : HandSim.SUBCOMMANDS) {
+            picocli.CommandLine.Command a = c.getAnnotation(picocli.CommandLine.Command.class);
+            String first = a.description()[0].trim();
+            assertTrue(first.endsWith(".") || first.endsWith(")"), a.name() + ": first description line is not a whole sentence: " + first);
+        }
+    }
+
     @Test
     void helpCommandShowsAnyCommandsHelp() {
         for (Class<?> c : HandSim.SUBCOMMANDS) {
