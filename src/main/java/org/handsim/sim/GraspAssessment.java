@@ -10,6 +10,7 @@ import org.handsim.grasp.GraspWrenches;
 import org.handsim.grasp.HoldCapacity;
 import org.handsim.grasp.WrenchSpace;
 import org.handsim.hand.HandDescription;
+import org.handsim.util.Decimal;
 
 /**
  * An evaluation of the model's current grasp (issue 12): the contacts with their forces, the
@@ -153,9 +154,10 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
             Map<String, Object> o = new LinkedHashMap<>();
             o.put("finger", c.finger());
             o.put("link", c.link());
-            o.put("point", c.point());
-            o.put("normal", c.normal());
-            o.put("force_N", c.forceN());
+            // physical values: rounding noise below 1e-12 written as 0 (util.Decimal, README)
+            o.put("point", Decimal.clean(c.point()));
+            o.put("normal", Decimal.clean(c.normal()));
+            o.put("force_N", Decimal.clean(c.forceN()));
             cs.add(o);
         }
         m.put("contacts", cs);
