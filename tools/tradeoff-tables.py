@@ -11,11 +11,13 @@ def rows(name):
         return list(csv.DictReader(f))
 
 def t(s):
+    if s == "":
+        return "–"   # not defined (an empty cell)
     s = float(s)
     return f"{s*1e6:.3g} µs" if s < 1e-3 else f"{s*1e3:.3g} ms" if s < 1 else f"{s:.3g} s"
 
 def e(v):
-    return f"{float(v):.2g}"
+    return f"{float(v):.2g}" if v != "" else "–"
 
 j = json.load(open(d / "tradeoff.json"))
 print("total", round(j["wall_time_s"], 1), "s;", " / ".join(f"{v['wall_time_s']:.1f}" for v in j["studies"].values()), "s\n")

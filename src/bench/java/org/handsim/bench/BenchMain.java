@@ -20,9 +20,12 @@ public final class BenchMain {
         SUITES.put("sim", new SimBench());
         SUITES.put("sim-profile", new SimProfileBench());
         // suites register here, one line each: SUITES.put("name", new SomeBench());
+        SUITES.put("hold", new HoldBench());
         SUITES.put("collision", new CollisionBench(false));
         SUITES.put("collision-fcl", new CollisionBench(true));
         SUITES.put("vrml", new VrmlBench());
+        SUITES.put("grasp", new GraspBench());
+        SUITES.put("plan", new PlanBench());
     }
 
     public static void main(String[] args) throws Exception {

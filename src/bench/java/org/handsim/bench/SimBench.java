@@ -7,6 +7,7 @@ import org.handsim.sim.HandModel;
 import org.handsim.sim.Home;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.SceneGeometry;
+import org.handsim.sim.Simulation;
 
 /**
  * The whole model in the process — trajectories, clutch, kinematics, collision and contacts,
@@ -18,6 +19,10 @@ import org.handsim.sim.SceneGeometry;
  * finger collided and run through the dynamics every step) and both off (the full computation).
  * The results of all are checked equal. The last columns are the collision back end's counters
  * (SceneGeometry.Counter).
+ * A second table prices friction (issue 12): the default setting with the scenes' μ = 0.5 (the
+ * least-norm forces in the friction cones) against μ = 0 (the frictionless solve of before),
+ * measured alternately in five rounds, the best round's median of each: measured one after the
+ * other, whichever runs first after the warm-up came out up to 2× slower.
  */
 final class SimBench implements BenchMain.Suite {
     @Override
@@ -26,6 +31,20 @@ final class SimBench implements BenchMain.Suite {
         table.append("| scene | setting | wall per run | ns/step | x real time | finger updates | fingers idle | collision queries | skipped"
             + " | dynamics calls | skipped | sphere apart | tree walks | coherent queries | triangle tests |\n");
         table.append("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        // the JIT takes several seconds to settle on the whole model (measured: the first 2 s
+        // warm-up of one setting left it 2-4x slow): run both contact-force paths first
+        for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
+            for (Scenario w : new Scenario[] {Scenario.load(file), Scenario.load(file).withFriction(0)}) {
+                long end = System.nanoTime() + 3_000_000_000L;
+                while (System.nanoTime() < end) {
+                    HandModel m = Simulation.model(w, false);
+                    m.run(null);
+                    Bench.sink += m.maxContactForce(3);
+                }
+            }
+        }
+        // before the main table: its "lazy off" runs leave the JIT's code slower for what follows
+        String friction = frictionCost();
         for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
             Scenario s = Scenario.load(file);
             double reference = Double.NaN;
@@ -62,5 +81,56 @@ final class SimBench implements BenchMain.Suite {
         }
         System.out.println();
         System.out.print(table);
+        System.out.println();
+        System.out.print(friction);
+        System.out.println();
+        System.out.print(allocation());
+    }
+
+    /**
+     * Bytes the step allocates: a model run once (its scratch arrays grow to the scene's contact
+     * counts), reset with {@code initialise()} and run again, the second run's allocation by the
+     * thread (com.sun.management.ThreadMXBean). An odd few hundred bytes seen in some runs were
+     * the JIT's (deoptimisation): the same second run interpreted ({@code -Xint}) allocated none.
+     */
+    private static String allocation() {
+        com.sun.management.ThreadMXBean tb = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        StringBuilder t = new StringBuilder("| scene | mu | steps | bytes allocated by the second run |\n|---|---:|---:|---:|\n");
+        for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
+            for (double mu : new double[] {0.5, 0}) {
+                Scenario s = Scenario.load(file).withFriction(mu);
+                HandModel m = Simulation.model(s, false);
+                m.run(null);
+                m.initialise();
+                long id = Thread.currentThread().getId();
+                long b0 = tb.getThreadAllocatedBytes(id);
+                m.run(null);
+                long bytes = tb.getThreadAllocatedBytes(id) - b0;
+                t.append(String.format(Locale.ROOT, "| %s | %s | %d | %d |%n", s.name(), mu, m.stepIndex(), bytes));
+            }
+        }
+        return t.toString();
+    }
+
+    /** μ = 0.5 against μ = 0, alternating rounds, the best median of each. */
+    private static String frictionCost() {
+        StringBuilder t = new StringBuilder("| scene | mu = 0.5 (least-norm forces in the cones) | mu = 0 (frictionless) | ratio |\n|---|---:|---:|---:|\n");
+        for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
+            Scenario s = Scenario.load(file);
+            double best05 = Double.POSITIVE_INFINITY, best0 = Double.POSITIVE_INFINITY;
+            for (int round = 0; round < 5; round++) {
+                for (double mu : new double[] {0.5, 0}) {
+                    Scenario run = s.withFriction(mu);
+                    Bench.Result r = Bench.measure(String.format(Locale.ROOT, "%s, mu = %s, round %d", s.name(), mu, round + 1), () -> {
+                        HandModel m = Simulation.model(run, false);
+                        m.run(null);
+                        return m.maxContactForce(3);
+                    }, 1000, 5, 200);
+                    if (mu == 0) best0 = Math.min(best0, r.medianMs()); else best05 = Math.min(best05, r.medianMs());
+                }
+            }
+            t.append(String.format(Locale.ROOT, "| %s | %.1f ms | %.1f ms | %.2f |%n", s.name(), best05, best0, best05 / best0));
+        }
+        return t.toString();
     }
 }

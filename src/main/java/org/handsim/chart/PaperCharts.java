@@ -23,7 +23,9 @@ import org.jfree.data.xy.XYSeriesCollection;
  * {@value #MAX_POINTS} points (every n-th row, keeping the last).
  */
 public final class PaperCharts {
-    static final int MAX_POINTS = 1500;
+    static final int MAX_POINTS = Recorder.CHART_POINTS;
+    /** Pixels between the stacked plots of Fig. 7. */
+    static final int GAP = 18;
     static final Color J2 = new Color(0x1f77b4), J3 = new Color(0xd62728), BREAK = new Color(0x2ca02c);
 
     private PaperCharts() {}
@@ -32,13 +34,14 @@ public final class PaperCharts {
     public static JFreeChart figure7(Recorder r, int k, double breakawayTime, String title) {
         NumberAxis time = new NumberAxis("time t (s)");
         CombinedDomainXYPlot plot = new CombinedDomainXYPlot(time);
-        plot.setGap(8);
+        plot.setGap(GAP);   // more than a tick label's height: the labels of neighbouring plots never meet
         plot.add(panel(r, k, Recorder.TH2, Recorder.TH3, "angle (deg)", Math.toDegrees(1), breakawayTime, true), 1);
         plot.add(panel(r, k, Recorder.DTH2, Recorder.DTH3, "velocity (deg/s)", Math.toDegrees(1), breakawayTime, false), 1);
         plot.add(panel(r, k, Recorder.DDTH2, Recorder.DDTH3, "acceleration (deg/s²)", Math.toDegrees(1), breakawayTime, false), 1);
         plot.add(panel(r, k, Recorder.TAU2, Recorder.TAU3, "torque (N·m)", 1, breakawayTime, false), 1);
         JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), plot, true);
         chart.setBackgroundPaint(Color.WHITE);
+        chart.setPadding(new org.jfree.chart.ui.RectangleInsets(4, 4, 4, 16));   // room for the last time tick label
         return chart;
     }
 
@@ -66,6 +69,7 @@ public final class PaperCharts {
         style(p);
         mark(p, breakawayTime, breakawayTime);
         JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), p, true);
+        chart.setPadding(new org.jfree.chart.ui.RectangleInsets(4, 4, 4, 16));
         chart.setBackgroundPaint(Color.WHITE);
         return chart;
     }

@@ -1,5 +1,6 @@
 package org.handsim.chart;
 
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Path;
@@ -110,7 +111,7 @@ public final class StudyTable {
         return "series,setting,default," + String.join(",", columns);
     }
 
-    /** Writes the CSV atomically. Numbers are written with full precision ({@code Double.toString}). */
+    /** Writes the CSV atomically. Numbers are written by {@link Decimal} (shortest round trip, integers plain); NaN (not defined) as an empty cell. */
     public void writeCsv(Path file) throws IOException {
         try (AtomicFile f = new AtomicFile(file)) {
             Writer w = f.writer();
@@ -120,7 +121,7 @@ public final class StudyTable {
             for (Row r : rows) {
                 sb.setLength(0);
                 sb.append(r.series()).append(',').append(r.setting()).append(',').append(r.isDefault());
-                for (double v : r.values()) sb.append(',').append(v);
+                for (double v : r.values()) sb.append(',').append(Decimal.orEmpty(v));
                 sb.append('\n');
                 w.append(sb);
             }

@@ -12,25 +12,28 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.annotations.XYPointerAnnotation;
 import org.jfree.chart.axis.LogAxis;
 import org.jfree.chart.axis.NumberTickUnit;
 import org.jfree.chart.labels.XYItemLabelGenerator;
 import org.jfree.chart.plot.XYPlot;
-import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.chart.title.TextTitle;
 import org.jfree.chart.ui.HorizontalAlignment;
 import org.jfree.chart.ui.RectangleEdge;
-import org.jfree.chart.ui.TextAnchor;
+import org.jfree.chart.ui.RectangleInsets;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 
 /**
  * A speed-against-accuracy chart from a {@link StudyTable}: x and y on log axes, one colour per
  * series, each point labelled with its setting, each series' Pareto front drawn as a dashed
- * line through its non-dominated points, the default setting ringed and pointed at. Values
- * that are 0 (an exact answer) cannot sit on a log axis: they are drawn at the floor of the
- * axis (a tenth of the smallest positive value) and the subtitle says so; the CSV keeps the 0.
+ * line through its non-dominated points, the default setting ringed and labelled in bold
+ * "(default)". Values that are 0 (an exact answer) cannot sit on a log axis: they are drawn at
+ * the floor of the axis (a tenth of the smallest positive value) and the subtitle says so; the
+ * CSV keeps the 0.
+ *
+ * <p>Point labels never overlap each other or cover a point ({@link LabelPlacingRenderer}): the
+ * series of a study often share their x values, so labels placed at a fixed offset ran into
+ * each other. The chart keeps a right margin so the last tick label of the x axis is not cut.
  */
 public final class TradeoffChart {
     static final Color[] PALETTE = {
@@ -49,9 +52,8 @@ public final class TradeoffChart {
         double fx = floor(t, t.xColumn()), fy = floor(t, t.yColumn());
         boolean clamped = false;
         XYSeriesCollection data = new XYSeriesCollection();
-        XYLineAndShapeRenderer r = new XYLineAndShapeRenderer();
+        LabelPlacingRenderer r = new LabelPlacingRenderer();
         List<List<String>> labels = new ArrayList<>();
-        List<double[]> defaults = new ArrayList<>();
         int s = 0;
         for (String name : t.series()) {
             List<StudyTable.Row> rows = t.rows(name);
@@ -70,7 +72,7 @@ public final class TradeoffChart {
                 if (!(x[i] > 0) || !(y[i] > 0)) clamped = true;
                 points.add(px, py);
                 pointLabels.add(t.labelsEveryPoint() || row.isDefault() || onFront.contains(i) ? row.setting() : null);
-                if (row.isDefault()) defaults.add(new double[] {px, py, s});
+                if (row.isDefault()) r.markDefault(data.getSeriesCount(), points.getItemCount() - 1);
             }
             XYSeries front = new XYSeries(name + " (Pareto front)", false, true);
             for (int i : onFront) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
@@ -107,18 +109,9 @@ public final class TradeoffChart {
         plot.setBackgroundPaint(Color.WHITE);
         plot.setDomainGridlinePaint(new Color(0xdddddd));
         plot.setRangeGridlinePaint(new Color(0xdddddd));
-        for (double[] d : defaults) {
-            XYPointerAnnotation a = new XYPointerAnnotation("default", d[0], d[1], -Math.PI / 4);
-            a.setFont(new Font("SansSerif", Font.BOLD, 12));
-            a.setPaint(PALETTE[(int) d[2] % PALETTE.length]);
-            a.setArrowPaint(PALETTE[(int) d[2] % PALETTE.length]);
-            a.setTextAnchor(TextAnchor.BOTTOM_LEFT);
-            a.setTipRadius(7);
-            a.setBaseRadius(40);
-            plot.addAnnotation(a);
-        }
         JFreeChart chart = new JFreeChart(t.title(), new Font("SansSerif", Font.BOLD, 16), plot, true);
         chart.setBackgroundPaint(Color.WHITE);
+        chart.setPadding(new RectangleInsets(4, 8, 4, 28));   // the last x tick label is centred on the axis end
         List<String> sub = new ArrayList<>();
         sub.add("dashed: Pareto front (no other setting is both faster and more exact); lower left is better");
         if (clamped) sub.add(String.format(java.util.Locale.ROOT, "0 (exact) is drawn at the axis floor (%.0e on x, %.0e on y)", fx, fy));

@@ -1,5 +1,8 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
+import org.handsim.util.Decimal;
+
 /** Parsing of the comma-separated numeric arguments the sub-commands share. */
 final class Args {
     private Args() {}
@@ -13,16 +16,16 @@ final class Args {
         if (text == null) throw CliError.usage("handsim: missing " + option);
         String[] parts = text.split(",", -1);
         if (parts.length != n) {
-            throw CliError.usage("handsim: " + option + " needs " + n + " comma-separated numbers, got '" + text + "'");
+            throw CliError.usage("handsim: " + option + " needs " + n + " comma-separated numbers, got '" + SafeText.quote(text) + "'");
         }
         double[] out = new double[n];
         for (int i = 0; i < n; i++) {
             try {
                 out[i] = Double.parseDouble(parts[i].trim());
             } catch (NumberFormatException e) {
-                throw CliError.usage("handsim: " + option + ": '" + parts[i] + "' is not a number");
+                throw CliError.usage("handsim: " + option + ": '" + SafeText.quote(parts[i]) + "' is not a number");
             }
-            if (!Double.isFinite(out[i])) throw CliError.usage("handsim: " + option + ": '" + parts[i] + "' is not finite");
+            if (!Double.isFinite(out[i])) throw CliError.usage("handsim: " + option + ": '" + SafeText.quote(parts[i]) + "' is not finite");
         }
         return out;
     }
@@ -31,7 +34,7 @@ final class Args {
     static boolean palmFrame(String frame) {
         if (frame.equals("palm")) return true;
         if (frame.equals("base")) return false;
-        throw CliError.usage("handsim: --frame must be base or palm, got '" + frame + "'");
+        throw CliError.usage("handsim: --frame must be base or palm, got '" + SafeText.quote(frame) + "'");
     }
 
     /** Checks a finger number. */
@@ -41,9 +44,9 @@ final class Args {
         return k;
     }
 
-    /** Formats a number for CSV output: shortest round-trip text; refuses non-finite values. */
+    /** Formats a number for CSV output ({@link Decimal}: shortest round trip, integers plain); refuses non-finite values. */
     static String csv(double d) {
         if (!Double.isFinite(d)) throw new IllegalStateException("refusing to write non-finite value " + d);
-        return Double.toString(d);
+        return Decimal.format(d);
     }
 }

@@ -1,9 +1,10 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
+import org.handsim.util.Decimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -14,24 +15,23 @@ import org.handsim.collision.KdopTree;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
-import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.SteadyTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlParseException;
-import org.handsim.vrml.VrmlScene;
+import org.handsim.sim.MeshFiles;
+import org.handsim.sim.ScenarioException;
 
 /**
  * {@code handsim collide A.wrl B.wrl [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}: the
  * contact geometry of two VRML objects (paper Section IV, first two steps).
  */
 @Command(name = "collide", mixinStandardHelpOptions = true,
-    description = {"Intersects two VRML97 objects with k-DOP trees (B placed by --pose-b).",
+    description = {"Intersects two objects (VRML97 .wrl, OBJ .obj or STL .stl) with k-DOP trees (B placed by --pose-b).",
         "Prints {\"intersecting\":bool,\"pairs\":n,\"segments\":n,",
         "  \"patches\":[{\"center\":[x,y,z],\"normal\":[x,y,z],\"area_m2\":a,\"pairs\":n}],",
         "  \"counters\":{\"node_tests\":n,\"tri_tests\":n},\"build_ms\":t,\"query_us_median\":t}",
@@ -39,7 +39,9 @@ import org.handsim.vrml.VrmlScene;
         "patches: connected sets of segments, one point contact each: centre of the",
         "bounding box, unit normal out of B (from B's triangles), area estimate;",
         "A's frame, metres. build_ms: both trees; query_us_median: the tree query",
-        "including B's placement, median of --repeat runs after as many warm-ups.",
+        "including B's placement, once the JIT has compiled it: warm-up of at least",
+        "0.5 s and 10 000 queries, then the median of --repeat timed batches of about",
+        "1 ms each (util.SteadyTiming, the scheme of gradle bench).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
@@ -57,8 +59,11 @@ public final class CollideCommand implements Callable<Integer> {
     @Option(names = "--k", paramLabel = "K", description = "k of the k-DOPs: 6, 14, 18 (default) or 26")
     String kText = "18";
 
-    @Option(names = "--repeat", paramLabel = "N", description = "run the query N times after N warm-up runs and report the median (default 1)")
-    String repeatText = "1";
+    @Option(names = "--repeat", paramLabel = "N", description = {"timed batches after the warm-up (1..10000,", "default " + DEFAULT_REPEAT + "); the median per query is reported"})
+    String repeatText = String.valueOf(DEFAULT_REPEAT);
+
+    /** Timed batches by default: the median of 101 batches of about 1 ms (0.1 s after the warm-up). */
+    static final int DEFAULT_REPEAT = 101;
 
     @Override
     public Integer call() {
@@ -68,7 +73,7 @@ public final class CollideCommand implements Callable<Integer> {
         for (int s : Kdop.SUPPORTED_K) ok |= s == k;
         if (!ok) throw CliError.usage("handsim: --k must be 6, 14, 18 or 26, got " + kText);
         int repeat = integer("--repeat", repeatText);
-        if (repeat < 1 || repeat > 1_000_000) throw CliError.usage("handsim: --repeat must be in 1..1000000, got " + repeatText);
+        if (repeat < 1 || repeat > 10_000) throw CliError.usage("handsim: --repeat must be in 1..10000, got " + repeatText);
         TriangleMesh a = loadMesh(fileA), b = loadMesh(fileB);
         RigidTransform pose = RigidTransform.fromPose(p[0], p[1], p[2], p[3], p[4], p[5]);
         spec.commandLine().getOut().println(JsonWriter.write(collide(a, b, pose, k, repeat)));
@@ -79,35 +84,32 @@ public final class CollideCommand implements Callable<Integer> {
         try {
             return Integer.parseInt(text.trim());
         } catch (NumberFormatException e) {
-            throw CliError.usage("handsim: " + option + ": '" + text + "' is not an integer");
+            throw CliError.usage("handsim: " + option + ": '" + SafeText.quote(text) + "' is not an integer");
         }
     }
 
     /**
-     * Loads a VRML97 file as one triangle mesh in the file's frame (VrmlLoader, then the
-     * tessellation walk with every transform applied; vertices as in the file, not welded).
+     * Loads an object file — VRML97, OBJ or STL ({@link MeshFiles}) — as one triangle mesh in the
+     * file's frame (every transform applied; vertices as in the file, not welded).
      *
-     * @throws CliError exit 3 with FILE:LINE:COL: message when the file cannot be loaded
+     * @throws CliError exit 3 with FILE:LINE:COL: message (binary STL: FILE: byte N: message)
      */
+    /** Segments round VRML Sphere, Cylinder and Cone nodes (the VRML loader's default). */
+    static final int VRML_DIVISIONS = 32;
+
     static TriangleMesh loadMesh(Path file) {
         if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
-        VrmlScene scene;
         try {
-            scene = new VrmlLoader().load(file);
-        } catch (VrmlParseException e) {
+            return MeshFiles.load(file, VRML_DIVISIONS, 1.0).mesh();
+        } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage(), e);
-        }
-        try {
-            return new TessellationWalk().name(file.getFileName().toString()).run(scene.getSceneGroup()).merged();
-        } catch (IllegalStateException | IllegalArgumentException e) {
-            throw new CliError(CliError.LOAD, file + ":1:1: " + e.getMessage(), e);
         }
     }
 
     /**
      * The command's JSON object for two meshes (the part that does not read files).
      *
-     * @param repeat the query runs this many times after as many warm-up runs; the median is reported
+     * @param repeat timed batches after the warm-up ({@link SteadyTiming}); the median per query is reported
      */
     static Map<String, Object> collide(TriangleMesh a, TriangleMesh b, RigidTransform pose, int k, int repeat) {
         long t0 = System.nanoTime();
@@ -115,22 +117,15 @@ public final class CollideCommand implements Callable<Integer> {
         double buildMs = (System.nanoTime() - t0) / 1e6;
         TreeQuery q = new TreeQuery();
         CollisionResult r = new CollisionResult();
-        for (int i = 0; i < repeat && repeat > 1; i++) q.collide(ta, tb, pose, r);  // warm-up
-        double[] us = new double[repeat];
-        for (int i = 0; i < repeat; i++) {
-            long s = System.nanoTime();
-            q.collide(ta, tb, pose, r);
-            us[i] = (System.nanoTime() - s) / 1e3;
-        }
-        Arrays.sort(us);
-        double median = repeat % 2 == 1 ? us[repeat / 2] : 0.5 * (us[repeat / 2 - 1] + us[repeat / 2]);
+        double median = SteadyTiming.median(() -> q.collide(ta, tb, pose, r).pairCount() + r.nodeTests, repeat).medianMicros();
+        q.collide(ta, tb, pose, r);
         ContactPatches cp = new ContactPatches();
         int n = cp.build(r, a, b, pose);
         List<Object> patches = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             Map<String, Object> pm = new LinkedHashMap<>();
-            pm.put("center", cp.center(i, new double[3]));
-            pm.put("normal", cp.normal(i, new double[3]));
+            pm.put("center", Decimal.clean(cp.center(i, new double[3])));   // README: |x| < 1e-12 written as 0
+            pm.put("normal", Decimal.clean(cp.normal(i, new double[3])));
             pm.put("area_m2", cp.area(i));
             pm.put("pairs", cp.pairCount(i));
             patches.add(pm);
@@ -145,7 +140,7 @@ public final class CollideCommand implements Callable<Integer> {
         out.put("patches", patches);
         out.put("counters", counters);
         out.put("build_ms", Math.round(buildMs * 1000) / 1000.0);
-        out.put("query_us_median", Math.round(median * 10) / 10.0);
+        out.put("query_us_median", Math.round(median * 100) / 100.0);
         return out;
     }
 }

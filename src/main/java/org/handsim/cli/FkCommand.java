@@ -1,5 +1,7 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -16,9 +18,13 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code handsim fk}: forward kinematics of one finger, or of every row of a CSV file. */
 @Command(name = "fk", mixinStandardHelpOptions = true,
     description = {"Forward kinematics (paper Section II.A): the origins of frames {k0}..{k3} and the fingertip.",
-        "Prints {\"finger\":K,\"frame\":\"base\",\"joints\":[t1,t2,t3],\"origins\":[[x,y,z] x4],\"fingertip\":[x,y,z]}",
-        "(metres; joints in radians). Bulk: --input IN.csv (header finger,t1,t2,t3) --output OUT.csv",
-        "adds o0x,o0y,o0z,...,o3z in the base frame."})
+        "Prints",
+        "  {\"finger\":K,\"frame\":\"base\",\"joints\":[t1,t2,t3],",
+        "   \"origins\":[[x,y,z],[x,y,z],[x,y,z],[x,y,z]],\"fingertip\":[x,y,z]}",
+        "(metres; joints in radians). Bulk: --input IN.csv with the header",
+        "  finger,t1,t2,t3",
+        "and --output OUT.csv, which adds the columns (base frame)",
+        "  o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z"})
 public final class FkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,t1,t2,t3";
     static final String ADDED_HEADER = "o0x,o0y,o0z,o1x,o1y,o1z,o2x,o2y,o2z,o3x,o3y,o3z";
@@ -37,7 +43,7 @@ public final class FkCommand implements Callable<Integer> {
     @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the output: finger base {k0} (default) or palm {P}")
     String frame;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
     Path input;
 
     @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
@@ -54,7 +60,7 @@ public final class FkCommand implements Callable<Integer> {
             j = Args.numbers("--joints", joints, 3);
         } else {
             String[] p = counts.split(",", -1);
-            if (p.length < 1 || p.length > 2) throw CliError.usage("handsim: --counts needs q or q,qSpread, got '" + counts + "'");
+            if (p.length < 1 || p.length > 2) throw CliError.usage("handsim: --counts needs q or q,qSpread, got '" + SafeText.quote(counts) + "'");
             double[] q = Args.numbers("--counts", counts, p.length);
             try {
                 j = Transmission.barrettHand().joints(k, q[0], p.length == 2 ? q[1] : 0, null);
@@ -74,9 +80,9 @@ public final class FkCommand implements Callable<Integer> {
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("finger", k);
         out.put("frame", frame);
-        out.put("joints", j);
-        out.put("origins", origins);
-        out.put("fingertip", origins[3]);
+        out.put("joints", Decimal.clean(j));          // README: |x| < 1e-12 is rounding noise, written as 0
+        out.put("origins", Decimal.clean(origins));
+        out.put("fingertip", Decimal.clean(origins[3]));
         spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
@@ -95,7 +101,7 @@ public final class FkCommand implements Callable<Integer> {
                     throw in.error(e.getMessage());
                 }
                 for (int f = 0; f < 4; f++) {
-                    for (int c = 0; c < 3; c++) sb.append(',').append(Args.csv(frames[12 * f + 4 * c + 3]));
+                    for (int c = 0; c < 3; c++) sb.append(',').append(Args.csv(Decimal.clean(frames[12 * f + 4 * c + 3])));
                 }
             });
     }

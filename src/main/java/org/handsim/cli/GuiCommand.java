@@ -18,11 +18,15 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim gui}: the desktop program (Swing + Java3D), interactive or scripted. */
 @Command(name = "gui", mixinStandardHelpOptions = true,
-    description = {"Opens the simulator's window (paper Fig. 5): the Kinematics, Path Planning,",
-        "Dynamics and Objects panels, Play/Pause/Step/Reset, the 3D view of the hand",
+    description = {"Opens the simulator's window (paper Fig. 5).",
+        "It has the Kinematics, Path Planning, Dynamics and Objects panels,",
+        "Play/Pause/Step/Reset, the 3D view of the hand",
         "and the object with contact points and normals (mouse: left drag orbits,",
         "wheel or middle drag zooms, right drag pans) and live joint traces.",
         "Default scenario: the paper's experiment, scenarios/paper-breakaway.json.",
+        "Menus File (open/save scenario, import object, export traces, save charts,",
+        "screenshot), View (camera, contacts, series) and Run; keys: Space play/pause,",
+        "Right step, R reset, H/F/1/2/3 camera, Ctrl+O/S/I/E.",
         "It needs a display. Without one, use a virtual display:",
         "  xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ...",
         "or ./handsim gui, which starts Xvfb itself. With --script, --screenshot or",
@@ -44,7 +48,7 @@ public final class GuiCommand implements Callable<Integer> {
         description = "at the end, render continuously for SECONDS and print the frames per second, then exit")
     Double measureFps;
 
-    @Option(names = "--object", paramLabel = "FILE.wrl", description = "import this VRML97 object at the start (as the Objects panel does)")
+    @Option(names = "--object", paramLabel = "FILE", description = "import this object (.wrl, .obj, .stl) at the start, as the Objects panel does")
     Path object;
 
     @Option(names = "--speed", paramLabel = "FACTOR|max", description = "simulation speed: 1 = real time (default), max = as fast as possible")

@@ -1,17 +1,36 @@
 package org.handsim.cli;
 
 import java.awt.GraphicsEnvironment;
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import org.handsim.util.SafeText;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * Entry point of the {@code handsim} command. Sub-commands are registered in
- * {@link #SUBCOMMANDS}; each has {@code --help}.
+ * {@link #SUBCOMMANDS}; each has {@code --help}, and {@code handsim help CMD} shows the same.
+ *
+ * <p><b>Errors.</b> Every failure is one line on standard error (control and line-breaking
+ * characters escaped by {@link SafeText}) and an exit code (README): a {@link CliError} with its
+ * own code; a picocli usage error, exit 2; anything unexpected — any exception or error,
+ * {@link OutOfMemoryError} and {@link StackOverflowError} included, on any thread the command
+ * waited for — exit 1 with one line naming it and the path of a log file under the system's
+ * temporary folder ({@code handsim-logs/}) that holds the stack trace. No command prints a
+ * stack trace.
+ *
+ * <p><b>Help.</b> The usage width is fixed at {@value #HELP_WIDTH} columns; the synopsis is
+ * wrapped between options only, never inside one ({@code [--gravity=gx,gy,gz]} stays whole);
+ * the command list shows each command's first sentence whole. {@code handsim} alone prints the
+ * command list on standard error and exits 2.
  */
 @Command(name = "handsim", mixinStandardHelpOptions = true, version = "HandSim 0.1.0",
-    description = "Simulator of the BarrettHand grasping objects from VRML97 files "
+    description = "Simulator of the BarrettHand grasping objects from VRML97, OBJ and STL files "
         + "(Corrales, Jara, Torres: kinematics, dynamics, breakaway clutch, contact).",
     subcommandsRepeatable = false)
 public final class HandSim implements Runnable {
@@ -27,13 +46,23 @@ public final class HandSim implements Runnable {
         SweepCommand.class,
         GuiCommand.class,
         TradeoffCommand.class,
-        SwingCommand.class
+        SwingCommand.class,
+        QualityCommand.class,
+        GraspCommand.class,
+        PlanCommand.class
         // sub-commands register here, one line each
     );
 
+    /** Columns of every help text. */
+    static final int HELP_WIDTH = 80;
+
+    @picocli.CommandLine.Spec CommandSpec spec;
+
+    /** {@code handsim} without a command: the command list on standard error, exit 2. */
     @Override
     public void run() {
-        CommandLine.usage(this, System.out);
+        spec.commandLine().usage(spec.commandLine().getErr());
+        throw new CliError(CliError.USAGE, "handsim: a command is needed (see the list above; 'handsim help CMD' for one command)");
     }
 
     /** Runs the command line and returns the exit code (does not call System.exit). */
@@ -43,29 +72,133 @@ public final class HandSim implements Runnable {
 
     /** Runs the command line with the given streams and returns the exit code. */
     public static int execute(PrintWriter out, PrintWriter err, String... args) {
-        prepareHeadless();
-        CommandLine cl = new CommandLine(new HandSim());
-        for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
-        cl.setOut(out);
-        cl.setErr(err);
-        cl.setParameterExceptionHandler((ex, a) -> {
-            err.println("handsim: " + ex.getMessage());
-            err.println("Try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help'.");
-            return CliError.USAGE;
-        });
-        cl.setExecutionExceptionHandler((ex, line, parsed) -> {
-            if (ex instanceof CliError) {
-                err.println(ex.getMessage());
-                return ((CliError) ex).exitCode();
-            }
-            err.println("handsim: internal error: " + ex);
-            ex.printStackTrace(err);
-            return 1;
-        });
-        int code = cl.execute(args);
+        int code;
+        try {
+            prepareHeadless();
+            CommandLine cl = commandLine();
+            cl.setOut(out);
+            cl.setErr(err);
+            cl.setParameterExceptionHandler((ex, a) -> {
+                err.println(SafeText.line("handsim: " + ex.getMessage()) + " (try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help')");
+                return CliError.USAGE;
+            });
+            cl.setExecutionExceptionHandler((ex, line, parsed) -> failure(err, ex));
+            code = cl.execute(args);
+        } catch (Throwable t) {   // errors picocli does not catch (OutOfMemoryError, StackOverflowError ...)
+            code = failure(err, t);
+        }
         out.flush();
         err.flush();
         return code;
+    }
+
+    /** The command line with every sub-command and the help layout. */
+    static CommandLine commandLine() {
+        CommandLine cl = new CommandLine(new HandSim());
+        for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+        cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
+        cl.setUsageHelpWidth(HELP_WIDTH);
+        cl.setUsageHelpAutoWidth(false);
+        applySynopsis(cl);
+        return cl;
+    }
+
+    private static void applySynopsis(CommandLine cl) {
+        cl.getHelpSectionMap().put(CommandLine.Model.UsageMessageSpec.SECTION_KEY_SYNOPSIS, help -> wholeOptionSynopsis(help));
+        for (CommandLine sub : cl.getSubcommands().values()) applySynopsis(sub);
+    }
+
+    /**
+     * picocli's synopsis, wrapped at {@link #HELP_WIDTH} only at spaces outside brackets, so an
+     * option and its parameter label ({@code [--gravity=gx,gy,gz]}) are never split.
+     */
+    static String wholeOptionSynopsis(CommandLine.Help help) {
+        CommandLine.Model.UsageMessageSpec u = help.commandSpec().usageMessage();
+        int width = u.width();
+        String one;
+        try {
+            u.width(10_000);
+            one = help.synopsis(0).trim();
+        } finally {
+            u.width(width);
+        }
+        String prefix = u.synopsisHeading().replace("%n", "");
+        one = one.startsWith(prefix.trim()) ? one.substring(prefix.trim().length()).trim() : one;
+        String qualified = help.commandSpec().qualifiedName();
+        if (one.startsWith(qualified)) one = one.substring(qualified.length()).trim();
+        List<String> tokens = new ArrayList<>();
+        int depth = 0, start = 0;
+        for (int i = 0; i < one.length(); i++) {
+            char c = one.charAt(i);
+            if (c == '[' || c == '(') depth++;
+            else if (c == ']' || c == ')') depth--;
+            else if (c == ' ' && depth == 0) {
+                if (i > start) tokens.add(one.substring(start, i));
+                start = i + 1;
+            }
+        }
+        if (start < one.length()) tokens.add(one.substring(start));
+        String name = help.commandSpec().qualifiedName();
+        StringBuilder sb = new StringBuilder(name);   // the heading ("Usage: ") is its own section
+        int indent = prefix.length() + name.length() + 1;
+        int col = indent - 1;
+        for (int i = 0; i < tokens.size(); i++) {
+            String t = tokens.get(i);
+            if (col + 1 + t.length() > width && col > indent) {
+                sb.append(System.lineSeparator()).append(" ".repeat(indent));
+                col = indent;
+            } else {
+                sb.append(' ');
+                col++;
+            }
+            sb.append(t);
+            col += t.length();
+        }
+        return sb.append(System.lineSeparator()).toString();
+    }
+
+    /**
+     * One line on standard error for any failure and its exit code: a {@link CliError}'s message
+     * and code; anything else exit 1, naming the error and a log file with its stack trace.
+     */
+    static int failure(PrintWriter err, Throwable ex) {
+        Throwable t = ex;
+        while ((t instanceof java.util.concurrent.ExecutionException || t instanceof java.util.concurrent.CompletionException
+            || t instanceof CommandLine.ExecutionException) && t.getCause() != null) t = t.getCause();
+        if (t instanceof CliError) {
+            err.println(SafeText.line(t.getMessage()));
+            err.flush();
+            return ((CliError) t).exitCode();
+        }
+        String what;
+        if (t instanceof OutOfMemoryError) {
+            what = "out of memory (" + t.getMessage() + "): give Java more heap, e.g. HANDSIM_JAVA_OPTS=-Xmx8g, or make the run smaller";
+        } else if (t instanceof StackOverflowError) {
+            what = "stack overflow (input nested too deeply): give Java a larger stack, e.g. HANDSIM_JAVA_OPTS=-Xss64m";
+        } else if (t instanceof IOException || t instanceof java.io.UncheckedIOException) {
+            what = "input/output error: " + (t instanceof java.io.UncheckedIOException ? t.getCause() : t);
+        } else {
+            what = "internal error: " + t;
+        }
+        String log = writeLog(t);
+        err.println(SafeText.line("handsim: " + what) + (log != null ? " (stack trace in " + log + ")" : ""));
+        err.flush();
+        return 1;
+    }
+
+    /** Writes the stack trace to a new file under {@code <tmp>/handsim-logs/}; null if that fails too. */
+    static String writeLog(Throwable t) {
+        try {
+            Path dir = Path.of(System.getProperty("java.io.tmpdir"), "handsim-logs");
+            Files.createDirectories(dir);
+            Path f = Files.createTempFile(dir, "handsim-", ".log");
+            java.io.StringWriter sw = new java.io.StringWriter();
+            t.printStackTrace(new PrintWriter(sw));
+            Files.writeString(f, sw.toString());
+            return f.toString();
+        } catch (IOException | RuntimeException | Error e) {
+            return null;
+        }
     }
 
     /**

@@ -1,5 +1,7 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -21,7 +23,8 @@ import picocli.CommandLine.Model.CommandSpec;
  * N·m, kg·m².
  */
 @Command(name = "id", mixinStandardHelpOptions = true,
-    description = {"Inverse dynamics of a finger, paper eq (8): tau = D(q)*qdd + H(q,qd) + C(q).",
+    description = {"Inverse dynamics of a finger (paper eq 8): its joint torques and D, H, C.",
+        "tau = D(q)*qdd + H(q,qd) + C(q).",
         "Prints {\"finger\":K,\"tau\":[..],\"D\":[[..]],\"H\":[..],\"C\":[..]}",
         "in N*m and kg*m^2. Finger 3 has no spread: give q1 = qd1 = qdd1 = 0;",
         "it prints its two active joints (2-vectors, a 2x2 D).",
@@ -48,14 +51,14 @@ public final class IdCommand implements Callable<Integer> {
     @Option(names = "--qdd", paramLabel = "qdd1,qdd2,qdd3", description = "joint accelerations, rad/s^2")
     String qdd;
 
-    @Option(names = "--gravity", paramLabel = "gx,gy,gz", description = "gravity in the finger base frame {k0}, m/s^2, e.g. 0,0,-9.81")
+    @Option(names = "--gravity", paramLabel = "gx,gy,gz", description = {"gravity in the finger base frame {k0}, m/s^2,", "e.g. 0,0,-9.81"})
     String gravity;
 
     @Option(names = "--method", paramLabel = "le|ne", defaultValue = "le",
         description = "le: Lagrange-Euler (default, the paper's algorithm); ne: recursive Newton-Euler")
     String method;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
     Path input;
 
     @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
@@ -66,7 +69,7 @@ public final class IdCommand implements Callable<Integer> {
         HandDynamics.Method m;
         if (method.equals("le")) m = HandDynamics.Method.LAGRANGE_EULER;
         else if (method.equals("ne")) m = HandDynamics.Method.NEWTON_EULER;
-        else throw CliError.usage("handsim: --method must be le or ne, got '" + method + "'");
+        else throw CliError.usage("handsim: --method must be le or ne, got '" + SafeText.quote(method) + "'");
         HandDynamics hand = HandDynamics.of(HandDescription.barrettHand(), m);
         if (input != null || output != null) return bulk(hand);
         Args.finger(finger);
@@ -85,10 +88,10 @@ public final class IdCommand implements Callable<Integer> {
         for (int i = 0; i < n; i++) System.arraycopy(dm, i * n, rows[i], 0, n);
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("finger", finger);
-        out.put("tau", tau);
-        out.put("D", rows);
-        out.put("H", h);
-        out.put("C", c);
+        out.put("tau", Decimal.clean(tau));      // README: |x| < 1e-12 is rounding noise, written as 0
+        out.put("D", Decimal.clean(rows));
+        out.put("H", Decimal.clean(h));
+        out.put("C", Decimal.clean(c));
         spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
@@ -113,7 +116,7 @@ public final class IdCommand implements Callable<Integer> {
                     sb.append(',');
                     if (!chain.isActive(j)) continue;
                     if (!Double.isFinite(tau[j])) throw in.error("torque tau" + (j + 1) + " is not finite (" + tau[j] + ")");
-                    sb.append(Args.csv(tau[j]));
+                    sb.append(Args.csv(Decimal.clean(tau[j])));
                 }
             });
     }

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -16,9 +17,13 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code handsim ik}: inverse kinematics of one finger, or of every row of a CSV file. */
 @Command(name = "ik", mixinStandardHelpOptions = true,
     description = {"Inverse kinematics (paper eqs 5-7) with joint limits and the closest reachable point.",
-        "Prints {\"reachable\":true|false,\"joints\":[t1,t2,t3],\"fingertip\":[x,y,z],\"error_m\":e}",
-        "(metres, radians; fingertip in the target's frame; unreachable: the closest reachable point).",
-        "Bulk: --input IN.csv (header finger,x,y,z) --output OUT.csv adds reachable,t1,t2,t3,error_m."})
+        "Prints",
+        "  {\"reachable\":true|false,\"joints\":[t1,t2,t3],\"fingertip\":[x,y,z],\"error_m\":e}",
+        "(metres, radians; fingertip in the target's frame; unreachable: the closest",
+        "reachable point). Bulk: --input IN.csv with the header",
+        "  finger,x,y,z",
+        "and --output OUT.csv, which adds the columns",
+        "  reachable,t1,t2,t3,error_m"})
 public final class IkCommand implements Callable<Integer> {
     static final String IN_HEADER = "finger,x,y,z";
     static final String ADDED_HEADER = "reachable,t1,t2,t3,error_m";
@@ -34,7 +39,7 @@ public final class IkCommand implements Callable<Integer> {
     @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the target: finger base {k0} (default) or palm {P}")
     String frame;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input with header " + IN_HEADER)
+    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
     Path input;
 
     @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
@@ -50,9 +55,9 @@ public final class IkCommand implements Callable<Integer> {
         IkResult r = palm ? ik.solveInPalm(t) : ik.solve(t);
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("reachable", r.reachable());
-        out.put("joints", r.joints());
-        out.put("fingertip", r.fingertip());
-        out.put("error_m", r.errorM());
+        out.put("joints", Decimal.clean(r.joints()));      // README: |x| < 1e-12 is rounding noise, written as 0
+        out.put("fingertip", Decimal.clean(r.fingertip()));
+        out.put("error_m", Decimal.clean(r.errorM()));
         spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
@@ -66,8 +71,8 @@ public final class IkCommand implements Callable<Integer> {
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
                 IkResult r = palm ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
                 double[] j = r.joints();
-                sb.append(',').append(r.reachable()).append(',').append(Args.csv(j[0])).append(',').append(Args.csv(j[1]))
-                    .append(',').append(Args.csv(j[2])).append(',').append(Args.csv(r.errorM()));
+                sb.append(',').append(r.reachable()).append(',').append(Args.csv(Decimal.clean(j[0]))).append(',').append(Args.csv(Decimal.clean(j[1])))
+                    .append(',').append(Args.csv(Decimal.clean(j[2]))).append(',').append(Args.csv(Decimal.clean(r.errorM())));
             });
     }
 }

@@ -9,13 +9,12 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.mesh.MeshWelder;
 import org.handsim.mesh.ObjWriter;
-import org.handsim.mesh.TessellationWalk;
+import org.handsim.mesh.StlWriter;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.sim.MeshFiles;
+import org.handsim.sim.ScenarioException;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
-import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlParseException;
-import org.handsim.vrml.VrmlScene;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -23,34 +22,40 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code handsim mesh FILE.wrl [--divisions N] [--scale S] [--obj OUT.obj]}: loads a VRML97 file
- * (VrmlLoader ⇒ BranchGroup ⇒ TessellationWalk ⇒ TriangleMesh), welds coincident vertices and
- * prints one JSON line:
+ * {@code handsim mesh FILE [--divisions N] [--scale S] [--obj OUT.obj] [--stl OUT.stl]}: loads a
+ * VRML97, OBJ or STL file as scenarios do ({@link MeshFiles}: VrmlLoader or Java3D's ObjectFile ⇒
+ * BranchGroup ⇒ TessellationWalk, or the STL reader ⇒ TriangleMesh), welds coincident vertices
+ * and prints one JSON line:
  *
  * <pre>{"file":..,"shapes":n,"triangles":n,"vertices":n,"degenerate":n,"area_m2":A,
  *  "volume_m3":V|null,"closed":bool,"bounds":[[xmin,ymin,zmin],[xmax,ymax,zmax]],"load_ms":t}</pre>
  *
- * shapes = Shape3D instances with surface geometry (each USE counted); triangles, vertices,
+ * shapes = Shape3D instances with surface geometry (each USE counted; OBJ: one per group; STL: 1); triangles, vertices,
  * area, bounds: of the welded mesh; degenerate = zero-area triangles dropped (by the walk, plus
  * those whose corners the weld merged); volume: the enclosed volume if the welded mesh is closed
  * (every edge shared by exactly two oppositely oriented triangles), else null; load_ms: parse,
  * scene building and tessellation walk. Warnings go to standard error, one per line.
  */
 @Command(name = "mesh", mixinStandardHelpOptions = true,
-    description = {"Load a VRML97 file (VrmlLoader, tessellation walk) and print its triangle mesh statistics.",
-        "Output, one JSON line: {\"file\",\"shapes\",\"triangles\",\"vertices\",\"degenerate\",\"area_m2\",\"volume_m3\" (null unless closed),"
-            + "\"closed\",\"bounds\",\"load_ms\"}.",
-        "Coincident vertices are welded before the closed-ness test. Warnings go to standard error.",
-        "Exit codes: 0 ok, 2 bad arguments, 3 file cannot be loaded (FILE:LINE:COL: message)."})
+    description = {"Loads a VRML97, OBJ or STL file and prints its triangle mesh statistics.",
+        "Formats by extension: .wrl (VRML97, also gzipped), .obj (Wavefront), .stl",
+        "(ASCII or binary).",
+        "Prints one JSON line (volume_m3 is null unless the mesh is closed):",
+        "  {\"file\":..,\"shapes\":n,\"triangles\":n,\"vertices\":n,\"degenerate\":n,",
+        "   \"area_m2\":A,\"volume_m3\":V|null,\"closed\":bool,",
+        "   \"bounds\":[[xmin,ymin,zmin],[xmax,ymax,zmax]],\"load_ms\":t}",
+        "Coincident vertices are welded before the closed-ness test. Warnings go to",
+        "standard error. Exit codes: 0 ok, 2 bad arguments, 3 file cannot be loaded",
+        "(FILE:LINE:COL: message; binary STL: FILE: byte N: message)."})
 public final class MeshCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "FILE", description = "VRML97 file (.wrl, plain or gzip)")
+    @Parameters(index = "0", paramLabel = "FILE", description = "VRML97 (.wrl, plain or gzip), OBJ (.obj) or STL (.stl) file")
     Path file;
 
     @Option(names = "--divisions", paramLabel = "N", defaultValue = "32",
-        description = "segments around the axis of Sphere, Cylinder and Cone (3..100000; default ${DEFAULT-VALUE})")
+        description = "VRML: segments around the axis of Sphere, Cylinder and Cone (3..100000; default ${DEFAULT-VALUE})")
     int divisions;
 
     @Option(names = "--scale", paramLabel = "S", defaultValue = "1",
@@ -60,6 +65,24 @@ public final class MeshCommand implements Callable<Integer> {
     @Option(names = "--obj", paramLabel = "OUT.obj", description = "also write the welded triangles as Wavefront OBJ")
     Path obj;
 
+    @Option(names = "--stl", paramLabel = "OUT.stl", description = "also write the welded triangles as binary STL (float32)")
+    Path stl;
+
+    /**
+     * Whether the mesh changes with --divisions: the file loaded again at other divisions gives
+     * other triangles (only Sphere, Cylinder and Cone depend on them).
+     */
+    private boolean dependsOnDivisions(MeshFiles.Loaded r) {
+        int other = divisions == 3 ? 4 : 3;
+        TriangleMesh a = r.mesh(), b;
+        try {
+            b = MeshFiles.load(file, other, scale).mesh();
+        } catch (RuntimeException e) {
+            return true;   // cannot tell: say nothing
+        }
+        return a.triangleCount() != b.triangleCount() || !java.util.Arrays.equals(a.vertices(), b.vertices());
+    }
+
     @Override
     public Integer call() throws IOException {
         if (divisions < 3 || divisions > 100_000) throw CliError.usage("handsim mesh: --divisions must be in 3..100000, got " + divisions);
@@ -67,29 +90,26 @@ public final class MeshCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         long t0 = System.nanoTime();
-        VrmlScene scene;
+        MeshFiles.Loaded r;
         try {
-            scene = new VrmlLoader().divisions(divisions).load(file);
-        } catch (VrmlParseException e) {
+            r = MeshFiles.load(file, divisions, scale);
+        } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage(), e);
         }
-        for (String w : scene.warnings()) err.println(w);
-        TessellationWalk.Result r;
-        try {
-            r = new TessellationWalk().scale(scale).name(file.getFileName().toString()).run(scene.getSceneGroup());
-        } catch (IllegalStateException | IllegalArgumentException e) {
-            throw new CliError(CliError.LOAD, file + ":1:1: " + e.getMessage(), e);
-        }
+        for (String w : r.warnings()) err.println(w);
         double loadMs = (System.nanoTime() - t0) / 1e6;
+        if (spec.commandLine().getParseResult().hasMatchedOption("--divisions") && !dependsOnDivisions(r)) {
+            err.println("handsim mesh: --divisions has no effect: " + file + " has no Sphere, Cylinder or Cone (a fixed mesh)");
+        }
         MeshWelder welder = new MeshWelder();
-        TriangleMesh mesh = welder.weld(r.merged());
+        TriangleMesh mesh = welder.weld(r.mesh());
         boolean closed = mesh.isClosed();
         Map<String, Object> json = new LinkedHashMap<>();
         json.put("file", file.toString());
-        json.put("shapes", r.shapes);
+        json.put("shapes", r.shapes());
         json.put("triangles", mesh.triangleCount());
         json.put("vertices", mesh.vertexCount());
-        json.put("degenerate", r.degenerate + welder.lastCollapsed());
+        json.put("degenerate", r.degenerate() + welder.lastCollapsed());
         json.put("area_m2", mesh.area());
         json.put("volume_m3", closed ? mesh.signedVolume() : null);
         json.put("closed", closed);
@@ -98,6 +118,12 @@ public final class MeshCommand implements Callable<Integer> {
         if (obj != null) {
             try (AtomicFile f = new AtomicFile(obj)) {
                 ObjWriter.write(f.writer(), List.of(mesh));
+                f.commit();
+            }
+        }
+        if (stl != null) {
+            try (AtomicFile f = new AtomicFile(stl)) {
+                StlWriter.writeBinary(f.stream(), mesh, 1.0);
                 f.commit();
             }
         }

@@ -10,7 +10,9 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.chart.ChartExport;
 import org.handsim.chart.PaperCharts;
+import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
+import org.handsim.sim.Recorder;
 import org.handsim.sim.Home;
 import org.handsim.sim.RunSummary;
 import org.handsim.sim.Scenario;
@@ -28,9 +30,11 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim run}: the main job. */
 @Command(name = "run", mixinStandardHelpOptions = true,
-    description = {"Runs a scenario (default: the paper's breakaway experiment, scenarios/paper-breakaway.json)",
-        "and writes trace.csv, summary.json and the paper's Fig. 7 and Fig. 8 (PNG and SVG) into",
-        "out/<scenario name>/ (or --out DIR). Nothing is written if the run fails."})
+    description = {"Runs a scenario and writes its trace, summary and the paper's Fig. 7 and 8.",
+        "SCENARIO defaults to the paper's breakaway experiment,",
+        "scenarios/paper-breakaway.json. Writes trace.csv (streamed as the run goes),",
+        "summary.json and fig7/fig8 (PNG and SVG) into out/<scenario name>/",
+        "(or --out DIR). Nothing is written if the run fails."})
 public final class RunCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 
@@ -56,6 +60,12 @@ public final class RunCommand implements Callable<Integer> {
         "2-tessellation) is at most LENGTH"})
     String tolerance;
 
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of the contacts (default: the scenario's object.friction, else 0.5)")
+    Double friction;
+
+    @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
+    Integer edges;
+
     @Override
     public Integer call() throws IOException {
         PrintWriter err = spec.commandLine().getErr();
@@ -66,6 +76,7 @@ public final class RunCommand implements Callable<Integer> {
             if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
             scenario = scenario.withDt(dt);
         }
+        scenario = GraspCommand.withFriction(scenario, friction, edges);
         Double toleranceM = tolerance != null ? parseTolerance(tolerance) : null;
         String toleranceLine = null;
         if (toleranceM != null) {
@@ -73,99 +84,82 @@ public final class RunCommand implements Callable<Integer> {
             Resolution.Choice c = o == null ? null : chooseResolution(o, toleranceM, err);
             if (o == null) err.println("handsim: --tolerance has no effect: the scenario has no object");
             if (c != null && !c.fixedMesh()) {
-                scenario = scenario.withObject(new Scenario.ObjectPlacement(o.file(), o.worldFromObject(), o.scale(), c.divisions()));
+                scenario = scenario.withObject(o.withDivisions(c.divisions()));
                 toleranceLine = String.format(Locale.ROOT, "tolerance %s: divisions %d (%d triangles), expected worst contact-centre error %s"
                     + " (object radius %s, chart 2-tessellation)", Resolution.mm(toleranceM), c.divisions(), c.triangles(),
                     Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));
             }
         }
         Path dir = out != null ? out : Path.of("out", scenario.name());
-        long t0 = System.nanoTime();
-        HandModel model = Simulation.model(scenario, true).lazy(!noLazy);
-        double setup = (System.nanoTime() - t0) / 1e9;
-        List<String> warnings = startWarnings(model);
-        for (String w : warnings) err.println("handsim: warning: " + w);
-        long t1 = System.nanoTime();
-        try {
-            model.run(new ProgressBar(err, "handsim run " + scenario.name()));
-        } catch (SimulationException e) {
-            throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
-        }
-        double wall = (System.nanoTime() - t1) / 1e9;
-        Map<String, Object> summary = RunSummary.of(model, wall);
-        summary.put("setup_time_s", setup);
-        summary.put("warnings", warnings);
-        if (toleranceM != null) {
-            summary.put("tolerance_m", toleranceM);
-            if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
-        }
+        boolean charts = scenario.writeCharts() && !noCharts;
+        if (noCharts && !scenario.writeCharts()) err.println("handsim: --no-charts has no effect: the scenario writes no charts (outputs.charts is false)");
         List<String> written = new ArrayList<>();
-        // the trace is written on a second thread while the charts are drawn (two cores)
-        double[] traceSeconds = {0};
-        java.util.concurrent.CompletableFuture<Void> trace = null;
-        if (scenario.writeTrace()) {
-            trace = java.util.concurrent.CompletableFuture.runAsync(() -> {
-                long t = System.nanoTime();
-                try {
-                    model.recorder().writeCsv(dir.resolve("trace.csv"));
-                } catch (IOException e) {
-                    throw new java.io.UncheckedIOException(e);
-                }
-                traceSeconds[0] = (System.nanoTime() - t) / 1e9;
-            });
-            written.add("trace.csv");
-        }
-        long t3 = System.nanoTime();
-        if (scenario.writeCharts() && !noCharts) {
-            for (int k = 1; k <= 3; k++) {
-                if (!moved(model, k)) continue;
-                String name = "finger " + k + ", " + scenario.name();
-                ChartExport.write(PaperCharts.figure7(model.recorder(), k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
-                    dir.resolve("fig7_finger" + k), 900, 1100);
-                ChartExport.write(PaperCharts.figure8(model.recorder(), k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
-                    dir.resolve("fig8_finger" + k), 900, 450);
-                written.add("fig7_finger" + k + ".png/.svg");
-                written.add("fig8_finger" + k + ".png/.svg");
-            }
-        }
-        long t4 = System.nanoTime();
-        if (trace != null) {
+        Map<String, Object> summary;
+        HandModel model;
+        double wall, setup, chartSeconds = 0;
+        List<Path> created = SwingCommand.missingDirectories(dir);   // removed again if the run fails
+        boolean ok = false;
+        // memory stays flat in the number of steps: the trace streams to its file as the run
+        // goes, and memory keeps only the rows the charts draw (Recorder.bounded)
+        try (Recorder rec = scenario.writeTrace() || charts
+            ? Recorder.bounded(scenario.writeTrace() ? dir.resolve("trace.csv") : null, HandModel.totalSteps(scenario) + 1) : null) {
+            long t0 = System.nanoTime();
             try {
-                trace.join();
-            } catch (java.util.concurrent.CompletionException e) {
-                if (e.getCause() instanceof java.io.UncheckedIOException) throw ((java.io.UncheckedIOException) e.getCause()).getCause();
-                throw e;
+                model = Simulation.model(scenario, rec).lazy(!noLazy);
+            } catch (ScenarioException e) {   // the object or a hand model cannot be loaded
+                throw new CliError(CliError.LOAD, e.getMessage());
             }
+            setup = (System.nanoTime() - t0) / 1e9;
+            List<String> warnings = model.startWarnings();
+            for (String w : warnings) err.println("handsim: warning: " + w);
+            long t1 = System.nanoTime();
+            try {
+                model.run(new ProgressBar(err, "handsim run " + scenario.name()));
+            } catch (SimulationException e) {
+                throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
+            }
+            wall = (System.nanoTime() - t1) / 1e9;
+            summary = RunSummary.of(model, wall);
+            summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
+            summary.put("setup_time_s", setup);
+            summary.put("warnings", warnings);
+            if (toleranceM != null) {
+                summary.put("tolerance_m", toleranceM);
+                if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
+            }
+            if (scenario.writeTrace()) written.add("trace.csv");
+            long t3 = System.nanoTime();
+            if (charts) {
+                for (int k = 1; k <= 3; k++) {
+                    if (!rec.moved(k)) continue;
+                    String name = "finger " + k + ", " + scenario.name();
+                    ChartExport.write(PaperCharts.figure7(rec, k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
+                        dir.resolve("fig7_finger" + k), 900, 1100);
+                    ChartExport.write(PaperCharts.figure8(rec, k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
+                        dir.resolve("fig8_finger" + k), 900, 450);
+                    written.add("fig7_finger" + k + ".png/.svg");
+                    written.add("fig8_finger" + k + ".png/.svg");
+                }
+            }
+            chartSeconds = (System.nanoTime() - t3) / 1e9;
+            // the trace writer worked on its own thread during the run and the charts; now it completes and is renamed
+            if (rec != null) rec.finish();
+            ok = true;
+            Map<String, Object> phases = new java.util.LinkedHashMap<>();
+            phases.put("load_s", setup);
+            phases.put("run_s", wall);
+            phases.put("trace_s", rec != null ? rec.writeSeconds() : 0.0);
+            phases.put("charts_s", chartSeconds);
+            summary.put("phase_times", phases);
+        } finally {
+            if (!ok) SwingCommand.removeEmpty(created);   // the trace's temporary file is gone (Recorder.close): leave no empty folder
         }
-        Map<String, Object> phases = new java.util.LinkedHashMap<>();
-        phases.put("load_s", setup);
-        phases.put("run_s", wall);
-        phases.put("trace_s", traceSeconds[0]);
-        phases.put("charts_s", (t4 - t3) / 1e9);
-        summary.put("phase_times", phases);
         AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
         written.add("summary.json");
         if (toleranceLine != null) stdout.println(toleranceLine);
         stdout.println(headline(model, wall));
         stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
         return 0;
-    }
-
-    /**
-     * What the user should know before trusting the run: a finger whose links are already in
-     * the object at t = 0 (a misplaced object) gets contact forces from the first step on, as if
-     * it had closed onto it there.
-     */
-    static List<String> startWarnings(HandModel m) {
-        List<String> w = new ArrayList<>();
-        for (int k = 1; k <= 3; k++) {
-            int n = m.contacts(k).size();
-            if (n > 0) {
-                w.add(String.format(Locale.ROOT, "finger %d starts in contact with the object (%d contact%s at t = 0): its links begin inside it;"
-                    + " check the object's pose", k, n, n == 1 ? "" : "s"));
-            }
-        }
-        return w;
     }
 
     /** {@code --tolerance} as metres; exit 2 naming the value if it is not a length. */
@@ -185,7 +179,7 @@ public final class RunCommand implements Callable<Integer> {
     private Resolution.Choice chooseResolution(Scenario.ObjectPlacement o, double toleranceM, PrintWriter err) {
         Resolution.Choice c;
         try {
-            c = Resolution.choose(o.file(), o.scale(), toleranceM);
+            c = Resolution.choose(o.file(), o.meshScale(), toleranceM);
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
@@ -205,13 +199,6 @@ public final class RunCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
-    }
-
-    private static boolean moved(HandModel m, int k) {
-        var r = m.recorder();
-        double q0 = r.get(k, org.handsim.sim.Recorder.Q, 0);
-        for (int row = 1; row < r.rows(); row++) if (r.get(k, org.handsim.sim.Recorder.Q, row) != q0) return true;
-        return false;
     }
 
     static String headline(HandModel m, double wall) {

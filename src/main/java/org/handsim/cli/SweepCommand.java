@@ -11,6 +11,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.Callable;
+import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
@@ -18,6 +19,8 @@ import org.handsim.sim.Simulation;
 import org.handsim.sim.SimulationException;
 import org.handsim.sim.Sweep;
 import org.handsim.util.AtomicFile;
+import org.handsim.util.Decimal;
+import org.handsim.util.SafeText;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -26,14 +29,21 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim sweep}: many scenarios in parallel in one JVM, one summary table. */
 @Command(name = "sweep", mixinStandardHelpOptions = true,
-    description = {"Runs every run of SWEEP.json in parallel on all cores and writes one table,",
-        "out/<sweep name>/summary.csv (header: " + SweepCommand.HEADER + ").",
-        "A run that fails is a row with status 'failed' and its error; the others go on."})
+    description = {"Runs every run of SWEEP.json in parallel and writes one summary table.",
+        "The table is out/<sweep name>/summary.csv (or --out DIR), one row per run in",
+        "the file's order, written as the runs finish; header:",
+        "  run,scenario,status,sim_time_s,steps,wall_time_s,",
+        "  final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,",
+        "  final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,",
+        "  final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error",
+        "A run that fails is a row with status 'failed' and its error; the others",
+        "go on (exit 1 if any failed)."})
 public final class SweepCommand implements Callable<Integer> {
     static final String HEADER = "run,scenario,status,sim_time_s,steps,wall_time_s,"
         + "final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
         + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,"
-        + "final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error";
+        + "final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error,"
+        + "force_closure,epsilon,volume,hold_min_N";
 
     @Spec CommandSpec spec;
 
@@ -46,6 +56,18 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: the file's, else all cores)")
     Integer threads;
 
+    @Option(names = "--engine", paramLabel = "local|spark", description = "local threads (default) or an Apache Spark job", defaultValue = "local")
+    String engine;
+
+    @Option(names = "--master", paramLabel = "URL", description = "Spark master (default local[*]; spark://HOST:7077 for a cluster)")
+    String master;
+
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of every run's contacts (default: each scenario's)")
+    Double friction;
+
+    @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
+    Integer edges;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
@@ -55,38 +77,53 @@ public final class SweepCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
+        GraspCommand.checkFriction(friction, edges);
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
+        if (!engine.equals("local")) return SweepJob.runOnEngine(this, sweep, n, engine, master);
+        if (master != null) throw CliError.usage("handsim: --master needs --engine spark");
         List<Sweep.Run> runs = sweep.runs();
-        ExecutorService pool = Executors.newFixedThreadPool(n);
+        ExecutorService pool = Executors.newFixedThreadPool(n, r -> {
+            Thread t = new Thread(r, "sweep-worker");
+            t.setDaemon(true);
+            return t;
+        });
         AtomicInteger done = new AtomicInteger();
         long t0 = System.nanoTime();
-        List<Future<String>> rows = new ArrayList<>();
-        for (Sweep.Run run : runs) {
-            rows.add(pool.submit(() -> {
-                String row = runOne(run);
-                int d = done.incrementAndGet();
-                synchronized (err) {
-                    err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), run.label(), (System.nanoTime() - t0) / 1e9));
-                    err.flush();
-                }
-                return row;
-            }));
-        }
-        pool.shutdown();
         Path dir = out != null ? out : Path.of("out", sweep.name());
         int failed = 0;
+        // the table streams: rows are written in the file's order as soon as they and all rows
+        // before them are done; at most 2 × threads runs are submitted ahead, so memory does not
+        // grow with the number of runs
+        int ahead = 2 * n;
+        java.util.ArrayDeque<Future<String>> inFlight = new java.util.ArrayDeque<>();
         try (AtomicFile f = new AtomicFile(dir.resolve("summary.csv"))) {
             Writer w = f.writer();
             w.write(HEADER);
             w.write('\n');
-            for (Future<String> r : rows) {
-                String row = r.get();
+            int next = 0;
+            while (next < runs.size() || !inFlight.isEmpty()) {
+                while (next < runs.size() && inFlight.size() < ahead) {
+                    Sweep.Run run = runs.get(next++);
+                    inFlight.add(pool.submit(() -> {
+                        String row = runOne(run, friction, edges);
+                        int d = done.incrementAndGet();
+                        synchronized (err) {
+                            err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), SafeText.line(run.label()),
+                                (System.nanoTime() - t0) / 1e9));
+                            err.flush();
+                        }
+                        return row;
+                    }));
+                }
+                String row = inFlight.poll().get();
                 if (row.contains(",failed,")) failed++;
                 w.write(row);
                 w.write('\n');
             }
             f.commit();
+        } finally {
+            pool.shutdownNow();
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %d threads in %.2f s; wrote %s",
@@ -94,37 +131,38 @@ public final class SweepCommand implements Callable<Integer> {
         return failed == 0 ? 0 : 1;
     }
 
-    private static String runOne(Sweep.Run run) {
+    static String runOne(Sweep.Run run, Double friction, Integer edges) {
         String label = csvText(run.label());
         String scenarioName = "";
         try {
-            Scenario s = run.scenario().get();
+            Scenario s = GraspCommand.withFriction(run.scenario().get(), friction, edges);
             scenarioName = s.name();
             HandModel m = Simulation.model(s, false);
             long t = System.nanoTime();
             m.run(null);
             double wall = (System.nanoTime() - t) / 1e9;
             StringBuilder sb = new StringBuilder();
-            sb.append(label).append(',').append(csvText(scenarioName)).append(",ok,").append(m.time()).append(',')
-                .append(m.stepIndex()).append(',').append(wall);
+            sb.append(label).append(',').append(csvText(scenarioName)).append(",ok,").append(Decimal.format(m.time())).append(',')
+                .append(m.stepIndex()).append(',').append(Decimal.format(wall));
             for (int k = 1; k <= 3; k++) {
-                sb.append(',').append(m.state(k)).append(',').append(num(m.breakawayTime(k))).append(',')
-                    .append(num(m.breakawayForce(k))).append(',').append(m.maxContactForce(k));
+                sb.append(',').append(m.state(k)).append(',').append(Decimal.orEmpty(m.breakawayTime(k))).append(',')
+                    .append(Decimal.orEmpty(m.breakawayForce(k))).append(',').append(Decimal.format(m.maxContactForce(k)));
             }
-            return sb.append(',').toString();
-        } catch (ScenarioException | SimulationException | IllegalArgumentException e) {
-            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(e.getMessage());
+            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            sb.append(",,").append(g.quality().forceClosure()).append(',').append(Decimal.format(g.quality().epsilon())).append(',')
+                .append(Decimal.format(g.quality().volume())).append(',').append(Decimal.format(g.holdMinN()));
+            return sb.toString();
+        } catch (RuntimeException e) {   // ScenarioException, SimulationException, a bad object file ...: this row fails, the others go on
+            String why = e instanceof ScenarioException || e instanceof SimulationException ? e.getMessage() : e.toString();
+            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(SafeText.line(why)) + ",,,,";
         }
-    }
-
-    private static String num(double v) {
-        return Double.isNaN(v) ? "" : Double.toString(v);
     }
 
     /** Quotes a text field for CSV when it holds a comma, quote or newline. */
     static String csvText(String s) {
         if (s == null) return "";
-        if (s.indexOf(',') < 0 && s.indexOf('"') < 0 && s.indexOf('\n') < 0) return s;
-        return "\"" + s.replace("\"", "\"\"").replace("\n", " ") + "\"";
+        s = SafeText.line(s);   // one physical line per row
+        if (s.indexOf(',') < 0 && s.indexOf('"') < 0) return s;
+        return "\"" + s.replace("\"", "\"\"") + "\"";
     }
 }

@@ -1,5 +1,7 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
+import org.handsim.util.Decimal;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -177,8 +179,9 @@ public final class SwingCommand implements Callable<Integer> {
             if (!ok) removeEmpty(created);
         }
         stdout.println(String.format(Locale.ROOT,
-            "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %.9g J -> %.9g J (relative drift %.3g)",
-            k, integrator, dt, result.steps(), duration, wall, result.initialEnergy(), result.finalEnergy(), result.relativeDrift()));
+            "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %s J -> %s J (relative drift %.3g)",
+            k, integrator, Decimal.format(dt), result.steps(), Decimal.format(duration), wall,
+            Decimal.format(result.initialEnergy()), Decimal.format(result.finalEnergy()), result.relativeDrift()));
         stdout.println("wrote " + out + "/{swing.csv, swing.json}");
         return 0;
     }
@@ -187,7 +190,7 @@ public final class SwingCommand implements Callable<Integer> {
         try {
             return IntegratorKind.named(name).create(n, DOPRI_TOL);
         } catch (IllegalArgumentException e) {
-            throw CliError.usage("handsim: --integrator must be euler, semi-implicit, rk4 or dopri, got '" + name + "'");
+            throw CliError.usage("handsim: --integrator must be euler, semi-implicit, rk4 or dopri, got '" + SafeText.quote(name) + "'");
         }
     }
 
@@ -200,13 +203,13 @@ public final class SwingCommand implements Callable<Integer> {
     }
 
     /** The folders of {@code dir} that do not exist yet, deepest first (to remove again if the run fails). */
-    private static List<Path> missingDirectories(Path dir) {
+    static List<Path> missingDirectories(Path dir) {
         List<Path> missing = new ArrayList<>();
         for (Path p = dir.toAbsolutePath(); p != null && !Files.exists(p); p = p.getParent()) missing.add(p);
         return missing;
     }
 
-    private static void removeEmpty(List<Path> created) {
+    static void removeEmpty(List<Path> created) {
         for (Path p : created) {
             try {
                 Files.deleteIfExists(p);

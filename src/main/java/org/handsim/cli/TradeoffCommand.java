@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.util.SafeText;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -24,8 +25,9 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code handsim tradeoff}: the speed-against-accuracy charts of issue 8. */
 @Command(name = "tradeoff", mixinStandardHelpOptions = true,
     description = {
-        "Runs the speed-against-accuracy studies. Per study it writes <id>.png,",
-        "<id>.svg and <id>.csv (header: series,setting,default,<study columns>)",
+        "Runs the speed-against-accuracy studies and charts them.",
+        "Per study it writes <id>.png, <id>.svg and <id>.csv",
+        "(header: series,setting,default,<study columns>)",
         "into --out DIR (default out/tradeoff), and tradeoff.json (per study:",
         "rows, wall_time_s, files). Each chart plots cost against error on log",
         "axes, one point per setting, the Pareto front dashed, the default marked.",
@@ -89,7 +91,7 @@ public final class TradeoffCommand implements Callable<Integer> {
             if (hit == null) {
                 List<String> ids = new ArrayList<>();
                 for (Study s : all) ids.add(s.id());
-                throw CliError.usage("handsim: --only: no study '" + want + "' (known: " + String.join(", ", ids) + ")");
+                throw CliError.usage("handsim: --only: no study '" + SafeText.quote(want) + "' (known: " + String.join(", ", ids) + ")");
             }
             if (!chosen.contains(hit)) chosen.add(hit);
         }

@@ -16,6 +16,25 @@ package org.handsim.contact;
  * weighed by joint torques: it is reported as <em>undetermined</em> with f = 0, never divided
  * by ~0.
  *
+ * <p><b>With Coulomb friction</b> ({@link #solveWithFriction}, DESIGN.md "Contact forces with
+ * friction") a contact force f_i is any vector in contact i's linearised friction cone K_i (its
+ * edges given by the caller, {@code org.handsim.grasp.FrictionCone}), and joint m feels
+ * τ_m = Σ_i t_mi · f_i with t_mi = z_{m−1} × (p_i − o_{m−1}) (eq 9 with the force's full
+ * direction). Eq (11) then has many solutions; HandSim reports the <em>least-norm</em> one,
+ * <pre>  minimise Σ |f_i|²  subject to  Σ_i t_mi · f_i = τ_m,  f_i ∈ K_i,</pre>
+ * (if no forces in the cones carry τ exactly: the least-norm forces of the least-squares
+ * torque). By duality its solution is f_i = Π_{K_i}(Σ_m y_m t_mi), the projection onto the cone
+ * ({@link ConeProjection}) of the displacement a small joint rotation y imposes at the contact:
+ * the forces of equal isotropic contact springs the held links press into the object where they
+ * stick, turned onto the cone's boundary (sliding, Coulomb's maximal dissipation) where that
+ * displacement leaves the cone. For a single contact that is f along t (the direction the
+ * link moves) when t lies in the cone, else on the cone edge nearest t. The 1–3 multipliers y
+ * are found by Newton's method on the dual (a smooth concave function, piecewise quadratic),
+ * regularised by {@link #RHO} times the largest |t|² so that torques no cone can carry give the
+ * least-squares answer instead of diverging, then polished on the final pieces to satisfy the
+ * torques exactly. μ = 0 is the frictionless {@link #solve} (the cones are rays), which callers
+ * use then: its forces are today's.
+ *
  * <p>Frames: points, directions and the 48-value frame array ({k0}..{k3}, 12 row-major values
  * each, as {@code FingerKinematics.frames}) must all be in one frame (palm or world).
  *
@@ -32,6 +51,13 @@ public final class ContactForces {
      */
     public static final double MIN_ARM_M = 5e-4;
     private static final int MAX_ITER = 100;
+    /**
+     * Regularisation of the friction solve, relative to the largest |t_mi|² (m²): the torque
+     * residual it leaves before the polish is about 1e-10 of the torque; its role is to keep
+     * Newton's steps finite when some torque is beyond what the cones can carry.
+     */
+    public static final double RHO = 1e-10;
+    private static final int NEWTON_ITER = 60;
 
     private double[] arms = new double[0];      // 3 per contact: a_1i, a_2i, a_3i
     private double[] mag = new double[0];
@@ -44,6 +70,19 @@ public final class ContactForces {
     private final double[] res = new double[3];   // τ − A f per joint, in nnls
     private int count;
     private double residual;
+    // with friction: torque directions t_mi (9 per contact), force vectors, cone pieces, facet normals
+    private boolean friction;
+    private int edgesPerCone;
+    private double[] tvec = new double[0], fvec = new double[0], dirCopy = new double[0], facetNormals = new double[0];
+    private double[] fTrial = new double[0];
+    private int[] piece = new int[0], pieceTrial = new int[0];
+    private final int[] joint = new int[3];          // active dual rows: joint indices
+    private final double[] y = new double[3], yTrial = new double[3], g = new double[3], step = new double[3];
+    private final double[] hess = new double[9], tauActive = new double[3], pa = new double[3];
+    private double rho;
+    private int activeCount;                         // d of the last friction solve
+    private int lastN = -1, lastM, lastD;            // what the pieces in piece[] belong to (warm start)
+    private final int[] lastJoint = new int[3];
 
     /**
      * Solves for the contact magnitudes.
@@ -61,6 +100,8 @@ public final class ContactForces {
     public void solve(double[] frames, int firstJoint, double[] tau, int n, double[] points, double[] dirs, int[] links) {
         ensure(n);
         count = n;
+        friction = false;
+        System.arraycopy(dirs, 0, dirCopy, 0, 3 * n);
         for (int i = 0; i < n; i++) {
             double norm2 = 0;
             for (int m = 0; m < 3; m++) {
@@ -80,6 +121,239 @@ public final class ContactForces {
             residual += r * r;
         }
         residual = Math.sqrt(residual);
+    }
+
+    /**
+     * Contact forces with Coulomb friction: the least-norm forces inside the contacts' linearised
+     * friction cones that carry the joint torques (class comment). Same arguments as
+     * {@link #solve}, plus the cones.
+     *
+     * @param cones 3·m·n values: contact i's m cone edges at {@code cones[3m·i ..]}, each with
+     *              a normal component of 1 along {@code dirs[i]} (as
+     *              {@code org.handsim.grasp.FrictionCone#edges} writes them), going round the
+     *              normal in order
+     * @param m     edges per cone (≥ 1)
+     */
+    public void solveWithFriction(double[] frames, int firstJoint, double[] tau, int n, double[] points, double[] dirs, int[] links,
+                                  double[] cones, int m) {
+        if (m < 1) throw new IllegalArgumentException("cone edges must be >= 1, got " + m);
+        ensure(n);
+        ensureCones(n, m);
+        count = n;
+        friction = true;
+        edgesPerCone = m;
+        System.arraycopy(dirs, 0, dirCopy, 0, 3 * n);
+        for (int i = 0; i < n; i++) {
+            double px = points[3 * i], py = points[3 * i + 1], pz = points[3 * i + 2];
+            for (int jm = 0; jm < 3; jm++) {
+                int o = 9 * i + 3 * jm;
+                boolean loads = jm >= firstJoint && jm < links[i];
+                if (loads) {
+                    int f = 12 * jm;
+                    double zx = frames[f + 2], zy = frames[f + 6], zz = frames[f + 10];
+                    double rx = px - frames[f + 3], ry = py - frames[f + 7], rz = pz - frames[f + 11];
+                    tvec[o] = zy * rz - zz * ry; tvec[o + 1] = zz * rx - zx * rz; tvec[o + 2] = zx * ry - zy * rx;
+                } else {
+                    tvec[o] = 0; tvec[o + 1] = 0; tvec[o + 2] = 0;
+                }
+                arms[3 * i + jm] = loads ? arm(frames, jm, points, dirs, i) : 0;
+            }
+            // undetermined: no edge of the cone has a moment arm (torque per newton of normal force)
+            double bestArm2 = 0;
+            for (int e = 0; e < m; e++) {
+                int c = 3 * m * i + 3 * e;
+                double a2 = 0;
+                for (int jm = firstJoint; jm < 3; jm++) {
+                    int o = 9 * i + 3 * jm;
+                    double a = tvec[o] * cones[c] + tvec[o + 1] * cones[c + 1] + tvec[o + 2] * cones[c + 2];
+                    a2 += a * a;
+                }
+                bestArm2 = Math.max(bestArm2, a2);
+            }
+            undetermined[i] = Math.sqrt(bestArm2) < MIN_ARM_M;
+            ConeProjection.facetNormals(cones, 3 * m * i, m, facetNormals, 3 * m * i);
+            mag[i] = 0;
+            fvec[3 * i] = 0; fvec[3 * i + 1] = 0; fvec[3 * i + 2] = 0;
+        }
+        newtonOnTheDual(firstJoint, tau, n, cones, m);
+        residual = 0;
+        for (int jm = firstJoint; jm < 3; jm++) {
+            double r = -tau[jm];
+            for (int i = 0; i < n; i++) r += jointTorque(i, jm);
+            residual += r * r;
+        }
+        residual = Math.sqrt(residual);
+    }
+
+    /**
+     * Newton's method on the regularised dual of the least-norm problem (class comment):
+     * minimise φ(y) = ½ Σ_i |Π_i(T_i y)|² + ½ ρ |y|² − τᵀy over the multipliers y of the joints
+     * that some determined contact loads (T_i: the 3×d matrix of contact i's t_mi); then the
+     * polish: on the pieces found, solve Σ T_iᵀ DΠ_i T_i y = τ without ρ and keep it if the
+     * pieces stay the same (the torques are then carried exactly).
+     */
+    private void newtonOnTheDual(int r0, double[] tau, int n, double[] cones, int m) {
+        int d = 0;
+        double s = 0;
+        for (int jm = r0; jm < 3; jm++) {
+            boolean used = false;
+            for (int i = 0; i < n; i++) {
+                if (undetermined[i]) continue;
+                int o = 9 * i + 3 * jm;
+                double t2 = tvec[o] * tvec[o] + tvec[o + 1] * tvec[o + 1] + tvec[o + 2] * tvec[o + 2];
+                if (t2 > 0) { used = true; s = Math.max(s, t2); }
+            }
+            if (used) { tauActive[d] = tau[jm]; joint[d++] = jm; }
+        }
+        activeCount = d;
+        if (d == 0) {
+            for (int i = 0; i < n; i++) { mag[i] = 0; piece[i] = ConeProjection.APEX; }
+            lastN = -1;
+            return;
+        }
+        rho = RHO * s;
+        // warm start: the pieces of the last solve (a held grasp keeps them while its torques
+        // grow). Any y with Σ T_iᵀ Π_i(T_i y) = τ is optimal (the KKT conditions of a convex
+        // problem), so if the exact solve on those pieces lands on the same pieces, it is the answer.
+        if (lastN == n && lastM == m && lastD == d && sameJoints(d) && exactOnPieces(n, m, d, cones)) {
+            finish(n);
+            return;
+        }
+        // start: every contact inside its cone, y = (Σ TᵀT + ρI)⁻¹ τ
+        for (int i = 0; i < n; i++) piece[i] = 2 * m;
+        hessian(n, m, d, cones, piece, true);
+        for (int a = 0; a < d; a++) y[a] = tauActive[a];
+        if (!org.handsim.math.Cholesky.decompose(hess, d)) java.util.Arrays.fill(y, 0, d, 0);
+        else org.handsim.math.Cholesky.solve(hess, d, y);
+        double phi = evaluate(y, n, m, d, cones, fvec, piece, g);
+        double tauMax = 0;
+        for (int a = 0; a < d; a++) tauMax = Math.max(tauMax, Math.abs(tauActive[a]));
+        for (int it = 0; it < NEWTON_ITER; it++) {
+            double gMax = 0, yMax = 0;
+            for (int a = 0; a < d; a++) { gMax = Math.max(gMax, Math.abs(g[a])); yMax = Math.max(yMax, Math.abs(y[a])); }
+            if (gMax <= 1e-13 * (tauMax + s * yMax) + Double.MIN_NORMAL) break;     // stationary to rounding
+            hessian(n, m, d, cones, piece, true);
+            if (!org.handsim.math.Cholesky.decompose(hess, d)) break;
+            for (int a = 0; a < d; a++) step[a] = -g[a];
+            org.handsim.math.Cholesky.solve(hess, d, step);
+            double slope = 0;
+            for (int a = 0; a < d; a++) slope += g[a] * step[a];
+            if (!(slope < 0)) break;                       // at the minimum to rounding
+            double t = 1, phiTrial = 0;
+            boolean accepted = false;
+            for (int ls = 0; ls < 50; ls++) {
+                for (int a = 0; a < d; a++) yTrial[a] = y[a] + t * step[a];
+                phiTrial = evaluate(yTrial, n, m, d, cones, fTrial, pieceTrial, res);
+                if (phiTrial <= phi + 1e-4 * t * slope) { accepted = true; break; }
+                t *= 0.5;
+            }
+            if (!accepted) break;
+            boolean samePieces = t == 1;
+            for (int i = 0; i < n && samePieces; i++) samePieces = pieceTrial[i] == piece[i];
+            System.arraycopy(yTrial, 0, y, 0, d);
+            System.arraycopy(fTrial, 0, fvec, 0, 3 * n);
+            System.arraycopy(pieceTrial, 0, piece, 0, n);
+            System.arraycopy(res, 0, g, 0, d);
+            phi = phiTrial;
+            if (samePieces) break;                        // a full step inside one quadratic piece: its minimum
+        }
+        // polish: the exact torques on the final pieces, if the system is regular there
+        exactOnPieces(n, m, d, cones);
+        finish(n);
+    }
+
+    /**
+     * Solves Σ T_iᵀ DΠ_i T_i y = τ on the current pieces (no regularisation); if the system is
+     * regular and the projections at that y stay on the same pieces, takes y and its forces.
+     */
+    private boolean exactOnPieces(int n, int m, int d, double[] cones) {
+        hessian(n, m, d, cones, piece, false);
+        if (!org.handsim.math.Cholesky.decompose(hess, d)) return false;
+        for (int a = 0; a < d; a++) yTrial[a] = tauActive[a];
+        org.handsim.math.Cholesky.solve(hess, d, yTrial);
+        evaluate(yTrial, n, m, d, cones, fTrial, pieceTrial, res);
+        for (int i = 0; i < n; i++) if (pieceTrial[i] != piece[i]) return false;
+        System.arraycopy(yTrial, 0, y, 0, d);
+        System.arraycopy(fTrial, 0, fvec, 0, 3 * n);
+        return true;
+    }
+
+    private boolean sameJoints(int d) {
+        for (int a = 0; a < d; a++) if (lastJoint[a] != joint[a]) return false;
+        return true;
+    }
+
+    /** Magnitudes, and what the next solve may warm-start from. */
+    private void finish(int n) {
+        for (int i = 0; i < n; i++) {
+            mag[i] = Math.sqrt(fvec[3 * i] * fvec[3 * i] + fvec[3 * i + 1] * fvec[3 * i + 1] + fvec[3 * i + 2] * fvec[3 * i + 2]);
+        }
+        lastN = n;
+        lastM = edgesPerCone;
+        int d = 0;
+        while (d < 3 && d < lastJoint.length) { lastJoint[d] = joint[d]; d++; }
+        lastD = activeCount;
+    }
+
+    /**
+     * φ(y) of {@link #newtonOnTheDual}; writes the forces Π_i(T_i y), their pieces and the
+     * gradient Σ T_iᵀ f_i + ρ y − τ.
+     */
+    private double evaluate(double[] yy, int n, int m, int d, double[] cones, double[] f, int[] pieces, double[] grad) {
+        double phi = 0;
+        for (int a = 0; a < d; a++) grad[a] = rho * yy[a] - tauActive[a];
+        for (int i = 0; i < n; i++) {
+            if (undetermined[i]) {
+                f[3 * i] = 0; f[3 * i + 1] = 0; f[3 * i + 2] = 0;
+                pieces[i] = ConeProjection.APEX;
+                continue;
+            }
+            double vx = 0, vy = 0, vz = 0;
+            for (int a = 0; a < d; a++) {
+                int o = 9 * i + 3 * joint[a];
+                vx += yy[a] * tvec[o]; vy += yy[a] * tvec[o + 1]; vz += yy[a] * tvec[o + 2];
+            }
+            pieces[i] = ConeProjection.project(cones, 3 * m * i, facetNormals, 3 * m * i, m, vx, vy, vz, f, 3 * i);
+            double fx = f[3 * i], fy = f[3 * i + 1], fz = f[3 * i + 2];
+            phi += 0.5 * (fx * fx + fy * fy + fz * fz);
+            for (int a = 0; a < d; a++) {
+                int o = 9 * i + 3 * joint[a];
+                grad[a] += tvec[o] * fx + tvec[o + 1] * fy + tvec[o + 2] * fz;
+            }
+        }
+        for (int a = 0; a < d; a++) phi += yy[a] * (0.5 * rho * yy[a] - tauActive[a]);
+        return phi;
+    }
+
+    /** H = Σ_i T_iᵀ DΠ_i T_i (+ ρ I when {@code regularised}) into {@code hess} (d×d). */
+    private void hessian(int n, int m, int d, double[] cones, int[] pieces, boolean regularised) {
+        for (int a = 0; a < d * d; a++) hess[a] = 0;
+        for (int i = 0; i < n; i++) {
+            if (undetermined[i] || pieces[i] == ConeProjection.APEX) continue;
+            for (int c = 0; c < d; c++) {
+                int oc = 9 * i + 3 * joint[c];
+                ConeProjection.derivative(pieces[i], cones, 3 * m * i, facetNormals, 3 * m * i, m,
+                    tvec[oc], tvec[oc + 1], tvec[oc + 2], pa, 0);
+                for (int r = 0; r < d; r++) {
+                    int or = 9 * i + 3 * joint[r];
+                    hess[r * d + c] += tvec[or] * pa[0] + tvec[or + 1] * pa[1] + tvec[or + 2] * pa[2];
+                }
+            }
+        }
+        if (regularised) for (int a = 0; a < d; a++) hess[a * d + a] += rho;
+    }
+
+    private void ensureCones(int n, int m) {
+        if (tvec.length < 9 * n) {
+            int c = Math.max(n, 2 * tvec.length / 9);
+            tvec = new double[9 * c];
+            fvec = new double[3 * c];
+            fTrial = new double[3 * c];
+            piece = new int[c];
+            lastN = -1;
+            pieceTrial = new int[c];
+        }
+        if (facetNormals.length < 3 * m * n) facetNormals = new double[Math.max(3 * m * n, 2 * facetNormals.length)];
     }
 
     /** a = (z_m × (p − o_m)) · d for the joint turning about frame m's z axis. */
@@ -211,19 +485,42 @@ public final class ContactForces {
             bScratch = new double[c];
             yScratch = new double[c];
             deadScratch = new boolean[c];
+            dirCopy = new double[3 * c];
         }
     }
 
     /** @return the number of contacts of the last solve */
     public int count() { return count; }
 
-    /** @return magnitude f_i ≥ 0 of contact i (newtons) */
+    /** @return magnitude |f_i| ≥ 0 of contact i's force (newtons) */
     public double force(int i) { return mag[i]; }
+
+    /**
+     * Contact i's force on the object (newtons, the frame of the inputs) into
+     * {@code out[off .. off+2]}: f_i·d_i without friction, the cone solve's vector with it.
+     */
+    public void forceVector(int i, double[] out, int off) {
+        if (friction) {
+            out[off] = fvec[3 * i]; out[off + 1] = fvec[3 * i + 1]; out[off + 2] = fvec[3 * i + 2];
+        } else {
+            out[off] = mag[i] * dirCopy[3 * i]; out[off + 1] = mag[i] * dirCopy[3 * i + 1]; out[off + 2] = mag[i] * dirCopy[3 * i + 2];
+        }
+    }
+
+    /**
+     * Eq (9): the torque contact i's force puts on joint m (0-based), N·m: a_mi·f_i without
+     * friction (the same product as before friction existed), t_mi·f_i with it.
+     */
+    public double jointTorque(int i, int m) {
+        if (!friction) return arms[3 * i + m] * mag[i];
+        int o = 9 * i + 3 * m;
+        return tvec[o] * fvec[3 * i] + tvec[o + 1] * fvec[3 * i + 1] + tvec[o + 2] * fvec[3 * i + 2];
+    }
 
     /** @return true if contact i's moment arms are all ~0 (its force is not determined) */
     public boolean undetermined(int i) { return undetermined[i]; }
 
-    /** @return moment arm a_mi of contact i about joint m (0-based), metres */
+    /** @return moment arm a_mi of contact i about joint m (0-based) along its normal d_i, metres */
     public double arm(int i, int m) { return arms[3 * i + m]; }
 
     /** @return |A f − τ| of the last solve (N·m): nonzero when the contacts cannot carry τ */

@@ -9,7 +9,9 @@
  *       weighted normal of the object's triangles, area estimate, triangles touched; DESIGN.md
  *       decision 3);</li>
  *   <li>{@link org.handsim.contact.ContactForces}: contact force magnitudes from joint torques
- *       (eq 11 made well-posed, DESIGN.md decision 2) and eq (9).</li>
+ *       (eq 11 made well-posed, DESIGN.md decision 2) and eq (9); with Coulomb friction the
+ *       least-norm force vectors in the contacts' linearised cones (decision 5), using
+ *       {@link org.handsim.contact.ConeProjection}, the projection onto such a cone.</li>
  * </ul>
  *
  * <p>Typical use after a collision query {@code q.collide(treeA, treeB, pose, result)}:

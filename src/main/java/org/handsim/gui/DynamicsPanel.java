@@ -15,6 +15,7 @@ import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.table.AbstractTableModel;
+import org.handsim.sim.ClutchState;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.Snapshot;
 
@@ -23,7 +24,10 @@ import org.handsim.sim.Snapshot;
  * eq 8, plus the clutch's transmitted torque) and watch, live, per finger: the clutch state
  * (FREE / BLOCKED / BROKEN / STALLED, DESIGN.md decision 1), the joint torques τk1..τk3, the
  * number of contacts, the total contact force, and the breakaway time once τk2 passed
- * τ_break (eq 9). State changes and breakaways are listed below the table with their times.
+ * τ_break (eq 9). Below the table, the events of the run shown: one line per change of a
+ * finger's clutch state, in time order, each with its time as {@code t = 1.8000 s} (the
+ * breakaway at the time located inside its step, the others at the end of the step they were
+ * seen in); a new run (loaded or reset) starts a new list.
  * Gravity is a world-frame vector (m/s²), chosen from a list of directions or typed in;
  * applying it rebuilds the model (the simulation restarts at t = 0).
  *
@@ -44,8 +48,9 @@ public final class DynamicsPanel {
     private final JTextArea events = new JTextArea(8, 28);
     private final JComboBox<String> gravity = new JComboBox<>(GRAVITY);
     private final JTextField gx, gy, gz;
-    private final double[] lastBreak = {Double.NaN, Double.NaN, Double.NaN};
     private long lastGeneration = -1;
+    private String header = "";
+    private final List<SimulationRunner.Event> shown = new ArrayList<>();
 
     DynamicsPanel(HandSimWindow window) {
         this.window = window;
@@ -92,6 +97,8 @@ public final class DynamicsPanel {
 
         events.setName("dyn.events");
         events.setEditable(false);
+        events.setLineWrap(true);
+        events.setWrapStyleWord(true);
         events.setFont(Widgets.small());
         JPanel ep = Widgets.titled(new JPanel(new BorderLayout()), "Events");
         ep.add(new JScrollPane(events), BorderLayout.CENTER);
@@ -135,24 +142,39 @@ public final class DynamicsPanel {
         if (s.snapshot() == null) return;
         if (s.generation() != lastGeneration) {
             lastGeneration = s.generation();
-            java.util.Arrays.fill(lastBreak, Double.NaN);
-            events.append(String.format(Locale.ROOT, "model (re)started: %s%s%n", s.scenario().name(),
-                s.scenario().object() != null ? " with " + s.scenario().object().file().getFileName() : ""));
-        }
-        for (int k = 1; k <= 3; k++) {
-            double b = s.breakaway()[k - 1];
-            if (!Double.isNaN(b) && Double.isNaN(lastBreak[k - 1])) {
-                events.append(String.format(Locale.ROOT, "t = %.4f s: finger %d BREAKAWAY (τ%d2 reached τ_break)%n", b, k, k));
-            }
-            lastBreak[k - 1] = b;
+            shown.clear();
+            Scenario sc = s.scenario();
+            header = String.format(Locale.ROOT, "%s %s%s, %s s:%n", s.origin() == SimulationRunner.Origin.RESET ? "Reset:" : "Run of",
+                sc.name(), sc.object() != null ? " with " + sc.object().file().getFileName() : "", Widgets.fmt(sc.duration(), 3));
+            for (String w : s.warnings()) header += "warning: " + w + System.lineSeparator();
+            render();
         }
         table.set(s);
     }
 
-    /** Lists a clutch state change (called by the window's view update, in order). */
+    /** Lists a clutch state change (called by the window's view update) in time order. */
     void event(SimulationRunner.Event e) {
         if (e.generation() != lastGeneration) return;   // from a model no longer shown
-        events.append(String.format(Locale.ROOT, "t = %.3f s: finger %d %s → %s%n", e.time(), e.finger(), e.from(), e.to()));
+        int at = shown.size();
+        while (at > 0 && shown.get(at - 1).time() > e.time()) at--;
+        shown.add(at, e);
+        render();
+    }
+
+    private void render() {
+        StringBuilder sb = new StringBuilder(header);
+        for (SimulationRunner.Event e : shown) sb.append(line(e)).append(System.lineSeparator());
+        events.setText(sb.toString());
+    }
+
+    /** One event as listed: {@code t = 1.8000 s  finger 3: BLOCKED → BROKEN, breakaway (τ32 reached τ_break)}. */
+    static String line(SimulationRunner.Event e) {
+        String why = "";
+        if (e.from() == ClutchState.FREE && e.to() == ClutchState.BLOCKED) why = ", the inner link touches the object";
+        else if (e.from() == ClutchState.BLOCKED && e.to() == ClutchState.BROKEN) why = ", BREAKAWAY (τ" + e.finger() + "2 reached τ_break)";
+        else if (e.to() == ClutchState.STALLED) why = ", the outer link is blocked";
+        else if (e.to() == ClutchState.FREE) why = ", the clutch re-engaged";
+        return String.format(Locale.ROOT, "t = %.4f s  finger %d: %s → %s%s", e.time(), e.finger(), e.from(), e.to(), why);
     }
 
     /** The table as text, one line per finger (the script's {@code log dynamics}). */

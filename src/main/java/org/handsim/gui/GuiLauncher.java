@@ -20,6 +20,8 @@ import org.handsim.sim.Scenario;
  *
  * <p>Both modes print {@code gui: first frame after N ms} — the time from the JVM's start
  * (i.e. from typing {@code handsim gui}, launcher excluded) to the first frame Java3D swapped.
+ * Leaving goes through {@link X11Exit}: no native abort when the X server goes away, no X11Util
+ * lines at the JVM's exit.
  */
 public final class GuiLauncher {
     private GuiLauncher() {}
@@ -48,7 +50,7 @@ public final class GuiLauncher {
         ErrorLog errors = new ErrorLog().install();
         AtomicReference<HandSimWindow> ref = new AtomicReference<>();
         try {
-            MeshSource.Model[] hand = HandSimWindow.loadHand();   // off the EDT (MeshSource)
+            MeshSource.Model[] hand = HandSimPanel.loadHand();   // off the EDT (MeshSource)
             ScriptRunner.edt(() -> {
                 HandSimWindow w = new HandSimWindow(o.scenario(), hand, !o.scripted());
                 if (o.speed() != null) w.setSpeed(o.speed());
@@ -65,6 +67,8 @@ public final class GuiLauncher {
         HandSimWindow w = ref.get();
         long deadline = System.currentTimeMillis() + FIRST_FRAME_TIMEOUT_MS;
         while (w.view().framesRendered() == 0 && System.currentTimeMillis() < deadline) Thread.sleep(5);
+        // JOGL is initialised now: a lost X server should end the program, not abort the JVM
+        X11Exit.restoreIoErrorHandler();
         if (w.view().framesRendered() == 0) {
             err.println("handsim gui: no frame was rendered within " + FIRST_FRAME_TIMEOUT_MS / 1000 + " s (OpenGL not working?)");
             if (o.scripted()) {
@@ -86,6 +90,7 @@ public final class GuiLauncher {
                 }
             }
             w.awaitClosed();
+            X11Exit.closeDisplays();
             return 0;
         }
         int code = 0;
@@ -116,6 +121,7 @@ public final class GuiLauncher {
         out.println("gui: " + (code == 0 ? "done" : "failed (exit code " + code + ")") + ", " + uncaught.size() + " uncaught exceptions");
         out.flush();
         dispose(w);
+        X11Exit.closeDisplays();
         return code;
     }
 

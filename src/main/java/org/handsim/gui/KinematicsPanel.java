@@ -17,7 +17,9 @@ import org.handsim.kinematics.IkResult;
 import org.handsim.kinematics.InverseKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
+import org.handsim.sim.ContactSet;
 import org.handsim.sim.Scenario;
+import org.handsim.sim.SceneGeometry;
 import org.handsim.sim.trajectory.Hold;
 
 /**
@@ -32,7 +34,8 @@ import org.handsim.sim.trajectory.Hold;
  * field) recomputes the others, so a joint angle typed in is rounded to what the one motor can
  * do. The view shows the pose at once ({@link HandSimWindow#preview}, which pauses the
  * simulation); <i>Use as start pose</i> makes every motor hold these counts in the working
- * scenario. While the simulation plays, the sliders follow the motors.
+ * scenario. While the simulation plays, the sliders follow the motors (and show where they
+ * ended when the run is over).
  *
  * <h2>Inverse: fingertip target → joints</h2>
  * A target in the palm frame {P} (metres) is solved in closed form with the joint limits
@@ -48,6 +51,9 @@ import org.handsim.sim.trajectory.Hold;
  * {@code fk.spread.slider}, buttons {@code fk.apply}; {@code ik.finger}, {@code ik.x},
  * {@code ik.y}, {@code ik.z}, buttons {@code ik.solve}, {@code ik.apply}. Event dispatch thread
  * only.
+ *
+ * <p>Every pose shown (forward or inverse) is collided with the object as the simulation would
+ * collide it: its contacts are drawn and a pose that touches the object is warned about.
  */
 public final class KinematicsPanel {
     private final HandSimWindow window;
@@ -64,6 +70,9 @@ public final class KinematicsPanel {
     private final JTextField ikX, ikY, ikZ;
     private final JTextArea ikResult = new JTextArea(6, 28);
     private CoupledReach.Result lastReach;
+    private SceneGeometry geometry;
+    private Scenario.ObjectPlacement geometryFor;
+    private int lastPreviewContacts;
     private int lastReachFinger;
 
     KinematicsPanel(HandSimWindow window) {
@@ -228,10 +237,70 @@ public final class KinematicsPanel {
     }
 
     private void showPose() {
-        window.preview(Pose.ofJoints(joints(), window.scenario().worldFromPalm()));
-        window.status(String.format(Locale.ROOT, "forward kinematics: M1 %.0f, M2 %.0f, M3 %.0f, M4 %.0f counts (simulation paused)",
-            q[0], q[1], q[2], q[3]), false);
+        String fk = String.format(Locale.ROOT, "forward kinematics: M1 %.0f, M2 %.0f, M3 %.0f, M4 %.0f counts (simulation paused)",
+            q[0], q[1], q[2], q[3]);
+        String touch = preview(Pose.ofJoints(joints(), window.scenario().worldFromPalm()));
+        if (touch == null) window.status(fk, false);
+        else window.warning(fk + " — " + touch);
     }
+
+    /**
+     * Shows a pose with the contacts it would have: the links are collided with the object by
+     * the simulator's own collision ({@link SceneGeometry}, as {@code HandModel} does at every
+     * step) and the contacts drawn. Returns the warning for the status bar when the pose touches
+     * the object, else null.
+     */
+    private String preview(Pose p) {
+        SceneGeometry g = geometry();
+        int[] perFinger = new int[3];
+        if (g != null) {
+            ContactSet all = new ContactSet(), one = new ContactSet();
+            double[] link = new double[12];
+            for (int k = 1; k <= 3; k++) {
+                for (int j = 1; j <= 3; j++) {
+                    System.arraycopy(p.framesWorld()[k - 1], 12 * j, link, 0, 12);
+                    one.clear();
+                    perFinger[k - 1] += g.collide(k, j, link, one);
+                    all.append(one);
+                }
+            }
+            p = p.withContacts(all);
+        }
+        window.preview(p);
+        StringBuilder touching = new StringBuilder();
+        for (int k = 1; k <= 3; k++) {
+            if (perFinger[k - 1] > 0) {
+                touching.append(touching.length() == 0 ? "" : "; ").append(String.format(Locale.ROOT, "finger %d touches the object (%d contact%s)",
+                    k, perFinger[k - 1], perFinger[k - 1] == 1 ? "" : "s"));
+            }
+        }
+        lastPreviewContacts = perFinger[0] + perFinger[1] + perFinger[2];
+        return touching.length() == 0 ? null : "this pose: " + touching + ": a run started from it would begin in contact";
+    }
+
+    /** The collision of the working scenario's object, built when first needed (null: no object, or it does not load). */
+    private SceneGeometry geometry() {
+        Scenario.ObjectPlacement o = window.scenario().object();
+        if (o == null) return null;
+        if (geometry == null || geometryFor != o) {
+            geometryFor = o;
+            try {
+                geometry = new SceneGeometry(o, SceneGeometry.DEFAULT_K);
+            } catch (RuntimeException e) {
+                geometry = null;
+            }
+        }
+        return geometry;
+    }
+
+    /** The working scenario's object changed: the next preview collides with the new one. */
+    void previewChanged() {
+        geometry = null;
+        geometryFor = null;
+    }
+
+    /** Contacts in the last preview (for scripts and tests). */
+    public int previewContacts() { return lastPreviewContacts; }
 
     private void useAsStartPose() {
         Scenario s = window.scenario();
@@ -242,7 +311,7 @@ public final class KinematicsPanel {
 
     /** Follows the motors while the simulation plays (called by the window's view update). */
     void follow(SimulationRunner.State s) {
-        if (s.snapshot() == null || !s.playing()) return;
+        if (s.snapshot() == null || !(s.playing() || s.finished()) || window.simulator().previewing()) return;
         for (int k = 0; k < 3; k++) q[k] = s.snapshot().fingers()[k].motorCounts();
         q[3] = s.snapshot().spreadCounts();
         showValues();
@@ -279,14 +348,16 @@ public final class KinematicsPanel {
         sb.append(String.format(Locale.ROOT, "%nCoupled finger (one motor): M%d = %d, M4 = %d counts put the fingertip %.1f mm from the target.",
             k, lastReach.qMk(), lastReach.qM4(), 1000 * lastReach.errorM()));
         ikResult.setText(sb.toString());
-        window.status(r.reachable() ? "inverse kinematics: target reachable" : "inverse kinematics: target UNREACHABLE (closest point shown in cyan)", !r.reachable());
+        String ik = r.reachable() ? "inverse kinematics: target reachable" : "inverse kinematics: target UNREACHABLE (closest point shown in cyan)";
         // show the exact IK joints on finger k, the forward pose on the others, and the markers
         double[][] joints = joints();
         joints[k - 1] = j;
         if (k == 3) joints[2][0] = 0;
         double[] targetWorld = wp.apply(target);
         double[] closestWorld = r.reachable() ? null : wp.apply(r.fingertip());
-        window.preview(Pose.ofJoints(joints, wp).withMarkers(targetWorld, closestWorld));
+        String touch = preview(Pose.ofJoints(joints, wp).withMarkers(targetWorld, closestWorld));
+        if (touch == null || !r.reachable()) window.status(touch == null ? ik : ik + " — " + touch, !r.reachable());
+        else window.warning(ik + " — " + touch);
     }
 
     private void applyReach() {

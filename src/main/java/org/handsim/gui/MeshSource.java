@@ -11,13 +11,14 @@ import org.handsim.sim.SceneGeometry;
 
 /**
  * Where the view gets its triangle meshes: {@link SceneGeometry#mesh}, the meshes the model
- * collides (VRML file ⇒ VrmlLoader ⇒ BranchGroup ⇒ tessellation walk ⇒ TriangleMesh, DESIGN.md),
+ * collides (VRML, OBJ or STL file ⇒ {@code sim.MeshFiles} ⇒ TriangleMesh, DESIGN.md),
  * from the same cache — so the view shows exactly the triangles of the simulation, and a file
  * imported in the window is read once for both. The one place to change if the view should
  * show something else (e.g. the loader's BranchGroup with its own appearances).
  *
- * <p>Colour, for display only: the first {@code diffuseColor} written in the file (plain text
- * files; none for gzip), else the caller's default.
+ * <p>Colour, for display only: the first {@code diffuseColor} written in a VRML file (plain text
+ * files; none for gzip), the first {@code Kd} of an OBJ file's material library, else the
+ * caller's default.
  *
  * <p>Thread-safe, and <b>never on the event dispatch thread</b>: the loader works on a worker
  * thread and waits for it, and the first Java3D use initialises JOGL, which itself waits for
@@ -38,7 +39,7 @@ public final class MeshSource {
     public record Model(TriangleMesh mesh, float[] colour) {}
 
     /**
-     * Reads a VRML97 file into one triangle mesh (metres, the file's own frame).
+     * Reads an object file (VRML97, OBJ, STL) into one triangle mesh (the file's own units and frame).
      *
      * @param divisions segments round Sphere, Cylinder and Cone nodes (the scenario's value)
      * @throws IOException {@code FILE:LINE:COL: message} when the file cannot be loaded
@@ -56,18 +57,40 @@ public final class MeshSource {
         return new Model(mesh, colour(file));
     }
 
-    /** The first diffuseColor in a plain-text file, or null. */
+    private static final Pattern MTLLIB = Pattern.compile("(?m)^\\s*mtllib\\s+(\\S+)");
+    private static final Pattern KD = Pattern.compile("(?m)^\\s*Kd\\s+([-+0-9.eE]+)\\s+([-+0-9.eE]+)\\s+([-+0-9.eE]+)");
+
+    /**
+     * The first diffuseColor in a plain-text VRML file, or the first {@code Kd} of the material
+     * library an OBJ file names ({@code mtllib}, beside it), or null (STL has no colour).
+     */
     static float[] colour(Path file) {
+        String name = file.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        if (name.endsWith(".stl")) return null;
+        if (name.endsWith(".obj")) {
+            try {
+                Matcher lib = MTLLIB.matcher(Files.readString(file, java.nio.charset.StandardCharsets.ISO_8859_1));
+                if (!lib.find()) return null;
+                Path mtl = file.toAbsolutePath().getParent().resolve(lib.group(1));
+                Matcher kd = KD.matcher(Files.readString(mtl, java.nio.charset.StandardCharsets.ISO_8859_1));
+                return kd.find() ? rgb(kd) : null;
+            } catch (IOException | RuntimeException e) {
+                return null;
+            }
+        }
         try {
             byte[] head = Files.readAllBytes(file);
             if (head.length > 1 && (head[0] & 0xff) == 0x1f && (head[1] & 0xff) == 0x8b) return null;   // gzip
             Matcher m = DIFFUSE.matcher(new String(head, java.nio.charset.StandardCharsets.ISO_8859_1));
-            if (!m.find()) return null;
-            float[] c = new float[3];
-            for (int i = 0; i < 3; i++) c[i] = Math.max(0f, Math.min(1f, Float.parseFloat(m.group(i + 1))));
-            return c;
+            return m.find() ? rgb(m) : null;
         } catch (IOException | NumberFormatException e) {
             return null;
         }
+    }
+
+    private static float[] rgb(Matcher m) {
+        float[] c = new float[3];
+        for (int i = 0; i < 3; i++) c[i] = Math.max(0f, Math.min(1f, Float.parseFloat(m.group(i + 1))));
+        return c;
     }
 }

@@ -5,49 +5,74 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
+import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
+import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.Home;
+import org.handsim.sim.MeshFiles;
+import org.handsim.sim.ObjectPlacer;
 import org.handsim.sim.Scenario;
 
 /**
- * The <b>Objects</b> panel: import a 3D model from a VRML97 file (a file chooser), place it by
- * position and rotation, remove it (paper Section III, "Object model").
+ * The <b>Objects</b> panel: import a 3D model from a VRML97, Wavefront OBJ or STL file, choose
+ * its units, place it by position and rotation, remove it (paper Section III, "Object model").
  *
- * <p>The placement is {@code world ← object}: the position in metres and the rotation as an
- * axis-angle vector in degrees (direction = axis, length = angle; the scenario files'
- * {@code rotation_rad} in degrees), then a uniform scale applied in the object's own frame.
- * A new import keeps the current placement when there is one, else it uses the placement of the
- * opened scenario's object, else {@link #DEFAULT_POSITION} in the palm frame. Every change
- * rebuilds the model with the object ({@code Scenario.withObject}); a file that fails to load
- * is reported in the window (status bar; a dialog when interactive) and changes nothing.
+ * <h2>Import</h2>
+ * A new import is placed where it cannot start inside the hand ({@link ObjectPlacer}): its axes
+ * along the palm's, its centre on the palm axis in front of the palm, moved out along that axis
+ * until the simulator's own collision finds no link touching it at the start. Its units come
+ * from the list: <i>auto</i> (metres for a model at most 2 units across, else millimetres,
+ * GraspIt!'s unit), mm, cm or m — saved in the scenario as {@code object.units}. Then the camera
+ * frames the scene. Should the hand still start in contact (a placement typed by hand, or no
+ * clear place found), the window says so in the status bar with the command line's warning.
  *
- * <p>Script names: buttons {@code obj.import} ("Import VRML…"), {@code obj.place} ("Place"),
+ * <h2>Placement</h2>
+ * {@code world ← object}: the position in metres and the rotation as an axis-angle vector in
+ * degrees (direction = axis, length = angle; the scenario files' {@code rotation_rad} in
+ * degrees), then the units and a uniform scale applied in the object's own frame. Every change
+ * rebuilds the model with the object ({@code Scenario.withObject}); a file that fails to load is
+ * reported in the window (status bar; a dialog when interactive) and changes nothing.
+ *
+ * <p>Script names: buttons {@code obj.import} ("Import…"), {@code obj.place} ("Place"),
  * {@code obj.remove} ("Remove"); fields {@code obj.x}, {@code obj.y}, {@code obj.z},
- * {@code obj.rx}, {@code obj.ry}, {@code obj.rz}, {@code obj.scale}. The script action
- * {@code import FILE} does what the file chooser does. Event dispatch thread only.
+ * {@code obj.rx}, {@code obj.ry}, {@code obj.rz}, {@code obj.scale}; list {@code obj.units}.
+ * The script action {@code import FILE} does what the file chooser does. Event dispatch thread only.
  */
 public final class ObjectsPanel {
-    /** Where a first object goes when nothing says otherwise: above the palm, palm frame, m. */
-    static final double[] DEFAULT_POSITION = {0, 0, 0.16};
+    /** The units list: auto, then {@link Scenario.Units} by name. */
+    static final String[] UNITS = {"auto", "mm", "cm", "m"};
 
     private final HandSimWindow window;
     private final JPanel panel = Widgets.column();
     private final JLabel file = new JLabel("no object");
+    private final JLabel placed = new JLabel(" ");
     private final JTextField x, y, z, rx, ry, rz, scale;
+    private final JComboBox<String> units = new JComboBox<>(UNITS);
+    private boolean syncing;
 
     ObjectsPanel(HandSimWindow window) {
         this.window = window;
-        JPanel io = Widgets.titled(new JPanel(new GridBagLayout()), "Object from a VRML97 file");
-        io.add(Widgets.button("obj.import", "Import VRML…", this::choose), Widgets.at(0, 0));
+        JPanel io = Widgets.titled(new JPanel(new GridBagLayout()), "Object from a VRML97, OBJ or STL file");
+        io.add(Widgets.button("obj.import", "Import…", this::choose), Widgets.at(0, 0));
         io.add(Widgets.button("obj.remove", "Remove", this::remove), Widgets.at(1, 0));
+        JPanel u = new JPanel(new java.awt.BorderLayout(4, 0));
+        u.add(new JLabel("units"), java.awt.BorderLayout.WEST);
+        units.setName("obj.units");
+        units.setToolTipText("auto: metres for a model at most 2 units across, else millimetres (GraspIt!'s unit)");
+        units.addActionListener(e -> { if (!syncing) unitsChanged(); });
+        u.add(units, java.awt.BorderLayout.CENTER);
+        io.add(u, Widgets.at(2, 0));
         file.setName("obj.file");
-        io.add(file, Widgets.at(0, 1, 2));
+        io.add(file, Widgets.at(0, 1, 3));
+        placed.setName("obj.placed");
+        placed.setFont(Widgets.small());
+        io.add(placed, Widgets.at(0, 2, 3));
         panel.add(io);
 
         JPanel place = Widgets.titled(new JPanel(new GridBagLayout()), "Placement (world frame)");
@@ -71,7 +96,8 @@ public final class ObjectsPanel {
         place.add(new JLabel("scale"), Widgets.at(0, 2));
         place.add(scale, Widgets.at(1, 2));
         place.add(Widgets.button("obj.place", "Place", apply), Widgets.at(2, 2, 2));
-        place.add(Widgets.note("Rotation: axis-angle vector (axis × angle in degrees)."), Widgets.at(0, 3, 4));
+        place.add(Widgets.note("Rotation: axis-angle vector (axis × angle in degrees). The scale multiplies the file's "
+            + "coordinates after the units."), Widgets.at(0, 3, 4));
         panel.add(place);
     }
 
@@ -79,17 +105,25 @@ public final class ObjectsPanel {
         return Widgets.top(panel);
     }
 
-    private void choose() {
+    /** The file chooser (File ▸ Import object, the Import button). */
+    void choose() {
         Path start = Home.dir().resolve("vrml").resolve("objects");
         JFileChooser fc = new JFileChooser(Files.isDirectory(start) ? start.toFile() : null);
-        fc.setFileFilter(new FileNameExtensionFilter("VRML97 files (*.wrl)", "wrl", "WRL"));
+        fc.setFileFilter(new FileNameExtensionFilter("3D models: VRML97, OBJ, STL (*.wrl, *.wrz, *.obj, *.stl)",
+            MeshFiles.EXTENSIONS.toArray(new String[0])));
         if (fc.showOpenDialog(window.frame()) == JFileChooser.APPROVE_OPTION) importFile(fc.getSelectedFile().toPath());
     }
 
+    /** The units chosen in the list, or null for auto. */
+    private Scenario.Units chosenUnits() {
+        return Scenario.Units.of((String) units.getSelectedItem());
+    }
+
     /**
-     * Imports a VRML file (what the file chooser's OK does): reads it off the event dispatch
-     * thread, then places it and rebuilds the model. The future completes when the object is in
-     * the view and the model, or exceptionally with the error that the window shows.
+     * Imports an object file (what the file chooser's OK does): reads it and finds a clear
+     * placement off the event dispatch thread, then rebuilds the model with it and frames the
+     * camera. The future completes when the object is in the view and the model, or
+     * exceptionally with the error that the window shows.
      */
     public CompletableFuture<?> importFile(Path f) {
         Path abs = f.toAbsolutePath().normalize();
@@ -98,16 +132,57 @@ public final class ObjectsPanel {
             return CompletableFuture.failedFuture(new java.io.IOException("no such file: " + abs));
         }
         Scenario s = window.scenario();
-        Scenario.ObjectPlacement p = s.object();
-        if (p == null) p = window.originalScenario().object();
-        RigidTransform pose = p != null ? p.worldFromObject()
-            : s.worldFromPalm().compose(RigidTransform.translation(DEFAULT_POSITION[0], DEFAULT_POSITION[1], DEFAULT_POSITION[2]));
-        Scenario.ObjectPlacement np = new Scenario.ObjectPlacement(abs, pose, p != null ? p.scale() : 1.0, p != null ? p.divisions() : 24);
-        CompletableFuture<MeshSource.Model> loaded = window.loadObjectMesh(abs, np.divisions());
-        return loaded.thenAccept(m -> {
-            window.load(window.scenario().withObject(np));
-            window.status("imported " + abs.getFileName() + " (" + m.mesh().triangleCount() + " triangles)", false);
-        });
+        int divisions = s.object() != null ? s.object().divisions() : Scenario.DEFAULT_DIVISIONS;
+        return placeAndLoad(abs, divisions, chosenUnits(), 1.0, "imported");
+    }
+
+    /** Finds the units (if null: guessed) and a clear placement off the EDT, then loads the scenario with it. */
+    private CompletableFuture<?> placeAndLoad(Path abs, int divisions, Scenario.Units wanted, double sc, String verb) {
+        window.status("loading " + abs.getFileName() + " ...", false);
+        Scenario s = window.scenario();
+        CompletableFuture<ObjectPlacer.Placed> found = new CompletableFuture<>();
+        Thread t = new Thread(() -> {
+            try {
+                Scenario.Units u = wanted != null ? wanted : ObjectPlacer.guessUnits(org.handsim.sim.SceneGeometry.mesh(abs, divisions, 1.0));
+                found.complete(ObjectPlacer.place(s, abs, divisions, sc, u));
+            } catch (RuntimeException e) {
+                found.completeExceptionally(e);
+            }
+        }, "handsim-object-placer");
+        t.setDaemon(true);
+        t.start();
+        CompletableFuture<Object> done = new CompletableFuture<>();
+        found.whenComplete((p, e) -> SwingUtilities.invokeLater(() -> {
+            if (e != null) {
+                Throwable c = e.getCause() != null && e instanceof java.util.concurrent.CompletionException ? e.getCause() : e;
+                window.error("cannot load " + abs + ": " + c.getMessage(), "Object not loaded");
+                done.completeExceptionally(c);
+                return;
+            }
+            window.load(window.scenario().withObject(p.placement()));
+            window.simulator().objectReady().whenComplete((m, e2) -> SwingUtilities.invokeLater(() -> {
+                if (e2 != null) {
+                    done.completeExceptionally(e2);
+                    return;
+                }
+                window.camera(org.handsim.gui.SceneView.Camera.FIT);
+                Scenario.ObjectPlacement pl = p.placement();
+                String where = String.format(Locale.ROOT, "%s %s (%d triangles, units %s%s), placed on the palm axis%s", verb, abs.getFileName(),
+                    m != null ? m.mesh().triangleCount() : 0, pl.units().id(), wanted == null ? " by its size" : "",
+                    p.steps() == 0 ? "" : String.format(Locale.ROOT, ", moved out %d steps to clear the hand", p.steps()));
+                placed.setText(p.clear() ? "placed clear of the hand" : "no clear place found: the hand starts in contact");
+                if (p.clear()) window.status(where, false);
+                else window.warning(where + ": no place clear of the hand found within " + p.steps() + " steps");
+                done.complete(m);
+            }));
+        }));
+        return done;
+    }
+
+    private void unitsChanged() {
+        Scenario.ObjectPlacement p = window.scenario().object();
+        if (p == null) return;
+        placeAndLoad(p.file(), p.divisions(), chosenUnits(), p.scale(), "re-placed");
     }
 
     private void remove() {
@@ -117,6 +192,7 @@ public final class ObjectsPanel {
         }
         window.load(window.scenario().withObject(null));
         file.setText("no object");
+        placed.setText(" ");
         window.status("object removed", false);
     }
 
@@ -128,12 +204,14 @@ public final class ObjectsPanel {
         }
         try {
             double d = Math.PI / 180;
-            RigidTransform pose = RigidTransform.fromPose(Widgets.number(x, "x"), Widgets.number(y, "y"), Widgets.number(z, "z"),
-                d * Widgets.number(rx, "rotation x"), d * Widgets.number(ry, "rotation y"), d * Widgets.number(rz, "rotation z"));
+            double[] position = {Widgets.number(x, "x"), Widgets.number(y, "y"), Widgets.number(z, "z")};
+            double[] rotation = {d * Widgets.number(rx, "rotation x"), d * Widgets.number(ry, "rotation y"), d * Widgets.number(rz, "rotation z")};
             double sc = Widgets.number(scale, "scale");
             if (!(sc > 0)) throw new IllegalArgumentException("scale must be > 0, got " + sc);
-            window.load(window.scenario().withObject(new Scenario.ObjectPlacement(p.file(), pose, sc, p.divisions())));
-            window.status(String.format(Locale.ROOT, "object placed at (%.3f, %.3f, %.3f) m", pose.origin()[0], pose.origin()[1], pose.origin()[2]), false);
+            Scenario.Units u = chosenUnits() != null ? chosenUnits() : p.units();
+            window.load(window.scenario().withObject(Scenario.ObjectPlacement.of(p.file(), position, rotation, sc, p.divisions(), u).withFriction(p.friction())));
+            placed.setText("placed by hand");
+            window.status(String.format(Locale.ROOT, "object placed at (%.3f, %.3f, %.3f) m", position[0], position[1], position[2]), false);
         } catch (IllegalArgumentException e) {
             window.status("object not placed: " + e.getMessage(), true);
         }
@@ -142,8 +220,8 @@ public final class ObjectsPanel {
     /** Shows a placement in the fields (called when the working scenario changes). */
     void showPlacement(Scenario.ObjectPlacement p) {
         if (p == null) return;
-        double[] o = p.worldFromObject().origin();
-        double[] r = rotationVector(p.worldFromObject());
+        double[] o = p.position();
+        double[] r = p.rotation();
         x.setText(Widgets.fmt(o[0], 4));
         y.setText(Widgets.fmt(o[1], 4));
         z.setText(Widgets.fmt(o[2], 4));
@@ -151,34 +229,17 @@ public final class ObjectsPanel {
         ry.setText(Widgets.fmt(Math.toDegrees(r[1]), 2));
         rz.setText(Widgets.fmt(Math.toDegrees(r[2]), 2));
         scale.setText(Widgets.fmt(p.scale(), 4));
-    }
-
-    /** Shows the loaded mesh's name and size. */
-    void showMesh(Path f, MeshSource.Model m) {
-        file.setText(f.getFileName() + " — " + m.mesh().triangleCount() + " triangles");
-    }
-
-    /**
-     * The axis-angle vector of a rotation (inverse of Rodrigues' formula), rad. The angle is
-     * {@code atan2(2 sin θ, 2 cos θ)} from the antisymmetric part and the trace (well conditioned
-     * near 0 and π, where {@code acos} of the trace is not).
-     */
-    static double[] rotationVector(RigidTransform t) {
-        double r00 = t.get(0, 0), r11 = t.get(1, 1), r22 = t.get(2, 2);
-        double ax = t.get(2, 1) - t.get(1, 2), ay = t.get(0, 2) - t.get(2, 0), az = t.get(1, 0) - t.get(0, 1);
-        double s = Math.sqrt(ax * ax + ay * ay + az * az);
-        double angle = Math.atan2(s, r00 + r11 + r22 - 1);
-        if (angle < 1e-12) return new double[3];
-        if (s < 1e-9) {
-            // angle = π: R = 2 n nᵀ − I, so |n_i| from the diagonal; the signs relative to the
-            // largest component from its row (R_ij = 2 n_i n_j)
-            double[] n = {Math.sqrt(Math.max(0, (r00 + 1) / 2)), Math.sqrt(Math.max(0, (r11 + 1) / 2)), Math.sqrt(Math.max(0, (r22 + 1) / 2))};
-            int i = n[0] >= n[1] && n[0] >= n[2] ? 0 : n[1] >= n[2] ? 1 : 2;
-            for (int j = 0; j < 3; j++) {
-                if (j != i && t.get(i, j) < 0) n[j] = -n[j];
-            }
-            return new double[] {angle * n[0], angle * n[1], angle * n[2]};
+        syncing = true;
+        try {
+            if (chosenUnits() != null) units.setSelectedItem(p.units().id());
+        } finally {
+            syncing = false;
         }
-        return new double[] {angle * ax / s, angle * ay / s, angle * az / s};
+        file.setText(p.file().getFileName() + " (" + MeshFiles.Format.of(p.file()).label() + ")");
+    }
+
+    /** The axis-angle vector of a placement's rotation, rad ({@link RigidTransform#rotationVector()}). */
+    static double[] rotationVector(RigidTransform t) {
+        return t.rotationVector();
     }
 }

@@ -27,10 +27,13 @@ import org.handsim.sim.trajectory.Trapezoid;
  *   <li><b>quintic</b> to an end count in a duration: zero velocity and acceleration at both
  *       ends ({@link Quintic});</li>
  *   <li><b>line</b> (M1–M3): the fingertip follows a straight line to an end point
- *       {@code x,y,z} in the finger's base frame {k0}, metres, in a duration
- *       ({@link CartesianLine}: solved by coupled inverse kinematics at 101 points; the panel
- *       reports how far the coupled finger strays from the line).</li>
+ *       {@code x,y,z} in the <b>palm frame</b> {P}, metres (the frame of the Kinematics panel's
+ *       targets), in a duration ({@link CartesianLine}, which works in the finger's base frame
+ *       {k0}: the point is converted; solved by coupled inverse kinematics at 101 points; the
+ *       panel reports how far the coupled finger strays from the line).</li>
  * </ul>
+ * Only the fields the chosen type uses are enabled (hold: none; trapezoid: end, v max, a max;
+ * quintic: end, T; line: end point, T).
  * The start of every trajectory is the motor's count now ({@link HandSimWindow#currentCounts});
  * the scenario's duration becomes the longest trajectory plus {@value #SETTLE_S} s. A bad
  * value is reported in the status bar with the motor and field, and nothing runs.
@@ -79,13 +82,18 @@ public final class PathPlanningPanel {
             p.add(duration[m], Widgets.at(5, 0));
             grid.add(p, Widgets.at(0, row++, 3));
         }
+        for (int m = 0; m < 4; m++) {
+            int motor = m;
+            type[m].addActionListener(e -> enableFields(motor));
+            enableFields(m);
+        }
         type[2].setSelectedItem("trapezoid");
         grid.add(Widgets.button("path.run", "Run", this::run), Widgets.at(0, row));
         grid.add(Widgets.button("path.paper", "Paper experiment", this::paper), Widgets.at(1, row, 2));
         panel.add(grid);
         JLabel help = Widgets.note("Units: counts, counts/s, counts/s². Fingers: 0–17 500 counts "
             + "(θk2 = q/125°); spread: 0–3 150 counts. <i>line</i>: the fingertip's end point in the "
-            + "finger base frame {k0}, e.g. <tt>0.12,0,0.10</tt>.");
+            + "palm frame {P}, metres (as the Kinematics panel's targets), e.g. <tt>0.02,0.05,0.20</tt>.");
         panel.add(help);
         result.setName("path.result");
         result.setEditable(false);
@@ -94,6 +102,22 @@ public final class PathPlanningPanel {
         result.setOpaque(false);
         result.setFont(Widgets.small());
         panel.add(result);
+    }
+
+    /** Enables the fields motor m's type uses. */
+    private void enableFields(int m) {
+        String kind = (String) type[m].getSelectedItem();
+        end[m].setEnabled(!"hold".equals(kind));
+        vmax[m].setEnabled("trapezoid".equals(kind));
+        amax[m].setEnabled("trapezoid".equals(kind));
+        duration[m].setEnabled("quintic".equals(kind) || "line".equals(kind));
+        if ("line".equals(kind) && !end[m].getText().contains(",")) {
+            // a palm-frame point in front of the finger as a start
+            double[] tip = org.handsim.kinematics.FingerKinematics.of(m + 1).baseInPalm().apply(new double[] {0.12, 0, 0.08});
+            end[m].setText(String.format(Locale.ROOT, "%.3f,%.3f,%.3f", tip[0], tip[1], tip[2]));
+        } else if (!"line".equals(kind) && end[m].getText().contains(",")) {
+            end[m].setText(m < 3 ? "17500" : "0");
+        }
     }
 
     private static JLabel small(String s) {
@@ -135,7 +159,7 @@ public final class PathPlanningPanel {
         result.setText(report.toString());
         window.load(s);
         window.play();
-        window.status("path planning: running", false);
+        window.status("path planning: trajectories planned from the current counts; playing from t = 0", false);
     }
 
     private Trajectory trajectory(int m, double[] from) {
@@ -164,7 +188,9 @@ public final class PathPlanningPanel {
                         throw new IllegalArgumentException(motor + " end: '" + parts[i] + "' is not a number");
                     }
                 }
-                return new CartesianLine(m + 1, q0, from[3], p, positive(duration[m], motor + " T"));
+                // palm frame (the panel's) → the finger's base frame {k0} (the trajectory's)
+                double[] inK0 = org.handsim.kinematics.FingerKinematics.of(m + 1).baseInPalm().inverse().apply(p);
+                return new CartesianLine(m + 1, q0, from[3], inK0, positive(duration[m], motor + " T"));
             }
             default:
                 throw new IllegalArgumentException(motor + ": unknown trajectory type " + kind);

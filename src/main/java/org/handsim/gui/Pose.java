@@ -63,6 +63,17 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
         return new Pose(worldFromPalm, framesWorld, contactPoints, contactNormals, contactForces, targetWorld, closestWorld);
     }
 
+    /** A copy with the contacts of a set (points and outward normals, forces 0: a preview's, not solved). */
+    public Pose withContacts(org.handsim.sim.ContactSet c) {
+        int n = c.size();
+        double[] p = new double[3 * n], nn = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            System.arraycopy(c.point(i), 0, p, 3 * i, 3);
+            System.arraycopy(c.normal(i), 0, nn, 3 * i, 3);
+        }
+        return new Pose(worldFromPalm, framesWorld, p, nn, new double[n], target, closest);
+    }
+
     /** @return the number of contacts */
     public int contactCount() { return contactForces.length; }
 }

@@ -70,8 +70,11 @@ import org.jogamp.vecmath.Vector3f;
  * ({@link Canvas3D#postSwap()}) and read from any thread.
  */
 public final class SceneView {
-    /** Background colour, 0xRRGGBB (a compile-time constant: tests compare screenshot pixels with it). */
-    public static final int BACKGROUND_RGB = 0x2A313B;
+    /**
+     * Background colour, 0xRRGGBB (a compile-time constant: tests compare screenshot pixels with
+     * it): a middle grey-blue, so a black model shows as dark on it and a white one as light.
+     */
+    public static final int BACKGROUND_RGB = 0x56616E;
     static final int MAX_CONTACTS = 64;
     static final double NORMAL_LENGTH_M = 0.035;
     private static final BoundingSphere EVERYWHERE = new BoundingSphere(new Point3d(), 1000);
@@ -93,7 +96,8 @@ public final class SceneView {
     private final Vector3d scratchV = new Vector3d();
     private final double[] m16 = new double[16];
     private BranchGroup objectBranch;
-    private boolean showContacts = true;
+    private boolean showContacts = true, showNormals = true;
+    private final View view3d;
     private final int handTriangles;
 
     /**
@@ -109,24 +113,32 @@ public final class SceneView {
         canvas = new FrameCountingCanvas(gc);
         universe = new SimpleUniverse(canvas);
         View view = universe.getViewer().getView();
+        view3d = view;
         view.setFrontClipDistance(0.005);
         view.setBackClipDistance(20);
-        view.setFieldOfView(Math.toRadians(40));
+        view.setFieldOfView(Math.toRadians(FIELD_OF_VIEW_DEG));
 
         BranchGroup root = new BranchGroup();
         Background bg = new Background(new Color3f(((BACKGROUND_RGB >> 16) & 255) / 255f,
             ((BACKGROUND_RGB >> 8) & 255) / 255f, (BACKGROUND_RGB & 255) / 255f));
         bg.setApplicationBounds(EVERYWHERE);
         root.addChild(bg);
-        AmbientLight ambient = new AmbientLight(new Color3f(0.38f, 0.38f, 0.40f));
+        // ambient, a key light from above, a fill from below and a headlight that moves with the
+        // camera: every side the camera sees is lit, and specular highlights show a black model's shape
+        AmbientLight ambient = new AmbientLight(new Color3f(0.34f, 0.34f, 0.36f));
         ambient.setInfluencingBounds(EVERYWHERE);
         root.addChild(ambient);
-        DirectionalLight key = new DirectionalLight(new Color3f(0.85f, 0.85f, 0.82f), new Vector3f(-0.5f, -0.8f, -0.6f));
+        DirectionalLight key = new DirectionalLight(new Color3f(0.70f, 0.70f, 0.67f), new Vector3f(-0.5f, -0.8f, -0.6f));
         key.setInfluencingBounds(EVERYWHERE);
         root.addChild(key);
-        DirectionalLight fill = new DirectionalLight(new Color3f(0.35f, 0.37f, 0.42f), new Vector3f(0.7f, 0.2f, 0.6f));
+        DirectionalLight fill = new DirectionalLight(new Color3f(0.25f, 0.27f, 0.30f), new Vector3f(0.7f, 0.2f, 0.6f));
         fill.setInfluencingBounds(EVERYWHERE);
         root.addChild(fill);
+        org.jogamp.java3d.utils.universe.PlatformGeometry head = new org.jogamp.java3d.utils.universe.PlatformGeometry();
+        DirectionalLight headlight = new DirectionalLight(new Color3f(0.40f, 0.40f, 0.40f), new Vector3f(0, 0, -1));
+        headlight.setInfluencingBounds(EVERYWHERE);
+        head.addChild(headlight);
+        universe.getViewingPlatform().setPlatformGeometry(head);
 
         TransformGroup worldToVworld = new TransformGroup();
         Transform3D rx = new Transform3D();
@@ -232,6 +244,8 @@ public final class SceneView {
         Transform3D t = new Transform3D();
         t.lookAt(eyeV, center, new Vector3d(0, 1, 0));
         t.invert();
+        view3d.setFrontClipDistance(0.005);
+        view3d.setBackClipDistance(20);
         orbit.setRotationCenter(center);
         orbit.setHomeTransform(t);
         orbit.goHome();
@@ -257,7 +271,7 @@ public final class SceneView {
         if (n > 0) {
             normals.setCoordinates(0, normalCoords, 0, 2 * n);
             normals.setValidVertexCount(2 * n);
-            mask.set(MAX_CONTACTS);
+            if (showNormals) mask.set(MAX_CONTACTS);
         }
         contactSwitch.setChildMask(showContacts ? mask : new BitSet());
         BitSet markers = new BitSet(2);
@@ -294,17 +308,142 @@ public final class SceneView {
     }
 
     /** What {@link #setVisible} can hide. */
-    public enum Part { HAND, OBJECT, CONTACTS }
+    public enum Part { HAND, OBJECT, CONTACTS, NORMALS }
 
-    /** Shows or hides a part of the scene. Event dispatch thread only. */
+    /** Shows or hides a part of the scene (contacts and normals from the next pose shown). Event dispatch thread only. */
     public void setVisible(Part part, boolean on) {
         switch (part) {
             case HAND: handSwitch.setWhichChild(on ? Switch.CHILD_ALL : Switch.CHILD_NONE); break;
             case OBJECT: objectSwitch.setWhichChild(on ? Switch.CHILD_ALL : Switch.CHILD_NONE); break;
+            case NORMALS:
+                showNormals = on;
+                if (!on) {
+                    BitSet m = (BitSet) contactSwitch.getChildMask().clone();
+                    m.clear(MAX_CONTACTS);
+                    contactSwitch.setChildMask(m);
+                }
+                break;
             default:
                 showContacts = on;
                 if (!on) contactSwitch.setChildMask(new BitSet());
         }
+    }
+
+    // ------------------------------------------------------------------ camera
+    /** Vertical field of view, degrees. */
+    static final double FIELD_OF_VIEW_DEG = 40;
+
+    /**
+     * Camera positions: the home view, one that fits the whole scene, and three along the palm's
+     * axes (each framing the scene). {@link #key()} is the window's shortcut.
+     */
+    public enum Camera {
+        HOME("home", "Home view", "H"), FIT("fit", "Fit to the scene", "F"), FRONT("front", "Front (palm x)", "1"),
+        TOP("top", "Top (palm z, looking at the palm)", "2"), SIDE("side", "Side (palm y)", "3");
+
+        private final String id, label, key;
+
+        Camera(String id, String label, String key) {
+            this.id = id;
+            this.label = label;
+            this.key = key;
+        }
+
+        /** Name in scripts and menus: home, fit, front, top, side. */
+        public String id() { return id; }
+        public String label() { return label; }
+        public String key() { return key; }
+
+        /** The camera named {@code id}, or null. */
+        public static Camera of(String id) {
+            for (Camera c : values()) if (c.id.equalsIgnoreCase(id)) return c;
+            return null;
+        }
+    }
+
+    /** Radius of a sphere round the hand's palm and open fingers, m (palm frame, centre {@link #HAND_CENTRE}). */
+    static final double HAND_RADIUS_M = 0.17;
+    static final double[] HAND_CENTRE = {0, 0, 0.10};
+
+    /**
+     * The scene's bounding sphere in the world {cx, cy, cz, r}: the hand's and the object's
+     * (its mesh at its placement), m.
+     */
+    public static double[] sceneSphere(org.handsim.sim.Scenario s, MeshSource.Model object) {
+        double[] hc = s.worldFromPalm().apply(HAND_CENTRE);
+        double[] a = {hc[0], hc[1], hc[2], HAND_RADIUS_M};
+        if (object == null || s.object() == null) return a;
+        double[] os = org.handsim.sim.SceneGeometry.boundingSphere(object.mesh());
+        double k = s.object().meshScale();
+        double[] oc = s.object().worldFromObject().apply(new double[] {k * os[0], k * os[1], k * os[2]});
+        double[] b = {oc[0], oc[1], oc[2], k * os[3]};
+        // the smallest sphere round both
+        double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2], d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (d + b[3] <= a[3]) return a;
+        if (d + a[3] <= b[3]) return b;
+        double r = 0.5 * (d + a[3] + b[3]);
+        double t = (r - a[3]) / d;
+        return new double[] {a[0] + t * dx, a[1] + t * dy, a[2] + t * dz, r};
+    }
+
+    /**
+     * Moves the camera to {@code c}, framing the scene of {@code s} (and its object's mesh, if
+     * loaded) so that all of it is in view; the orbit turns about the scene's centre and Home
+     * view returns to the home position. Event dispatch thread.
+     */
+    public void camera(Camera c, org.handsim.sim.Scenario s, MeshSource.Model object) {
+        if (c == Camera.HOME) {
+            lookAt(s.worldFromPalm());
+            return;
+        }
+        double[] sphere = sceneSphere(s, object);
+        org.handsim.math.RigidTransform wp = s.worldFromPalm();
+        double[] dir, up;
+        switch (c) {
+            case FRONT: dir = wp.axis(0); up = wp.axis(2); break;
+            case TOP: dir = wp.axis(2); up = wp.axis(0); break;
+            case SIDE: dir = wp.axis(1); up = wp.axis(2); break;
+            default: {
+                // the home view's direction
+                double[] eye = wp.apply(new double[] {0.42, 0.16, 0.22}), at = wp.apply(new double[] {0, 0.01, 0.10});
+                dir = new double[] {eye[0] - at[0], eye[1] - at[1], eye[2] - at[2]};
+                up = wp.axis(2);
+            }
+        }
+        double n = Math.sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        double aspect = canvas.getWidth() > 0 && canvas.getHeight() > 0 ? canvas.getWidth() / (double) canvas.getHeight() : 1;
+        // the field of view is horizontal in Java3D: fit the sphere in the narrower of the two directions
+        double half = Math.toRadians(FIELD_OF_VIEW_DEG) / 2;
+        double halfVertical = Math.atan(Math.tan(half) / Math.max(aspect, 1e-3));
+        double distance = 1.08 * sphere[3] / Math.sin(Math.min(half, halfVertical));
+        double[] eye = {sphere[0] + distance * dir[0] / n, sphere[1] + distance * dir[1] / n, sphere[2] + distance * dir[2] / n};
+        view3d.setBackClipDistance(Math.max(20, 3 * distance));
+        view3d.setFrontClipDistance(Math.max(0.005, Math.min(0.05, distance / 200)));
+        place(eye, sphere, up);
+    }
+
+    /** Puts the camera at {@code eye} (world) looking at {@code at} with {@code up}; sets the orbit's centre and home there. */
+    private void place(double[] eye, double[] at, double[] up) {
+        // world (x, y, z) -> vworld (x, z, -y)
+        Point3d center = new Point3d(at[0], at[2], -at[1]);
+        Point3d eyeV = new Point3d(eye[0], eye[2], -eye[1]);
+        Transform3D t = new Transform3D();
+        t.lookAt(eyeV, center, new Vector3d(up[0], up[2], -up[1]));
+        t.invert();
+        orbit.setRotationCenter(center);
+        // through the orbit behaviour, which keeps its own copy of the camera (a transform set
+        // directly would be undone by the next mouse drag)
+        orbit.setHomeTransform(t);
+        orbit.goHome();
+    }
+
+    /** The camera's position in the world, m (for tests). */
+    public double[] eyeWorld() {
+        Transform3D t = new Transform3D();
+        universe.getViewingPlatform().getViewPlatformTransform().getTransform(t);
+        Vector3d v = new Vector3d();
+        t.get(v);
+        return new double[] {v.x, -v.z, v.y};
     }
 
     /** Frames rendered so far (counted after each buffer swap). */

@@ -23,19 +23,37 @@ import org.handsim.sim.ClutchState;
  * set NAME VALUE            type VALUE into the field NAME and press Enter (fk3.counts, ik.x,
  *                           path.M3.end, obj.z, dyn.gx, ...); a list: the item with that text,
  *                           or starting with it; a slider: the number
- * import FILE               import a VRML97 object (what the Objects panel's file chooser does)
- *                           and wait until it is in the view and the model
+ * import FILE               import an object, VRML97, OBJ or STL (what the Objects panel's file
+ *                           chooser does: placed clear of the hand, camera framed) and wait
+ *                           until it is in the view and the model
+ * open FILE                 open a scenario file (File ▸ Open scenario)
+ * save-scenario FILE        save the window's state as a scenario (File ▸ Save scenario)
+ * export-traces FILE        write the run's trace so far as trace.csv (File ▸ Export traces)
+ * save-charts FILE          save the charts, .png or .svg (File ▸ Save charts)
+ * menu NAME                 click a menu item by name (file.save, view.camera.fit,
+ *                           view.series.finger1, run.toggle, ...; see HandSimWindow)
+ * key KEY                   type a key into the window as a user would: SPACE, RIGHT, R, H, F,
+ *                           1, 2, 3 (the window's shortcuts)
+ * camera home|fit|front|top|side       move the camera
+ * resize WIDTH HEIGHT       make the window that size (pixels; at least 1024 × 700)
+ * expect-error TEXT         the next action must fail with TEXT in its message; the script
+ *                           goes on (to screenshot error states)
  * play SECONDS | end        play until the simulated time reaches SECONDS (or the scenario's
  *                           end) and wait; if it is there already, pause there
  * speed FACTOR | max        simulation speed: 1 = real time, max = as fast as possible
  * wait MS                   wait MS milliseconds of wall time
  * screenshot FILE           save the whole window as PNG
- * show hand|object|contacts on|off     show or hide a part of the 3D scene
+ * show hand|object|contacts|normals on|off     show or hide a part of the 3D scene
  * assert-state FINGER S1[|S2...]       fail unless finger 1..3's clutch is in one of the
  *                                      states (FREE, BLOCKED, BROKEN, STALLED)
  * assert-status TEXT        fail unless the status bar contains TEXT
- * log dynamics|state|events|ik         print the Dynamics table, the time and clutch states,
- *                                      the Dynamics events, or the Kinematics answer
+ * assert-runstate TEXT      fail unless the status bar's run state (running, paused,
+ *                           finished, reset, ready) contains TEXT
+ * assert-time SECONDS       fail unless the model is at that simulated time (within dt/2)
+ * assert-contacts N         fail unless the hand has N contacts now (the preview's, if one is shown)
+ * log dynamics|state|events|ik|charts  print the Dynamics table, the time and clutch states,
+ *                                      the Dynamics events, the Kinematics answer, or the
+ *                                      charts' time axis, points and series shown
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
  * Output lines start with {@code gui: }. An unknown verb or a bad argument is an error naming
@@ -63,25 +81,37 @@ public final class Script {
     public static final String HELP = "Script actions (one per line, '#' starts a comment; output: 'gui: ' lines):%n"
         + "  press LABEL          click a button by label or name (press Kinematics)%n"
         + "  set NAME VALUE       type into a field, then Enter (fk3.counts, ik.x, obj.z)%n"
-        + "  import FILE          import a VRML97 object, as the file chooser does%n"
+        + "  import FILE          import an object (.wrl .obj .stl) as the chooser does%n"
+        + "  open FILE            open a scenario;  save-scenario FILE%n"
+        + "  export-traces FILE   trace.csv so far; save-charts FILE (.png or .svg)%n"
+        + "  menu NAME            click a menu item (file.save, view.camera.fit)%n"
+        + "  key KEY              a shortcut key: SPACE, RIGHT, R, H, F, 1, 2, 3%n"
+        + "  camera home|fit|front|top|side   resize WIDTH HEIGHT%n"
+        + "  expect-error TEXT    the next action must fail with TEXT in its message%n"
         + "  play T|end           play until simulated time T s (or the end), and wait%n"
         + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
         + "  wait MS              wait MS milliseconds%n"
         + "  screenshot FILE      save the whole window as PNG%n"
-        + "  show hand|object|contacts on|off%n"
+        + "  show hand|object|contacts|normals on|off%n"
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
-        + "  log dynamics|state|events|ik%n"
+        + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
+        + "  log dynamics|state|events|ik|charts%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
         + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
         + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
         + "numerical guard. Field and button names: the Javadoc of each panel class.";
 
+    /** The keys {@code key} can type (the window's shortcuts without a modifier). */
+    public static final List<String> KEYS = List.of("SPACE", "RIGHT", "R", "H", "F", "1", "2", "3");
+
     /** The verbs. */
     public enum Verb {
         PRESS("press"), SET("set"), IMPORT("import"), PLAY("play"), SPEED("speed"), WAIT("wait"),
         SCREENSHOT("screenshot"), SHOW("show"), ASSERT_STATE("assert-state"), ASSERT_STATUS("assert-status"),
-        LOG("log"), MEASURE_FPS("measure-fps");
+        LOG("log"), MEASURE_FPS("measure-fps"), OPEN("open"), SAVE_SCENARIO("save-scenario"), EXPORT_TRACES("export-traces"),
+        SAVE_CHARTS("save-charts"), MENU("menu"), KEY("key"), CAMERA("camera"), EXPECT_ERROR("expect-error"),
+        ASSERT_RUNSTATE("assert-runstate"), ASSERT_TIME("assert-time"), ASSERT_CONTACTS("assert-contacts"), RESIZE("resize");
 
         final String word;
 
@@ -151,6 +181,12 @@ public final class Script {
             if (v == null) throw error(source, n, "unknown action '" + head[0] + "' (known: " + verbs() + ")");
             out.add(new Action(n, line, v, arguments(source, n, v, rest)));
         }
+        for (int i = 0; i < out.size(); i++) {
+            Action a = out.get(i);
+            if (a.verb() == Verb.EXPECT_ERROR && (i + 1 == out.size() || out.get(i + 1).verb() == Verb.EXPECT_ERROR)) {
+                throw error(source, a.line(), "expect-error needs an action after it (the one expected to fail)");
+            }
+        }
         return new Script(source, out);
     }
 
@@ -160,6 +196,12 @@ public final class Script {
             case IMPORT:
             case SCREENSHOT:
             case ASSERT_STATUS:
+            case OPEN:
+            case SAVE_SCENARIO:
+            case EXPORT_TRACES:
+            case MENU:
+            case EXPECT_ERROR:
+            case ASSERT_RUNSTATE:
                 if (rest.isEmpty()) throw error(src, n, v.word + " needs an argument");
                 return List.of(rest);
             case SET: {
@@ -184,10 +226,31 @@ public final class Script {
             case MEASURE_FPS:
                 positive(src, n, v, rest);
                 return List.of(rest);
+            case ASSERT_TIME:
+                if (number(src, n, v, rest) < 0) throw error(src, n, "assert-time needs a time >= 0, got " + rest);
+                return List.of(rest);
+            case ASSERT_CONTACTS: {
+                double c = number(src, n, v, rest);
+                if (c < 0 || c != Math.rint(c)) throw error(src, n, "assert-contacts needs a whole number >= 0, got " + rest);
+                return List.of(rest);
+            }
+            case SAVE_CHARTS: {
+                String low = rest.toLowerCase(Locale.ROOT);
+                if (!low.endsWith(".png") && !low.endsWith(".svg")) throw error(src, n, "save-charts needs a .png or .svg file, got '" + rest + "'");
+                return List.of(rest);
+            }
+            case KEY: {
+                String k = rest.toUpperCase(Locale.ROOT);
+                if (!KEYS.contains(k)) throw error(src, n, "key needs one of " + String.join(", ", KEYS) + ", got '" + rest + "'");
+                return List.of(k);
+            }
+            case CAMERA:
+                if (SceneView.Camera.of(rest) == null) throw error(src, n, "camera needs home, fit, front, top or side, got '" + rest + "'");
+                return List.of(rest.toLowerCase(Locale.ROOT));
             case SHOW: {
                 String[] p = rest.toLowerCase(Locale.ROOT).split("\\s+");
-                if (p.length != 2 || !Arrays.asList("hand", "object", "contacts").contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
-                    throw error(src, n, "show needs hand|object|contacts and on|off, got '" + rest + "'");
+                if (p.length != 2 || !Arrays.asList("hand", "object", "contacts", "normals").contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
+                    throw error(src, n, "show needs hand|object|contacts|normals and on|off, got '" + rest + "'");
                 }
                 return List.of(p[0], p[1]);
             }
@@ -203,9 +266,18 @@ public final class Script {
                 }
                 return List.of(p[0], p[1].toUpperCase(Locale.ROOT));
             }
+            case RESIZE: {
+                String[] p = rest.split("\\s+");
+                if (p.length != 2 || !p[0].matches("\\d{3,5}") || !p[1].matches("\\d{3,5}")
+                    || Integer.parseInt(p[0]) < HandSimWindow.MINIMUM.width || Integer.parseInt(p[1]) < HandSimWindow.MINIMUM.height) {
+                    throw error(src, n, "resize needs WIDTH HEIGHT in pixels, at least " + HandSimWindow.MINIMUM.width + " " + HandSimWindow.MINIMUM.height
+                        + ", got '" + rest + "'");
+                }
+                return List.of(p[0], p[1]);
+            }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events or ik, got '" + rest + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik or charts, got '" + rest + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

@@ -2,11 +2,9 @@ package org.handsim.gui;
 
 import java.awt.Component;
 import java.awt.Container;
-import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
 import java.io.PrintWriter;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Files;
@@ -19,7 +17,6 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
-import javax.imageio.ImageIO;
 import javax.swing.AbstractButton;
 import javax.swing.JComboBox;
 import javax.swing.JSlider;
@@ -27,7 +24,6 @@ import javax.swing.SwingUtilities;
 import javax.swing.text.JTextComponent;
 import org.handsim.sim.ClutchState;
 import org.handsim.sim.Home;
-import org.handsim.util.AtomicFile;
 
 /**
  * Runs a {@link Script} against a {@link HandSimWindow}, one action after the other, on the
@@ -73,18 +69,39 @@ public final class ScriptRunner {
         this.baseDir = baseDir;
     }
 
-    /** Runs every action; throws on the first that fails. */
+    /**
+     * Runs every action; throws on the first that fails — unless {@code expect-error TEXT} came
+     * just before it and its message contains TEXT (then it says so and goes on; an action
+     * expected to fail that succeeds fails the script).
+     */
     public void run(Script script) throws ScriptFailure, InterruptedException {
+        String expected = null;
         for (Script.Action a : script.actions()) {
+            if (a.verb() == Script.Verb.EXPECT_ERROR) {
+                expected = a.arg(0);
+                continue;
+            }
+            String failure = null;
+            int code = 1;
             try {
                 perform(a);
             } catch (ScriptFailure f) {
-                throw new ScriptFailure(script.source() + ":" + a.line() + ": " + a.text() + ": " + f.getMessage(), f.exitCode);
+                failure = f.getMessage();
+                code = f.exitCode;
             } catch (InterruptedException e) {
                 throw e;
             } catch (Exception e) {
-                throw new ScriptFailure(script.source() + ":" + a.line() + ": " + a.text() + ": " + message(e), 1);
+                failure = message(e);
             }
+            String where = script.source() + ":" + a.line() + ": " + a.text() + ": ";
+            if (expected != null) {
+                if (failure == null) throw new ScriptFailure(where + "expected an error containing '" + expected + "', but the action succeeded", 1);
+                if (!failure.contains(expected)) throw new ScriptFailure(where + "expected an error containing '" + expected + "', got: " + failure, 1);
+                say("expected error: " + failure);
+                expected = null;
+                continue;
+            }
+            if (failure != null) throw new ScriptFailure(where + failure, code);
         }
     }
 
@@ -134,6 +151,93 @@ public final class ScriptRunner {
             }
             case LOG: log(a.arg(0)); break;
             case MEASURE_FPS: measureFps(Double.parseDouble(a.arg(0))); break;
+            case OPEN: {
+                Path f = resolve(a.arg(0));
+                if (!edt(() -> window.openScenario(f))) throw new ScriptFailure(edt(window::statusText), 1);
+                window.runner().sync();
+                say("opened " + f);
+                break;
+            }
+            case SAVE_SCENARIO: {
+                Path f = resolveOut(a.arg(0));
+                if (!edt(() -> window.saveScenario(f))) throw new ScriptFailure(edt(window::statusText), 1);
+                say("saved scenario " + f);
+                break;
+            }
+            case EXPORT_TRACES: {
+                Path f = resolveOut(a.arg(0));
+                window.runner().sync();
+                int rows = edt(() -> window.exportTraces(f)).get(5, TimeUnit.MINUTES);
+                say("exported " + rows + " trace rows to " + f);
+                break;
+            }
+            case SAVE_CHARTS: {
+                Path f = resolveOut(a.arg(0));
+                edt(() -> { window.refreshNow(); return null; });
+                edt(() -> window.saveCharts(f)).get(2, TimeUnit.MINUTES);
+                say("saved charts " + f);
+                break;
+            }
+            case MENU: {
+                String name = a.arg(0);
+                edt(() -> {
+                    AbstractButton item = window.menuItems().get(name);
+                    if (item == null) throw new ScriptFailure("no menu item '" + name + "' (menu items: " + String.join(", ", window.menuItems().keySet()) + ")", 1);
+                    if (!item.isEnabled()) throw new ScriptFailure("the menu item '" + name + "' is disabled", 1);
+                    item.doClick(0);
+                    return null;
+                });
+                window.runner().sync();
+                say("menu " + name);
+                break;
+            }
+            case KEY: key(a.arg(0)); break;
+            case RESIZE: {
+                int w = Integer.parseInt(a.arg(0)), h = Integer.parseInt(a.arg(1));
+                edt(() -> {
+                    window.frame().setSize(w, h);
+                    window.frame().validate();
+                    return null;
+                });
+                Thread.sleep(300);
+                edt(() -> { window.frame().validate(); window.refreshNow(); return null; });
+                window.charts().awaitDrawn();
+                java.awt.Dimension d = edt(() -> window.frame().getSize());
+                say("window " + d.width + "x" + d.height);
+                break;
+            }
+            case CAMERA: {
+                SceneView.Camera c = SceneView.Camera.of(a.arg(0));
+                edt(() -> { window.camera(c); return null; });
+                double[] eye = edt(() -> window.view().eyeWorld());
+                say(String.format(Locale.ROOT, "camera %s: eye at (%.3f, %.3f, %.3f) m", c.id(), eye[0], eye[1], eye[2]));
+                break;
+            }
+            case ASSERT_RUNSTATE: {
+                window.runner().sync();
+                edt(() -> { window.refreshNow(); return null; });
+                String st = edt(window::runStateText);
+                if (!st.contains(a.arg(0))) throw new ScriptFailure("the run state is '" + st + "', expected '" + a.arg(0) + "'", 1);
+                say("run state: " + st);
+                break;
+            }
+            case ASSERT_TIME: {
+                window.runner().sync();
+                SimulationRunner.State s = window.runner().latest();
+                double want = Double.parseDouble(a.arg(0));
+                double dt = s.scenario() != null ? s.scenario().dt() : 1e-3;
+                if (!(Math.abs(s.time() - want) <= dt / 2)) throw new ScriptFailure("the model is at t = " + s.time() + " s, expected " + want, 1);
+                say(String.format(Locale.ROOT, "time: t = %.4f s", s.time()));
+                break;
+            }
+            case ASSERT_CONTACTS: {
+                window.runner().sync();
+                int want = Integer.parseInt(a.arg(0));
+                int have = edt(this::contactsNow);
+                if (have != want) throw new ScriptFailure("the hand has " + have + " contacts, expected " + want, 1);
+                say("contacts: " + have);
+                break;
+            }
             default:
                 throw new AssertionError(a.verb());
         }
@@ -157,6 +261,45 @@ public final class ScriptRunner {
         int[] info = edt(() -> new int[] {window.view().canvas().getWidth(), window.view().canvas().getHeight(), window.triangleCount()});
         say(String.format(Locale.ROOT, "fps %.1f (view %dx%d, %d triangles, %.1f s of continuous rendering)",
             fps, info[0], info[1], info[2], seconds));
+    }
+
+    /** Contacts shown now: the Kinematics preview's if one is shown, else the model's (EDT). */
+    private int contactsNow() {
+        if (window.simulator().previewing()) return window.kinematics().previewContacts();
+        SimulationRunner.State s = window.runner().latest();
+        int n = 0;
+        if (s.snapshot() != null) for (org.handsim.sim.Snapshot.FingerSnapshot f : s.snapshot().fingers()) n += f.contactCount();
+        return n;
+    }
+
+    /**
+     * Types a shortcut key into the window: the frame is brought to the front and focused, the key
+     * pressed and released with {@link Robot} (real input events, through the window's key
+     * handling), and the script waits until the event queue has handled it.
+     */
+    private void key(String name) throws Exception {
+        int code;
+        switch (name) {
+            case "SPACE": code = java.awt.event.KeyEvent.VK_SPACE; break;
+            case "RIGHT": code = java.awt.event.KeyEvent.VK_RIGHT; break;
+            default: code = java.awt.event.KeyEvent.getExtendedKeyCodeForChar(name.charAt(0));
+        }
+        edt(() -> {
+            window.frame().toFront();
+            window.frame().requestFocus();
+            window.view().canvas().requestFocusInWindow();
+            return null;
+        });
+        long until = System.currentTimeMillis() + 3000;
+        while (!edt(() -> window.frame().isFocused()) && System.currentTimeMillis() < until) Thread.sleep(20);
+        if (!edt(() -> window.frame().isFocused())) throw new ScriptFailure("the window did not get the keyboard focus", 1);
+        Robot robot = new Robot();
+        robot.keyPress(code);
+        robot.keyRelease(code);
+        robot.waitForIdle();
+        edt(() -> null);
+        window.runner().sync();
+        say("key " + name);
     }
 
     private void say(String line) {
@@ -207,7 +350,7 @@ public final class ScriptRunner {
                 if (c.isShowing()) break;
             }
         }
-        if (found == null) throw new ScriptFailure("no field '" + name + "'", 1);
+        if (found == null) throw new ScriptFailure("no field '" + name + "' (fields on screen: " + String.join(", ", fieldNames(all)) + ")", 1);
         if (!found.isShowing()) throw new ScriptFailure("the field '" + name + "' is not on screen (open its panel first)", 1);
         if (found instanceof javax.swing.JTextField) {
             javax.swing.JTextField f = (javax.swing.JTextField) found;
@@ -235,6 +378,18 @@ public final class ScriptRunner {
             throw new ScriptFailure("'" + name + "' is a " + found.getClass().getSimpleName() + ", not a field", 1);
         }
         say("set " + name + " = " + value);
+    }
+
+    /** Names of the fields, lists and sliders on screen. */
+    private static List<String> fieldNames(List<Component> all) {
+        List<String> names = new ArrayList<>();
+        for (Component c : all) {
+            if (c.getName() != null && c.isShowing() && (c instanceof JTextComponent || c instanceof JComboBox || c instanceof JSlider)
+                && !names.contains(c.getName())) {
+                names.add(c.getName());
+            }
+        }
+        return names;
     }
 
     private static <T> void collect(Container c, Class<T> type, List<T> out) {
@@ -282,15 +437,24 @@ public final class ScriptRunner {
                 for (String l : edt(() -> window.dynamics().tableLines())) say("dynamics: " + l);
                 break;
             case "events":
-                for (String l : edt(() -> window.dynamics().eventsText()).split("\n")) if (!l.isBlank()) say("event: " + l);
+                for (String l : edt(() -> window.dynamics().eventsText()).split("\\R")) if (!l.isBlank()) say("event: " + l);
                 break;
             case "ik":
                 for (String l : edt(() -> window.kinematics().ikText()).split("\n")) say("ik: " + l);
                 break;
+            case "charts": {
+                window.charts().awaitDrawn();
+                double[] r = window.charts().timeRange();
+                StringBuilder shown = new StringBuilder();
+                for (int k = 1; k <= 3; k++) if (window.charts().fingerVisible(k)) shown.append(shown.length() == 0 ? "" : ",").append(k);
+                say(String.format(Locale.ROOT, "charts: time axis %s..%s s, %d points, fingers shown %s", Widgets.fmt(r[0], 3),
+                    Widgets.fmt(r[1], 3), window.charts().points(), shown.length() == 0 ? "none" : shown));
+                break;
+            }
             default: {
                 SimulationRunner.State s = window.runner().latest();
                 StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "state: t = %.4f s, %s", s.time(),
-                    s.error() != null ? "stopped: " + s.error() : s.playing() ? "playing" : s.finished() ? "at the end" : "paused"));
+                    s.error() != null ? "stopped: " + s.error() : HandSimWindow.runState(s)));
                 if (s.snapshot() != null) {
                     for (int k = 1; k <= 3; k++) sb.append(", finger ").append(k).append(' ').append(s.clutch(k));
                 }
@@ -321,22 +485,11 @@ public final class ScriptRunner {
             Thread.sleep(20);
         }
         Thread.sleep(150);
-        AtomicReference<Rectangle> bounds = new AtomicReference<>();
-        List<Rectangle> regions = edt(() -> {
-            Point p = window.frame().getLocationOnScreen();
-            bounds.set(new Rectangle(p.x, p.y, window.frame().getWidth(), window.frame().getHeight()));
-            return window.regions();
-        });
-        BufferedImage img = new Robot().createScreenCapture(bounds.get());
-        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-        ImageIO.write(img, "png", bytes);
-        if (file.getParent() != null) Files.createDirectories(file.getParent());
-        try (AtomicFile af = new AtomicFile(file)) {
-            bytes.writeTo(af.stream());
-            af.commit();
-        }
-        say(String.format(Locale.ROOT, "screenshot %s %dx%d view=%s charts=%s", file, img.getWidth(), img.getHeight(),
-            rect(regions.get(0)), rect(regions.get(1))));
+        List<Rectangle> regions = edt(window::regions);
+        BufferedImage img = window.capture();
+        HandSimWindow.writePng(img, file);
+        say(String.format(Locale.ROOT, "screenshot %s %dx%d view=%s charts=%s status=%s", file, img.getWidth(), img.getHeight(),
+            rect(regions.get(0)), rect(regions.get(1)), rect(regions.get(2))));
     }
 
     private static String rect(Rectangle r) {

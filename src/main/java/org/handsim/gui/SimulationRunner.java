@@ -46,6 +46,14 @@ public final class SimulationRunner implements AutoCloseable {
     /** Doubles per trace row. */
     public static final int ROW_LENGTH = 2 + 3 * 7;
     static final long BATCH_BUDGET_NS = 12_000_000L;
+    /**
+     * Most steps a model is recorded for (the trace the File menu exports; about 300 bytes a
+     * step): longer runs are simulated without a trace — {@code handsim run} writes theirs.
+     */
+    public static final long RECORD_LIMIT = 2_000_000L;
+
+    /** Why a generation began. */
+    public enum Origin { LOADED, RESET }
 
     /**
      * One published state.
@@ -59,9 +67,14 @@ public final class SimulationRunner implements AutoCloseable {
      * @param finished      true when the scenario's duration is reached
      * @param error         the message that stopped the run, or null
      * @param note          a remark about the model (e.g. the object is not simulated), or null
+     * @param warnings      what to know before trusting the run ({@code HandModel#startWarnings}: a
+     *                      finger that starts inside the object), empty if nothing
+     * @param origin        whether this generation was loaded or reset
+     * @param recording     whether the model keeps a trace to export ({@link #RECORD_LIMIT})
      */
     public record State(long generation, long publication, Scenario scenario, Snapshot snapshot, double[] breakaway,
-                        boolean playing, boolean finished, String error, String note) {
+                        boolean playing, boolean finished, String error, String note, java.util.List<String> warnings,
+                        Origin origin, boolean recording) {
         /** Simulated time, s. */
         public double time() { return snapshot == null ? 0 : snapshot.time(); }
 
@@ -97,17 +110,22 @@ public final class SimulationRunner implements AutoCloseable {
     private double anchorSim;
     private long anchorWall;
     private String error, note;
+    private java.util.List<String> warnings = java.util.List.of();
+    private Origin origin = Origin.LOADED;
     private double nextTraceTime;
 
-    /** A runner building models with {@link Simulation#model}. */
+    /**
+     * A runner building models with {@link Simulation#model}, recording their trace (for the
+     * export) up to {@link #RECORD_LIMIT} steps.
+     */
     public SimulationRunner() {
-        this(s -> Simulation.model(s, false));
+        this(s -> Simulation.model(s, Math.ceil(s.duration() / s.dt()) <= RECORD_LIMIT));
     }
 
     /** A runner building models with the given factory (tests may supply their own). */
     public SimulationRunner(Function<Scenario, HandModel> factory) {
         this.factory = factory;
-        this.latest = new State(0, 0, null, null, nanArray(), false, false, null, null);
+        this.latest = new State(0, 0, null, null, nanArray(), false, false, null, null, java.util.List.of(), Origin.LOADED, false);
         this.thread = new Thread(this::loop, "handsim-simulation");
         this.thread.setDaemon(true);
         this.thread.start();
@@ -141,6 +159,7 @@ public final class SimulationRunner implements AutoCloseable {
             error = null;
             if (model != null) {
                 model.initialise();
+                origin = Origin.RESET;
                 generation++;
                 nextTraceTime = 0;
                 traceRow();
@@ -175,6 +194,29 @@ public final class SimulationRunner implements AutoCloseable {
         int n = 0;
         for (Event e; (e = events.poll()) != null; n++) sink.accept(e);
         return n;
+    }
+
+    /**
+     * Writes the current model's trace — every step simulated so far, in the trace.csv contract
+     * of {@code handsim run} (the same writer, {@code sim.Recorder}) — on the simulation thread,
+     * between steps. The future completes with the number of rows, or exceptionally (no model,
+     * not recorded, an I/O error).
+     */
+    public java.util.concurrent.CompletableFuture<Integer> exportTrace(java.nio.file.Path file) {
+        java.util.concurrent.CompletableFuture<Integer> done = new java.util.concurrent.CompletableFuture<>();
+        commands.add(() -> {
+            try {
+                if (model == null) throw new IllegalStateException("no model to export");
+                if (model.recorder() == null) {
+                    throw new IllegalStateException("this run is not recorded (more than " + RECORD_LIMIT + " steps): use handsim run on the saved scenario");
+                }
+                model.recorder().writeCsv(file);
+                done.complete(model.recorder().rows());
+            } catch (java.io.IOException | RuntimeException e) {
+                done.completeExceptionally(e);
+            }
+        });
+        return done;
     }
 
     /** Blocks until every command queued before this call has run. */
@@ -227,6 +269,8 @@ public final class SimulationRunner implements AutoCloseable {
                 error = "cannot build the model: " + e.getMessage();
             }
         }
+        origin = Origin.LOADED;
+        warnings = model != null ? model.startWarnings() : java.util.List.of();
         generation++;
         nextTraceTime = 0;
         if (model != null) {
@@ -277,7 +321,10 @@ public final class SimulationRunner implements AutoCloseable {
             for (int k = 1; k <= 3; k++) {
                 ClutchState c = model.state(k);
                 if (c != lastClutch[k - 1]) {
-                    events.add(new Event(generation, model.time(), k, lastClutch[k - 1], c));
+                    // the breakaway is located inside the step (HandModel): give its time, not the step's end
+                    double at = c == ClutchState.BROKEN && lastClutch[k - 1] == ClutchState.BLOCKED && !Double.isNaN(model.breakawayTime(k))
+                        ? model.breakawayTime(k) : model.time();
+                    events.add(new Event(generation, at, k, lastClutch[k - 1], c));
                     lastClutch[k - 1] = c;
                 }
             }
@@ -320,7 +367,8 @@ public final class SimulationRunner implements AutoCloseable {
             for (int k = 1; k <= 3; k++) br[k - 1] = model.breakawayTime(k);
             finished = !model.running();
         }
-        latest = new State(generation, publication, scenario, snap, br, playing, finished, error, note);
+        latest = new State(generation, publication, scenario, snap, br, playing, finished, error, note, warnings, origin,
+            model != null && model.recorder() != null);
     }
 
     private static double[] nanArray() {

@@ -1,9 +1,12 @@
 /**
  * The desktop program (paper Section V, Fig. 5): a Swing window with the paper's Kinematics,
  * Path Planning, Dynamics and Objects buttons, a Java3D view of the hand, the object and the
- * contacts, live JFreeChart traces, Play / Pause / Step / Reset, and a scripted mode for tests
- * and documentation ({@link org.handsim.gui.Script}). Uses {@code sim} (and the kinematics it
- * is built on) and JFreeChart; nothing outside {@code gui} and {@code cli} uses this package.
+ * contacts, live JFreeChart traces, Play / Pause / Step / Reset, menus and shortcuts, and a
+ * scripted mode for tests and documentation ({@link org.handsim.gui.Script}). The simulator
+ * itself — view and model — is one embeddable component, {@link org.handsim.gui.HandSimPanel};
+ * {@link org.handsim.gui.HandSimWindow} is built around it. Uses {@code sim} (and the
+ * kinematics it is built on), {@code chart} (exports) and JFreeChart; nothing outside
+ * {@code gui} and {@code cli} uses this package (the README's embedding example aside).
  *
  * <h2>Thread rules</h2>
  * <ol>

@@ -35,6 +35,7 @@ public final class HandDescription {
     private final int fingerCountsMax, spreadCountsMax;
     private final double[] theta2Limits, theta3Limits, spreadLimits;
     private final double tauBreak, kClutch;
+    private final double fingerRatingN;
 
     /** Reads and validates {@code root}; a {@link Json.JsonException} thrown here becomes a {@link HandDescriptionException} in {@link #parse}. */
     private HandDescription(JsonObject root) {
@@ -98,6 +99,8 @@ public final class HandDescription {
         JsonObject clutch = root.object("clutch");
         tauBreak = clutch.positive("tau_break_Nm");
         kClutch = clutch.positive("k_clutch_Nm_per_rad");
+        JsonObject hold = root.object("hold");
+        fingerRatingN = hold.positive("finger_rating_kg") * hold.positive("g_m_s2");
     }
 
     /** The BarrettHand BH8-262 from the bundled resource (loaded once, shared). */
@@ -189,6 +192,23 @@ public final class HandDescription {
     public double tauBreak() { return tauBreak; }
     /** Clutch (Belleville spring) stiffness k_clutch in N·m/rad (DESIGN.md decision 1). */
     public double kClutch() { return kClutch; }
+    /** Barrett's rated load of one finger at its tip, newtons (2 kg × g; the hand file's {@code hold}). */
+    public double fingerRatingN() { return fingerRatingN; }
+    /** The hand's rated load, the three fingers' ratings, newtons: the largest hold HandSim reports. */
+    public double handRatingN() { return 3 * fingerRatingN; }
+    /**
+     * The torque the finger rating puts on joint j (1 spread, 2 inner, 3 outer) of the
+     * stretched finger — the rating times the joint's lever to the fingertip (A1 + A2 + A3,
+     * A2 + A3, A3), N·m: the limit of a joint held by its worm drive (DESIGN.md decision 6).
+     */
+    public double ratedJointTorque(int joint) {
+        switch (joint) {
+            case 1: return fingerRatingN * (a1 + a2 + a3);
+            case 2: return fingerRatingN * (a2 + a3);
+            case 3: return fingerRatingN * a3;
+            default: throw new IllegalArgumentException("joint must be 1, 2 or 3, got " + joint);
+        }
+    }
 
     @Override
     public String toString() {

@@ -76,6 +76,38 @@ public final class RigidTransform {
     }
 
     /**
+     * The rotation as an axis-angle vector (direction = unit axis, length = angle in [0, π]
+     * radians): the inverse of the rotation of {@link #fromPose}, so
+     * {@code fromPose(t, rotationVector())} rebuilds R to rounding. The angle is
+     * atan2(|v|, tr R − 1) with v = (r21 − r12, r02 − r20, r10 − r01) = 2 sin θ·u; near θ = π,
+     * where v vanishes, the axis comes from the symmetric part (R + Rᵀ)/2 − cos θ·I
+     * = (1 − cos θ)·u uᵀ (its largest column), signed to agree with v (Murray, Li, Sastry,
+     * <i>A Mathematical Introduction to Robotic Manipulation</i>, §2.2.3).
+     */
+    public double[] rotationVector() {
+        double vx = m[9] - m[6], vy = m[2] - m[8], vz = m[4] - m[1];
+        double s2 = Math.sqrt(vx * vx + vy * vy + vz * vz);          // 2 sin θ
+        double c2 = m[0] + m[5] + m[10] - 1;                          // 2 cos θ
+        double angle = Math.atan2(s2, c2);
+        if (angle < 1e-300) return new double[3];
+        double ux, uy, uz;
+        if (c2 > -1.0) {                                              // θ < 120°: v is well conditioned
+            ux = vx / s2; uy = vy / s2; uz = vz / s2;
+        } else {
+            double c = 0.5 * c2;
+            double b00 = m[0] - c, b11 = m[5] - c, b22 = m[10] - c;
+            double b01 = 0.5 * (m[1] + m[4]), b02 = 0.5 * (m[2] + m[8]), b12 = 0.5 * (m[6] + m[9]);
+            if (b00 >= b11 && b00 >= b22) { ux = b00; uy = b01; uz = b02; }
+            else if (b11 >= b22) { ux = b01; uy = b11; uz = b12; }
+            else { ux = b02; uy = b12; uz = b22; }
+            double l = Math.sqrt(ux * ux + uy * uy + uz * uz);
+            ux /= l; uy /= l; uz /= l;
+            if (ux * vx + uy * vy + uz * vz < 0) { ux = -ux; uy = -uy; uz = -uz; }
+        }
+        return new double[] {ux * angle, uy * angle, uz * angle};
+    }
+
+    /**
      * The standard Denavit–Hartenberg transform {@code Rz(θ)·Tz(d)·Tx(a)·Rx(α)}
      * (paper Table I; Fu–Gonzalez–Lee eq. 2.2-29). Angles in radians, lengths in metres.
      */

@@ -2,6 +2,7 @@ package org.handsim.mesh;
 
 import java.io.IOException;
 import java.io.Writer;
+import org.handsim.util.Decimal;
 
 /**
  * Writes triangle meshes as Wavefront OBJ text: one {@code o name} per mesh, {@code v x y z} per
@@ -20,7 +21,7 @@ public final class ObjWriter {
             sb.append("o ").append(m.name().replaceAll("\\s+", "_")).append('\n');
             double[] v = m.vertices();
             for (int i = 0; i < v.length; i += 3) {
-                sb.append("v ").append(v[i]).append(' ').append(v[i + 1]).append(' ').append(v[i + 2]).append('\n');
+                Decimal.append(Decimal.append(Decimal.append(sb.append("v "), v[i]).append(' '), v[i + 1]).append(' '), v[i + 2]).append('\n');
                 if (sb.length() > 60_000) { out.write(sb.toString()); sb.setLength(0); }
             }
             int[] t = m.triangles();

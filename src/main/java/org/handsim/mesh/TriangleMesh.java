@@ -144,6 +144,45 @@ public final class TriangleMesh {
     }
 
     /**
+     * The centroid of the solid the mesh bounds (metres, the mesh's frame): Σ over triangles of
+     * the signed tetrahedra (0, a, b, c), each at (a + b + c)/4 weighted by its signed volume,
+     * divided by {@link #signedVolume()} (the divergence theorem; it needs the surface to close,
+     * not the vertices to be welded). When the enclosed volume is negligible (an open patch, a
+     * flat part: |V| ≤ 1e-9 · diagonal³) it is the area-weighted centroid of the surface
+     * instead; for an empty mesh, the origin. The torque origin of grasp analysis (GraspIt!'s
+     * centre of gravity for a uniform object).
+     */
+    public double[] centroid() {
+        double[] v = vertices;
+        double vol = 0, cx = 0, cy = 0, cz = 0;
+        for (int t = 0; t < triangles.length; t += 3) {
+            int a = 3 * triangles[t], b = 3 * triangles[t + 1], c = 3 * triangles[t + 2];
+            double d = v[a] * (v[b + 1] * v[c + 2] - v[b + 2] * v[c + 1])
+                - v[a + 1] * (v[b] * v[c + 2] - v[b + 2] * v[c])
+                + v[a + 2] * (v[b] * v[c + 1] - v[b + 1] * v[c]);
+            vol += d;
+            cx += d * (v[a] + v[b] + v[c]);
+            cy += d * (v[a + 1] + v[b + 1] + v[c + 1]);
+            cz += d * (v[a + 2] + v[b + 2] + v[c + 2]);
+        }
+        double diag = diagonal();
+        if (Math.abs(vol / 6) > 1e-9 * diag * diag * diag) {
+            return new double[] {cx / (4 * vol), cy / (4 * vol), cz / (4 * vol)};
+        }
+        double area = 0;
+        cx = cy = cz = 0;
+        for (int t = 0; t < triangles.length; t += 3) {
+            int a = 3 * triangles[t], b = 3 * triangles[t + 1], c = 3 * triangles[t + 2];
+            double w = areas[t / 3];
+            area += w;
+            cx += w * (v[a] + v[b] + v[c]) / 3;
+            cy += w * (v[a + 1] + v[b + 1] + v[c + 1]) / 3;
+            cz += w * (v[a + 2] + v[b + 2] + v[c + 2]) / 3;
+        }
+        return area > 0 ? new double[] {cx / area, cy / area, cz / area} : new double[3];
+    }
+
+    /**
      * A mesh is closed when every undirected edge is used by exactly two triangles, once in
      * each direction (an oriented 2-manifold without boundary). Vertices are compared by index,
      * so a mesh must share its vertices (welded) to be closed.

@@ -5,8 +5,9 @@ import java.util.Arrays;
 /**
  * The point contacts of one finger with the object in one step, on primitive arrays, in the
  * world frame: centre p (m), unit normal n of the object surface pointing out of the object,
- * patch area (m²), the link (1..3) it is on, and, once solved, the force magnitude f (N) the
- * finger applies along −n and whether f was undetermined (DESIGN.md decisions 2, 3).
+ * patch area (m²), the link (1..3) it is on, and, once solved, the force the finger applies to
+ * the object — its vector (N, world; along −n without friction, inside the friction cone about
+ * −n with it) and magnitude — and whether it was undetermined (DESIGN.md decisions 2, 3, 5).
  * Reused from step to step: {@link #clear()} keeps capacity.
  */
 public final class ContactSet {
@@ -17,6 +18,7 @@ public final class ContactSet {
     double[] areas = new double[8];
     int[] links = new int[8];
     double[] forces = new double[8];
+    double[] forceVectors = new double[24];
     boolean[] undetermined = new boolean[8];
 
     public void clear() { n = 0; }
@@ -31,6 +33,7 @@ public final class ContactSet {
             areas = Arrays.copyOf(areas, c);
             links = Arrays.copyOf(links, c);
             forces = Arrays.copyOf(forces, c);
+            forceVectors = Arrays.copyOf(forceVectors, 3 * c);
             undetermined = Arrays.copyOf(undetermined, c);
         }
         points[3 * n] = px; points[3 * n + 1] = py; points[3 * n + 2] = pz;
@@ -39,6 +42,7 @@ public final class ContactSet {
         areas[n] = area;
         links[n] = link;
         forces[n] = 0;
+        forceVectors[3 * n] = 0; forceVectors[3 * n + 1] = 0; forceVectors[3 * n + 2] = 0;
         undetermined[n] = false;
         return n++;
     }
@@ -53,7 +57,10 @@ public final class ContactSet {
 
     public int size() { return n; }
     public int link(int i) { return links[i]; }
+    /** Magnitude of contact i's force, N. */
     public double force(int i) { return forces[i]; }
+    /** The force contact i's finger applies to the object, world frame, N (a new array). */
+    public double[] forceVector(int i) { return new double[] {forceVectors[3 * i], forceVectors[3 * i + 1], forceVectors[3 * i + 2]}; }
     public boolean undetermined(int i) { return undetermined[i]; }
     public double area(int i) { return areas[i]; }
     /** Contact point i, world frame (a new array). */

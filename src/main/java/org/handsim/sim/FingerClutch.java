@@ -47,6 +47,15 @@ public final class FingerClutch {
 
     public ClutchState state() { return state; }
 
+    /**
+     * Whether the clutch still couples the inner link to the motor: FREE, BLOCKED, and STALLED
+     * when the finger stalled before any breakaway; false in BROKEN and in STALLED after it.
+     */
+    public boolean engaged() {
+        return state == ClutchState.FREE || state == ClutchState.BLOCKED
+            || (state == ClutchState.STALLED && beforeStall != ClutchState.BROKEN);
+    }
+
     /** The motor's actual position (counts): the set-point, except while STALLED when closing. */
     public double motor() { return motor; }
 

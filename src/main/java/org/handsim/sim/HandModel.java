@@ -1,11 +1,13 @@
 package org.handsim.sim;
 
 import org.handsim.contact.ContactForces;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.trajectory.Trajectory;
+import org.handsim.util.StepClock;
 
 /**
  * The HandSim model, Easy-Java-Simulations style: read it top to bottom.
@@ -54,6 +56,7 @@ public final class HandModel {
     private final double[][] gravityK0 = new double[3][3];
     private final double[][] worldFromK0 = new double[3][12];
     private final double dt;
+    private final StepClock clock;                  // t = step × dt in decimal (8.947, not 8.947000000000001)
     private final long totalSteps;
     private final double reach2, reach3;           // metres: how far links 2-3 reach beyond joints k2, k3
     private final Recorder recorder;                // null: not recording
@@ -81,13 +84,21 @@ public final class HandModel {
     private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3], contactQ = new double[3];
     private final double[] maxForce = new double[3];
     private final long[] counters = new long[Counter.values().length];
+    private final int[] contactsAtStart = new int[3];
 
     // scratch (no allocation in the step)
-    private final ContactForces solver = new ContactForces();
+    private final ContactForces[] solvers = {new ContactForces(), new ContactForces(), new ContactForces()};   // per finger (warm starts)
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
     private boolean lazy = true;
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
+    private final double mu;                         // Coulomb coefficient of the contacts (0: the frictionless solve)
+    private final int coneEdges;
+    private final double[][] cones = {new double[0], new double[0], new double[0]};      // per finger: cone edges, 3·m per contact
+    private final double[][] conesFor = {new double[0], new double[0], new double[0]};   // per finger: the push directions they were made for
+    private final int[] conesCount = new int[3];
+    private final double[][] forceKey = {new double[0], new double[0], new double[0]};   // per finger: the last force solve's inputs
+    private final int[] forceKeyLength = new int[3];
 
     /** Work counters, for the savings table (issue 8). */
     public enum Counter {
@@ -102,12 +113,22 @@ public final class HandModel {
      * @param record         whether to keep a trace (one row per step)
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, boolean record) {
+        this(scenario, objectContacts, dynamics, record ? new Recorder() : null);
+    }
+
+    /**
+     * @param recorder where the trace goes (e.g. {@link Recorder#bounded}), or null for none
+     */
+    public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
         this.scenario = scenario;
         this.objectContacts = objectContacts;
         this.dynamics = dynamics;
         this.dt = scenario.dt();
-        this.totalSteps = Math.round(Math.ceil(scenario.duration() / dt - 1e-9));
-        this.recorder = record ? new Recorder() : null;
+        this.clock = new StepClock(dt);
+        this.mu = scenario.friction();
+        this.coneEdges = scenario.coneEdges();
+        this.totalSteps = totalSteps(scenario);
+        this.recorder = recorder;
         this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
         this.reach3 = hand.a3() + LINK_MARGIN_M;
         double[] g = scenario.gravity();
@@ -120,6 +141,11 @@ public final class HandModel {
             base.inverse().rotate(g, gravityK0[k - 1]);
         }
         initialise();
+    }
+
+    /** Steps a scenario runs: its duration over its time step, rounded up. */
+    public static long totalSteps(Scenario scenario) {
+        return Math.round(Math.ceil(scenario.duration() / scenario.dt() - 1e-9));
     }
 
     // ------------------------------------------------------------------ initialisation
@@ -146,6 +172,7 @@ public final class HandModel {
             contacts[i].clear();
             java.util.Arrays.fill(dynAt[i], Double.NaN);
             java.util.Arrays.fill(lastInput[i], Double.NaN);
+            forceKeyLength[i] = 0;
             breakTime[i] = Double.NaN;
             breakTorque[i] = Double.NaN;
             breakForce[i] = Double.NaN;
@@ -153,6 +180,7 @@ public final class HandModel {
             contactQ[i] = Double.NaN;
             maxForce[i] = 0;
             updateFinger(k, false);
+            contactsAtStart[i] = contacts[i].size();
         }
         record();
     }
@@ -161,7 +189,7 @@ public final class HandModel {
     /** Advances one step of dt seconds. */
     public void step() {
         step++;
-        t = step * dt;
+        t = clock.at(step);
         counters[Counter.STEPS.ordinal()]++;
         sampleSpread(t);
         for (int k = 1; k <= 3; k++) {
@@ -401,8 +429,9 @@ public final class HandModel {
 
     /**
      * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
-     * the contact forces that carry the transmitted part (eq 11 as non-negative least squares
-     * over the flexion joints k2, k3).
+     * the contact forces that carry the transmitted part over the flexion joints k2, k3: eq (11)
+     * as non-negative least squares without friction, the least-norm forces in the friction
+     * cones with it ({@link ContactForces#solveWithFriction}, DESIGN.md).
      */
     private void torquesAndForces(int k) {
         int i = k - 1;
@@ -429,13 +458,69 @@ public final class HandModel {
         tau[i][2] = tauDyn[i][2] + transmitted[1];
         ContactSet cs = contacts[i];
         int n = cs.size();
+        ContactForces solver = solvers[i];
         if (n > 0) {
-            solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            // the same inputs as finger k's last solve (a held link, the same transmitted torque):
+            // its solver still holds the answer
+            if (!(lazy && sameForceInputs(i, cs))) {
+                if (mu == 0) {
+                    solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+                } else {
+                    solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
+                }
+            }
             for (int c = 0; c < n; c++) {
                 cs.forces[c] = solver.force(c);
+                solver.forceVector(c, cs.forceVectors, 3 * c);
                 cs.undetermined[c] = solver.undetermined(c);
             }
         }
+    }
+
+    /**
+     * True when the contact-force solve of finger i would get what its last one got — the
+     * torques on k2, k3, the frames of joints 1–3 and every contact's link, point and push
+     * direction — and records them otherwise (for the next call). No allocation once the key
+     * array has grown to the contact count.
+     */
+    private boolean sameForceInputs(int i, ContactSet cs) {
+        int n = cs.size(), len = 3 + 36 + 7 * n;
+        double[] key = forceKey[i];
+        if (key.length < len) key = forceKey[i] = java.util.Arrays.copyOf(key, Math.max(len, 2 * key.length));
+        boolean same = forceKeyLength[i] == len;
+        int o = 0;
+        for (int j = 0; j < 3; j++, o++) { same &= key[o] == tauContact[j]; key[o] = tauContact[j]; }
+        double[] f = framesWorld[i];
+        for (int j = 0; j < 36; j++, o++) { same &= key[o] == f[j]; key[o] = f[j]; }
+        for (int c = 0; c < n; c++) {
+            same &= key[o] == cs.links[c]; key[o++] = cs.links[c];
+            for (int a = 0; a < 3; a++, o++) { same &= key[o] == cs.points[3 * c + a]; key[o] = cs.points[3 * c + a]; }
+            for (int a = 0; a < 3; a++, o++) { same &= key[o] == cs.pushDirs[3 * c + a]; key[o] = cs.pushDirs[3 * c + a]; }
+        }
+        forceKeyLength[i] = len;
+        return same;
+    }
+
+    /**
+     * The friction-cone edges of finger i's contacts ({@link FrictionCone}), made again only
+     * when the contacts' push directions changed (held links keep theirs for many steps).
+     */
+    private double[] conesOf(int i, ContactSet cs) {
+        int n = cs.size(), m = coneEdges;
+        boolean same = conesCount[i] == n;
+        for (int c = 0; c < 3 * n && same; c++) same = conesFor[i][c] == cs.pushDirs[c];
+        if (same) return cones[i];
+        if (cones[i].length < 3 * m * n) {
+            int cap = Math.max(n, 2 * cones[i].length / (3 * m));
+            cones[i] = new double[3 * m * cap];
+            conesFor[i] = new double[3 * cap];
+        }
+        for (int c = 0; c < n; c++) {
+            FrictionCone.edges(cs.pushDirs[3 * c], cs.pushDirs[3 * c + 1], cs.pushDirs[3 * c + 2], mu, m, cones[i], 3 * m * c);
+        }
+        System.arraycopy(cs.pushDirs, 0, conesFor[i], 0, 3 * n);
+        conesCount[i] = n;
+        return cones[i];
     }
 
     /**
@@ -451,7 +536,7 @@ public final class HandModel {
         double tauK2 = 0, forceInner = 0;
         for (int j = 0; j < cs.size(); j++) {
             if (cs.links[j] != 2) continue;
-            tauK2 += solver.arm(j, 1) * cs.forces[j];
+            tauK2 += solvers[i].jointTorque(j, 1);
             forceInner += cs.forces[j];
         }
         double qm = c.motor();
@@ -519,6 +604,24 @@ public final class HandModel {
     /** Whether work saving is on ({@link #lazy(boolean)}). */
     public boolean isLazy() { return lazy; }
 
+    /**
+     * What the user should know before trusting the run, one sentence each (shown by
+     * {@code handsim run} on standard error and in summary.json, and by the window): a finger
+     * whose links are already in the object at t = 0 (a misplaced object) gets contact forces
+     * from the first step on, as if it had closed onto it there.
+     */
+    public java.util.List<String> startWarnings() {
+        java.util.List<String> w = new java.util.ArrayList<>();
+        for (int k = 1; k <= 3; k++) {
+            int n = contactsAtStart[k - 1];
+            if (n > 0) {
+                w.add(String.format(java.util.Locale.ROOT, "finger %d starts in contact with the object (%d contact%s at t = 0): its links begin inside it;"
+                    + " check the object's pose", k, n, n == 1 ? "" : "s"));
+            }
+        }
+        return w;
+    }
+
     // ------------------------------------------------------------------ read-out
     public Scenario scenario() { return scenario; }
     public double time() { return t; }
@@ -526,6 +629,10 @@ public final class HandModel {
     public long totalSteps() { return totalSteps; }
     public Recorder recorder() { return recorder; }
     public ClutchState state(int k) { return clutch[k - 1].state(); }
+    /** Whether finger k's clutch still couples its inner link to the motor ({@link FingerClutch#engaged()}). */
+    public boolean clutchEngaged(int k) { return clutch[k - 1].engaged(); }
+    /** The hand's description (the BarrettHand). */
+    public HandDescription hand() { return hand; }
     /** Joint angles of finger k (a new array, radians). */
     public double[] joints(int k) { return q[k - 1].clone(); }
     /** Joint velocities of finger k (a new array, rad/s). */
@@ -559,6 +666,15 @@ public final class HandModel {
      */
     public java.util.Map<String, Long> collisionCounters() {
         return objectContacts == null ? java.util.Map.of() : objectContacts.counters();
+    }
+
+    /**
+     * The object's centroid in the world and its characteristic length R, {cx, cy, cz, R} in
+     * metres (a new array; {@link LinkContacts#centroidAndRadius()}), or null when the scene has
+     * no object geometry.
+     */
+    public double[] objectCentroidAndRadius() {
+        return objectContacts == null ? null : objectContacts.centroidAndRadius();
     }
 
     /** Work counters since {@link #initialise()}. */

@@ -1,5 +1,6 @@
 package org.handsim.sim;
 
+import org.handsim.util.Decimal;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -39,7 +40,7 @@ public final class RunSummary {
             f.put("breakaway_force_N", orNull(m.breakawayForce(k)));
             f.put("contact_counts", orNull(m.contactCounts(k)));
             f.put("breakaway_counts", orNull(m.breakawayCounts(k)));
-            f.put("final_joints_rad", m.joints(k));
+            f.put("final_joints_rad", Decimal.clean(m.joints(k)));   // README: |x| < 1e-12 written as 0
             f.put("max_contact_force_N", m.maxContactForce(k));
             fingers.add(f);
         }

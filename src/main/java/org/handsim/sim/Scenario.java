@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.trajectory.CartesianLine;
@@ -20,7 +21,7 @@ import org.handsim.util.JsonObject;
  * A simulation scenario read from JSON: where the hand and the object are, what the four
  * motors do, the step and the duration, and what to write. A bad file is a
  * {@link ScenarioException} naming the file and the field path, e.g.
- * {@code paper.json: field motors.M3[0].v_max: must be > 0, got -1.0}.
+ * {@code paper.json: field motors.M3[0].v_max: must be > 0, got -1}.
  *
  * <h2>File format</h2>
  * <pre>{@code
@@ -31,8 +32,10 @@ import org.handsim.util.JsonObject;
  *   "hand": { "position_m": [0,0,0], "rotation_rad": [0,0,0] },   // world <- palm (axis-angle)
  *   "gravity_m_s2": [-9.81, 0, 0],            // world frame
  *   "object": {                                // optional
- *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file
- *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24 },
+ *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file; .wrl, .obj or .stl
+ *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24,
+ *     "units": "m",                            // the file's unit: mm, cm or m (default m)
+ *     "friction": 0.5 },                       // Coulomb μ of the contacts, ≥ 0 (default 0.5)
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
  *     "M3": [ {"type": "trapezoid", "to": 17500, "v_max": 5000, "a_max": 25000},
@@ -44,6 +47,12 @@ import org.handsim.util.JsonObject;
  * }
  * }</pre>
  * Motors M1–M3 drive fingers 1–3 (counts in [0, 17 500]); M4 is the spread (counts in [0, 3 150]).
+ *
+ * <p><b>Friction.</b> {@code object.friction} is the Coulomb coefficient μ of every contact
+ * with the object (default {@link FrictionCone#DEFAULT_MU} = 0.5; 0 is frictionless, as in the
+ * paper's model). The contact forces of the simulation and the grasp analysis use it with the
+ * friction cone linearised with {@link #coneEdges()} edges ({@link FrictionCone}, DESIGN.md
+ * decision 5); commands override both ({@code --friction}, {@code --edges}).
  */
 public final class Scenario implements Cloneable {
     /** The object's {@code divisions} when the file does not give it. */
@@ -53,16 +62,118 @@ public final class Scenario implements Cloneable {
     private String name, description;
     private Path file;
     private RigidTransform worldFromPalm;
+    private double[] handPose = new double[6];   // position_m, rotation_rad as written
     private double[] gravity;
     private ObjectPlacement object;
     private double[] startCounts = new double[4];
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
     private boolean writeTrace, writeCharts, computeTorques;
+    private int coneEdges = FrictionCone.DEFAULT_EDGES;
+    private double defaultFriction = FrictionCone.DEFAULT_MU;   // μ when there is no object
     private JsonObject root;
 
-    /** Where the object is and how it is tessellated. */
-    public record ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions) {}
+    /**
+     * The unit of an object file's coordinates (scenario field {@code object.units}: {@code mm},
+     * {@code cm} or {@code m}, default {@code m}). GraspIt!'s models, and most CAD exports, are in
+     * millimetres.
+     */
+    public enum Units {
+        MM(0.001), CM(0.01), M(1.0);
+
+        private final double metres;
+
+        Units(double metres) { this.metres = metres; }
+
+        /** Metres per file unit. */
+        public double metres() { return metres; }
+
+        /** The name in scenario files: mm, cm, m. */
+        public String id() { return name().toLowerCase(java.util.Locale.ROOT); }
+
+        /** The unit named {@code mm}, {@code cm} or {@code m}; null for anything else. */
+        public static Units of(String id) {
+            for (Units u : values()) if (u.id().equals(id)) return u;
+            return null;
+        }
+    }
+
+    /**
+     * Where the object is, how it is tessellated and its Coulomb friction coefficient μ with the
+     * fingers (≥ 0).
+     *
+     * @param file            the object's file (VRML97, OBJ or STL: {@link MeshFiles})
+     * @param worldFromObject world ← object
+     * @param scale           uniform scale in the object's frame, after the units
+     * @param divisions       segments round VRML primitives
+     * @param units           the file's unit of length
+     * @param pose            the pose as written ({@code position_m} then {@code rotation_rad}, 6
+     *                        numbers; {@code worldFromObject} is built from them), or null when
+     *                        the placement was made from a transform
+     * @param friction        Coulomb μ ≥ 0 of the contacts ({@link FrictionCone#DEFAULT_MU} by default)
+     */
+    public record ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions, Units units, double[] pose,
+                                  double friction) {
+        public ObjectPlacement {
+            if (pose != null && pose.length != 6) throw new IllegalArgumentException("pose needs 6 numbers, got " + pose.length);
+            if (units == null) units = Units.M;
+            FrictionCone.checkMu(friction);
+        }
+
+        /** A placement in metres from a transform, with the default friction. */
+        public ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions) {
+            this(file, worldFromObject, scale, divisions, Units.M, null, FrictionCone.DEFAULT_MU);
+        }
+
+        /** A placement in metres from a transform with friction μ. */
+        public ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions, double friction) {
+            this(file, worldFromObject, scale, divisions, Units.M, null, friction);
+        }
+
+        /** A placement with the default friction. */
+        public ObjectPlacement(Path file, RigidTransform worldFromObject, double scale, int divisions, Units units, double[] pose) {
+            this(file, worldFromObject, scale, divisions, units, pose, FrictionCone.DEFAULT_MU);
+        }
+
+        /** A copy with another friction coefficient μ ≥ 0. */
+        public ObjectPlacement withFriction(double mu) {
+            return new ObjectPlacement(file, worldFromObject, scale, divisions, units, pose, mu);
+        }
+
+        /**
+         * A placement from a position (m) and an axis-angle rotation vector (rad), as a scenario
+         * file writes it ({@link RigidTransform#fromPose}); saved back as exactly these numbers.
+         */
+        public static ObjectPlacement of(Path file, double[] position, double[] rotationRad, double scale, int divisions, Units units) {
+            RigidTransform t = RigidTransform.fromPose(position[0], position[1], position[2], rotationRad[0], rotationRad[1], rotationRad[2]);
+            double[] p = {position[0], position[1], position[2], rotationRad[0], rotationRad[1], rotationRad[2]};
+            return new ObjectPlacement(file, t, scale, divisions, units, p);
+        }
+
+        /** What the file's coordinates are multiplied by to place the mesh in metres: units × scale. */
+        public double meshScale() { return units.metres() * scale; }
+
+        /** Position, m (a new array). */
+        public double[] position() { return pose != null ? java.util.Arrays.copyOfRange(pose, 0, 3) : worldFromObject.origin(); }
+
+        /** Rotation as an axis-angle vector, rad (a new array). */
+        public double[] rotation() { return pose != null ? java.util.Arrays.copyOfRange(pose, 3, 6) : worldFromObject.rotationVector(); }
+
+        /** The same at another pose. */
+        public ObjectPlacement withPose(double[] position, double[] rotationRad) {
+            return of(file, position, rotationRad, scale, divisions, units).withFriction(friction);
+        }
+
+        /** The same with other divisions. */
+        public ObjectPlacement withDivisions(int d) {
+            return new ObjectPlacement(file, worldFromObject, scale, d, units, pose, friction);
+        }
+
+        /** The same with another scale and unit. */
+        public ObjectPlacement withScale(double s, Units u) {
+            return new ObjectPlacement(file, worldFromObject, s, divisions, u, pose, friction);
+        }
+    }
 
     private Scenario(Path file, JsonObject r, HandDescription hand) {
         this.file = file;
@@ -75,20 +186,30 @@ public final class Scenario implements Cloneable {
             JsonObject h = r.object("hand");
             h.allowOnly("position_m", "rotation_rad");
             worldFromPalm = pose(h);
+            handPose = new double[6];
+            System.arraycopy(h.has("position_m") ? h.numbers("position_m", 3) : new double[3], 0, handPose, 0, 3);
+            System.arraycopy(h.has("rotation_rad") ? h.numbers("rotation_rad", 3) : new double[3], 0, handPose, 3, 3);
         } else {
             worldFromPalm = RigidTransform.IDENTITY;
         }
         gravity = r.has("gravity_m_s2") ? r.numbers("gravity_m_s2", 3) : new double[] {0, 0, -9.81};
         if (r.has("object")) {
             JsonObject o = r.object("object");
-            o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions");
+            o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions", "units", "friction");
             Path dir = file.toAbsolutePath().getParent();
             Path f = dir.resolve(o.string("file")).normalize();
             if (!Files.isRegularFile(f)) throw o.error("file", "no such file: " + f);
             double scale = o.has("scale") ? o.positive("scale") : 1.0;
             int div = o.has("divisions") ? o.integer("divisions") : DEFAULT_DIVISIONS;
             if (div < 3 || div > 1024) throw o.error("divisions", "must be in [3, 1024], got " + div);
-            object = new ObjectPlacement(f, pose(o), scale, div);
+            Units units = Units.M;
+            if (o.has("units")) {
+                units = Units.of(o.string("units"));
+                if (units == null) throw o.error("units", "must be mm, cm or m, got \"" + o.string("units") + "\"");
+            }
+            object = ObjectPlacement.of(f, o.has("position_m") ? o.numbers("position_m", 3) : new double[3],
+                o.has("rotation_rad") ? o.numbers("rotation_rad", 3) : new double[3], scale, div, units)
+                .withFriction(o.has("friction") ? o.nonNegative("friction") : FrictionCone.DEFAULT_MU);
         } else {
             object = null;
         }
@@ -215,8 +336,81 @@ public final class Scenario implements Cloneable {
     public boolean writeTrace() { return writeTrace; }
     public boolean writeCharts() { return writeCharts; }
     public boolean computeTorques() { return computeTorques; }
+    /**
+     * Coulomb coefficient μ of the contacts: the object's {@code friction}, or
+     * {@link FrictionCone#DEFAULT_MU} when the scene has no object (analytic test shapes).
+     */
+    public double friction() { return object != null ? object.friction() : defaultFriction; }
+    /** Edges m of the linearised friction cones (default {@link FrictionCone#DEFAULT_EDGES}). */
+    public int coneEdges() { return coneEdges; }
     /** The parsed file (for fields other tools add). */
     public JsonObject json() { return root; }
+
+    /**
+     * This scenario as a scenario file's JSON (the format above), to be written into the folder
+     * {@code dir}: the object's file relative to it (absolute when it cannot be). Every number is
+     * the one this scenario runs with — poses as their position and rotation vector, trajectories
+     * as their segments, dt and the duration — so {@link #parse} of the written text (with
+     * {@code JsonWriter}'s shortest round-trip numbers) builds a scenario that simulates the same
+     * steps to the last digit. Description and notes are kept.
+     */
+    public java.util.Map<String, Object> toJson(Path dir) {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("name", name);
+        if (!description.isEmpty()) m.put("description", description);
+        if (root != null && root.raw("notes") != null) m.put("notes", root.raw("notes"));
+        java.util.Map<String, Object> h = new java.util.LinkedHashMap<>();
+        h.put("position_m", java.util.Arrays.copyOfRange(handPose, 0, 3));
+        h.put("rotation_rad", java.util.Arrays.copyOfRange(handPose, 3, 6));
+        m.put("hand", h);
+        m.put("gravity_m_s2", gravity.clone());
+        if (object != null) {
+            java.util.Map<String, Object> o = new java.util.LinkedHashMap<>();
+            Path f = object.file().toAbsolutePath().normalize();
+            String name;
+            try {
+                name = dir.toAbsolutePath().normalize().relativize(f).toString().replace(java.io.File.separatorChar, '/');
+            } catch (IllegalArgumentException e) {
+                name = f.toString();
+            }
+            o.put("file", name);
+            o.put("position_m", object.position());
+            o.put("rotation_rad", object.rotation());
+            o.put("scale", object.scale());
+            o.put("units", object.units().id());
+            o.put("divisions", object.divisions());
+            o.put("friction", object.friction());
+            m.put("object", o);
+        }
+        java.util.Map<String, Object> start = new java.util.LinkedHashMap<>();
+        for (int i = 0; i < 4; i++) start.put("M" + (i + 1), startCounts[i]);
+        m.put("start_counts", start);
+        java.util.Map<String, Object> mot = new java.util.LinkedHashMap<>();
+        for (int i = 0; i < 4; i++) {
+            Trajectory t = motors[i];
+            if (t instanceof Hold && t.duration() == 0 && t.start() == startCounts[i]) continue;   // the default
+            List<Object> segs = new ArrayList<>();
+            addSegments(t, segs);
+            mot.put("M" + (i + 1), segs);
+        }
+        m.put("motors", mot);
+        m.put("dt_s", dt);
+        m.put("duration_s", duration);
+        java.util.Map<String, Object> out = new java.util.LinkedHashMap<>();
+        out.put("trace", writeTrace);
+        out.put("charts", writeCharts);
+        out.put("torques", computeTorques);
+        m.put("outputs", out);
+        return m;
+    }
+
+    private static void addSegments(Trajectory t, List<Object> out) {
+        if (t instanceof Sequence) {
+            for (Trajectory s : ((Sequence) t).segments()) addSegments(s, out);
+        } else {
+            out.add(t.segment());
+        }
+    }
 
     private Scenario copy() {
         try {
@@ -273,6 +467,26 @@ public final class Scenario implements Cloneable {
         c.motors[m] = t;
         c.startCounts[m] = t.start();
         c.duration = Math.max(c.duration, t.duration());
+        return c;
+    }
+
+    /**
+     * A copy with another Coulomb coefficient μ ≥ 0 (the object's; without an object, the one
+     * analytic contact back ends get).
+     */
+    public Scenario withFriction(double mu) {
+        FrictionCone.checkMu(mu);
+        Scenario c = copy();
+        if (c.object != null) c.object = c.object.withFriction(mu);
+        c.defaultFriction = mu;
+        return c;
+    }
+
+    /** A copy whose friction cones have m edges (1..1024). */
+    public Scenario withConeEdges(int m) {
+        FrictionCone.checkEdges(m);
+        Scenario c = copy();
+        c.coneEdges = m;
         return c;
     }
 

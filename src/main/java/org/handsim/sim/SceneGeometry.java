@@ -3,7 +3,6 @@ package org.handsim.sim;
 import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import org.handsim.collision.CollisionResult;
 import org.handsim.collision.CoherentQuery;
 import org.handsim.collision.KdopTree;
@@ -12,8 +11,8 @@ import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.util.BoundedCache;
 import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlParseException;
 import org.handsim.vrml.VrmlScene;
 
 /**
@@ -37,8 +36,10 @@ import org.handsim.vrml.VrmlScene;
  * re-anchors otherwise. Either way exactly the full query's contacts. {@link #counter} says how
  * often each ran.
  *
- * <p>Meshes and trees are immutable and shared between instances (and threads) through a
- * cache keyed by file, divisions, scale and k; each instance has its own query scratch, so one
+ * <p>Meshes and trees are immutable and shared between instances (and threads) through
+ * bounded caches ({@link BoundedCache}, {@link #CACHE_TRIANGLES}) keyed by file, divisions,
+ * mesh scale (the placement's units × scale) and k, each made once however many threads ask;
+ * an instance costs no geometry work. Each instance has its own query scratch, so one
  * instance per model (per thread).
  */
 public final class SceneGeometry implements LinkContacts {
@@ -46,9 +47,6 @@ public final class SceneGeometry implements LinkContacts {
     public static final int DEFAULT_K = 18;
     /** Divisions the hand's meshes (links and, in the window, the palm) are loaded at. */
     public static final int LINK_DIVISIONS = 32;
-
-    private static final Map<String, TriangleMesh> MESHES = new ConcurrentHashMap<>();
-    private static final Map<String, KdopTree> TREES = new ConcurrentHashMap<>();
 
     private final TriangleMesh objectMesh;
     private final KdopTree objectTree;
@@ -86,46 +84,90 @@ public final class SceneGeometry implements LinkContacts {
      * @throws ScenarioException naming the file, line and column if a model cannot be loaded
      */
     public SceneGeometry(Scenario.ObjectPlacement object, int k) {
-        Shape obj = shape(object.file(), object.divisions(), object.scale(), k);
-        objectMesh = obj.mesh();
-        objectTree = obj.tree();
-        double diag = obj.diagonal();
+        Shape obj = shape(object.file(), object.divisions(), object.meshScale(), k);
+        objectMesh = obj.mesh;
+        objectTree = obj.tree;
+        double diag = obj.diagonal;
         for (int j = 1; j <= 3; j++) {
             Shape link = shape(linkFile(j), LINK_DIVISIONS, 1.0, k);
-            linkMeshes[j - 1] = link.mesh();
-            linkTrees[j - 1] = link.tree();
-            linkSpheres[j - 1] = link.sphere();
-            diag = Math.max(diag, link.diagonal());
+            linkMeshes[j - 1] = link.mesh;
+            linkTrees[j - 1] = link.tree;
+            linkSpheres[j - 1] = link.sphere;
+            diag = Math.max(diag, link.diagonal);
         }
         object.worldFromObject().copyTo(worldFromObject, 0);
-        double[] os = obj.sphere();
+        double[] os = obj.sphere;
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
         for (int i = 0; i < coherentQueries.length; i++) coherentQueries[i] = new CoherentQuery();
-        thickness = THICKNESS.computeIfAbsent(obj.key(), x -> minWidth(objectMesh));
+        double[] cw = object.worldFromObject().apply(obj.centroid());
+        centroidAndRadius = new double[] {cw[0], cw[1], cw[2], obj.centroidReach()};
+        thickness = obj.thickness();
     }
 
     /**
-     * A mesh with what the queries need of it, made once per file, divisions, scale and k and
-     * shared: its k-DOP tree, bounding sphere ({@link #boundingSphere}) and bounding-box diagonal.
+     * Bound of each cache below, in triangles (the weight of a mesh and of a shape): about
+     * 60 bytes a triangle for a mesh, 250 for a shape (its mesh, its tree's nodes, placed
+     * vertices and normals), so at most some 60 and 250 MB; the least recently used go first.
      */
-    private record Shape(String key, TriangleMesh mesh, KdopTree tree, double[] sphere, double diagonal) {}
+    static final long CACHE_TRIANGLES = 1_000_000;
 
-    private static final Map<String, Shape> SHAPES = new ConcurrentHashMap<>();
+    private static final BoundedCache<String, TriangleMesh> MESHES = new BoundedCache<>(CACHE_TRIANGLES, TriangleMesh::triangleCount);
 
-    private static Shape shape(Path file, int divisions, double scale, int k) {
-        String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale;
-        Shape sh = SHAPES.get(key + "|k" + k);
-        if (sh != null) return sh;
-        TriangleMesh m = mesh(file, divisions, scale);
-        sh = new Shape(key, m, tree(file, divisions, scale, k, m), boundingSphere(m), m.diagonal());
-        SHAPES.putIfAbsent(key + "|k" + k, sh);
-        return sh;
+    /**
+     * A mesh with what the queries need of it, made once per file, divisions, scale and k and
+     * shared (immutable): its k-DOP tree, bounding sphere ({@link #boundingSphere}),
+     * bounding-box diagonal, centroid and the largest distance from it to a vertex (the grasp
+     * evaluation's torque origin and R) and, for an object, its thinnest width (made on first
+     * use: links need none).
+     */
+    private static final class Shape {
+        final String key;
+        final TriangleMesh mesh;
+        final KdopTree tree;
+        final double[] sphere;
+        final double diagonal;
+        private final double[] centroid;
+        private final double centroidReach;
+        private double thickness = Double.NaN;
+
+        Shape(String key, TriangleMesh mesh, int k) {
+            this.key = key;
+            this.mesh = mesh;
+            this.tree = KdopTree.build(mesh, k);
+            this.sphere = boundingSphere(mesh);
+            this.diagonal = mesh.diagonal();
+            this.centroid = mesh.centroid();
+            double r = 0;
+            double[] v = mesh.vertices();
+            for (int i = 0; i < v.length; i += 3) r = Math.max(r, sq(v[i] - centroid[0]) + sq(v[i + 1] - centroid[1]) + sq(v[i + 2] - centroid[2]));
+            this.centroidReach = Math.sqrt(r);
+        }
+
+        double[] centroid() { return centroid.clone(); }
+        double centroidReach() { return centroidReach; }
+
+        synchronized double thickness() {
+            if (Double.isNaN(thickness)) thickness = minWidth(mesh);
+            return thickness;
+        }
     }
 
-    private static final Map<String, Double> THICKNESS = new ConcurrentHashMap<>();
+    private static final BoundedCache<String, Shape> SHAPES = new BoundedCache<>(CACHE_TRIANGLES, sh -> sh.mesh.triangleCount());
+
+    private static Shape shape(Path file, int divisions, double scale, int k) {
+        String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
+        return SHAPES.get(key, x -> new Shape(x, mesh(file, divisions, scale), k));
+    }
+
     private final double thickness;
+    private final double[] centroidAndRadius;
+
+    @Override
+    public double[] centroidAndRadius() {
+        return centroidAndRadius.clone();
+    }
 
     /**
      * An estimate from above of a mesh's thinnest width: the smallest extent along the 13
@@ -189,23 +231,18 @@ public final class SceneGeometry implements LinkContacts {
     }
 
     /**
-     * Loads (once per file, divisions and scale) a VRML file as one triangle mesh in metres,
-     * degenerate triangles dropped.
+     * Loads (once per file, divisions and scale) an object's file — VRML97, OBJ or STL, by its
+     * type ({@link MeshFiles}) — as one triangle mesh in metres, degenerate triangles dropped.
      *
-     * @throws ScenarioException with the loader's {@code FILE:LINE:COL: message}
+     * @throws ScenarioException with the loader's {@code FILE:LINE:COL: message} (or
+     *         {@code FILE: byte N: message} for binary STL)
      */
     public static TriangleMesh mesh(Path file, int divisions, double scale) {
-        String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale;
-        TriangleMesh m = MESHES.get(key);
-        if (m != null) return m;
-        try {
-            m = walk(new VrmlLoader().divisions(divisions).normals(false).load(file), file.getFileName().toString(), scale);
-        } catch (VrmlParseException e) {
-            throw new ScenarioException(e.getMessage(), e);
-        }
-        if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
-        MESHES.putIfAbsent(key, m);
-        return MESHES.get(key);
+        return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, x -> {
+            TriangleMesh m = MeshFiles.load(file, divisions, scale).mesh();
+            if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
+            return m;
+        });
     }
 
     /**
@@ -222,12 +259,10 @@ public final class SceneGeometry implements LinkContacts {
         return new TessellationWalk().scale(scale).name(name).run(scene.getSceneGroup()).merged();
     }
 
-    private static KdopTree tree(Path file, int divisions, double scale, int k, TriangleMesh m) {
-        String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
-        return TREES.computeIfAbsent(key, x -> KdopTree.build(m, k));
-    }
-
     public TriangleMesh objectMesh() { return objectMesh; }
+    /** The object's tree (object frame) and link j's (frame {kj}), for other queries on the same trees ({@link HandClearance}). */
+    KdopTree objectTree() { return objectTree; }
+    KdopTree linkTree(int j) { return linkTrees[j - 1]; }
     /** Link j's mesh (1..3), in its own frame {kj}. */
     public TriangleMesh linkMesh(int j) { return linkMeshes[j - 1]; }
     /** {@code world ← object} (12 values, a copy). */

@@ -15,6 +15,12 @@ public final class Simulation {
         return model(scenario, record, SceneGeometry.DEFAULT_K);
     }
 
+    /** As {@link #model(Scenario, boolean)} with the trace going to {@code recorder} (null: none). */
+    public static HandModel model(Scenario scenario, Recorder recorder) {
+        LinkContacts contacts = scenario.object() == null ? null : new SceneGeometry(scenario.object(), SceneGeometry.DEFAULT_K);
+        return new HandModel(scenario, contacts, HandDynamics.barrettHand()::inverseDynamics, recorder);
+    }
+
     /** As {@link #model(Scenario, boolean)} with k-DOPs of the given k (6, 14, 18, 26). */
     public static HandModel model(Scenario scenario, boolean record, int k) {
         LinkContacts contacts = scenario.object() == null ? null : new SceneGeometry(scenario.object(), k);

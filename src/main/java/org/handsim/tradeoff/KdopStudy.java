@@ -92,7 +92,7 @@ public final class KdopStudy implements Study {
         Scenario s = graspScenario(object);
         HandModel model = Simulation.model(s, false);
         model.run(null);
-        TriangleMesh om = SceneGeometry.mesh(s.object().file(), s.object().divisions(), s.object().scale());
+        TriangleMesh om = SceneGeometry.mesh(s.object().file(), s.object().divisions(), s.object().meshScale());
         TriangleMesh[] links = new TriangleMesh[9];
         RigidTransform[] poses = new RigidTransform[9];
         RigidTransform worldFromObject = s.object().worldFromObject();

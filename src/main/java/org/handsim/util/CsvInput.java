@@ -35,7 +35,7 @@ public final class CsvInput implements AutoCloseable {
         if (first.startsWith("\uFEFF")) first = first.substring(1);
         this.header = Arrays.asList(split(first));
         List<String> want = Arrays.asList(split(expectedHeader));
-        if (!header.equals(want)) throw error("header must be exactly '" + expectedHeader + "', got '" + first.trim() + "'");
+        if (!header.equals(want)) throw error("header must be exactly '" + expectedHeader + "', got '" + SafeText.quote(first.trim()) + "'");
     }
 
     private static String[] split(String s) {
@@ -69,17 +69,17 @@ public final class CsvInput implements AutoCloseable {
     public double number(int i) {
         try {
             double d = Double.parseDouble(row[i]);
-            if (!Double.isFinite(d)) throw error("column " + header.get(i) + " = " + row[i] + " is not finite");
+            if (!Double.isFinite(d)) throw error("column " + header.get(i) + " = " + SafeText.quote(row[i]) + " is not finite");
             return d;
         } catch (NumberFormatException e) {
-            throw error("column " + header.get(i) + " = '" + row[i] + "' is not a number");
+            throw error("column " + header.get(i) + " = '" + SafeText.quote(row[i]) + "' is not a number");
         }
     }
 
     /** Column i of the current row as an integer. */
     public int integer(int i) {
         double d = number(i);
-        if (d != Math.rint(d)) throw error("column " + header.get(i) + " = " + row[i] + " is not an integer");
+        if (d != Math.rint(d)) throw error("column " + header.get(i) + " = " + SafeText.quote(row[i]) + " is not an integer");
         return (int) d;
     }
 
@@ -98,7 +98,7 @@ public final class CsvInput implements AutoCloseable {
         private static final long serialVersionUID = 1L;
 
         public CsvException(String message) {
-            super(message);
+            super(SafeText.line(message));
         }
     }
 }

@@ -145,7 +145,7 @@ public final class Json {
             return Double.valueOf(s);
         } catch (NumberFormatException e) {
             pos = start;
-            throw error("bad number '" + s + "'");
+            throw error("bad number '" + SafeText.quote(s) + "'");
         }
     }
 
@@ -174,7 +174,7 @@ public final class Json {
         private static final long serialVersionUID = 1L;
 
         public JsonException(String message) {
-            super(message);
+            super(SafeText.line(message));
         }
     }
 }

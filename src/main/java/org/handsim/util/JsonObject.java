@@ -66,19 +66,19 @@ public final class JsonObject {
 
     public double positive(String field) {
         double d = number(field);
-        if (!(d > 0)) throw error(field, "must be > 0, got " + d);
+        if (!(d > 0)) throw error(field, "must be > 0, got " + Decimal.format(d));
         return d;
     }
 
     public double nonNegative(String field) {
         double d = number(field);
-        if (d < 0) throw error(field, "must be >= 0, got " + d);
+        if (d < 0) throw error(field, "must be >= 0, got " + Decimal.format(d));
         return d;
     }
 
     public int integer(String field) {
         double d = number(field);
-        if (d != Math.rint(d) || Math.abs(d) > Integer.MAX_VALUE) throw error(field, "must be an integer, got " + d);
+        if (d != Math.rint(d) || Math.abs(d) > Integer.MAX_VALUE) throw error(field, "must be an integer, got " + Decimal.format(d));
         return (int) d;
     }
 

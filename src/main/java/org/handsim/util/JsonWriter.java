@@ -6,8 +6,9 @@ import java.util.Map;
 
 /**
  * Writes JSON for the command outputs (contracts: key order is insertion order). Numbers are
- * written with Java's shortest round-trip form; a non-finite number is an error, never a
- * silent {@code NaN} in the output.
+ * written by {@link Decimal} (shortest round trip, integers without a fraction, no -0, the
+ * layout of ECMAScript's Number::toString); a non-finite number is an error, never a silent
+ * {@code NaN} in the output. Strings escape what {@link SafeText} escapes.
  */
 public final class JsonWriter {
     private JsonWriter() {}
@@ -99,12 +100,7 @@ public final class JsonWriter {
 
     private static void number(StringBuilder sb, double d) {
         if (!Double.isFinite(d)) throw new IllegalArgumentException("refusing to write a non-finite number (" + d + ") as JSON");
-        if (d == Math.rint(d) && Math.abs(d) < 1e15) {
-            sb.append((long) d);
-            if (d == 0 && 1 / d < 0) sb.setLength(sb.length()); // -0 written as 0
-        } else {
-            sb.append(d);
-        }
+        Decimal.append(sb, d);
     }
 
     private static void quote(StringBuilder sb, String s) {
@@ -118,7 +114,8 @@ public final class JsonWriter {
                 case '\r': sb.append("\\r"); break;
                 case '\t': sb.append("\\t"); break;
                 default:
-                    if (c < 0x20) sb.append(String.format("\\u%04x", (int) c));
+                    // C0, C1 (U+0085), U+2028/2029 and lone surrogates as \\uXXXX: one line for line readers
+                    if (SafeText.unsafe(s, i)) sb.append(String.format("\\u%04x", (int) c));
                     else sb.append(c);
             }
         }

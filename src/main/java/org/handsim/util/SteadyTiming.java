@@ -23,8 +23,14 @@ public final class SteadyTiming {
     public static final long WARMUP_CALLS = 10_000;
     /** Warm-up never runs longer than this, seconds (an operation of 1 ms needs 10 s for 10 000 calls). */
     public static final double WARMUP_CAP_SECONDS = 5.0;
-    /** Target duration of one timed batch, seconds. */
-    public static final double BATCH_SECONDS = 0.005;
+    /**
+     * Target duration of one timed batch, seconds: long enough that the clock (tens of ns) is
+     * noise, short enough that most batches run between two of the scheduler's time slices when
+     * other processes share the cores, so the median skips the batches a slice interrupts
+     * (measured: with 5 ms batches a 30 µs query read 45–60 µs at load 10 on 2 cores, with 1 ms
+     * batches 30–33 µs, the quiet figure; docs/BENCHMARKS.md).
+     */
+    public static final double BATCH_SECONDS = 0.001;
 
     /** Keeps results alive. */
     public static volatile double sink;

@@ -1,5 +1,6 @@
 package org.handsim.vrml;
 
+import org.handsim.util.SafeText;
 import java.nio.charset.StandardCharsets;
 
 /**
@@ -133,7 +134,8 @@ final class VrmlLexer {
             p++;
         }
         pos = p;
-        return new String(buf, start, p - start, ascii ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8);
+        // not ASCII: invalid UTF-8 bytes become lone surrogates (util.SafeText), escaped in messages
+        return ascii ? new String(buf, start, p - start, StandardCharsets.ISO_8859_1) : SafeText.decodeUtf8(buf, start, p - start);
     }
 
     /** True if the next token is the keyword/identifier {@code word} (not consumed). */
@@ -342,7 +344,7 @@ final class VrmlLexer {
             q++;
         }
         if (q == p) q = p + 1;
-        return "'" + new String(buf, p, q - p, StandardCharsets.UTF_8) + "'";
+        return "'" + SafeText.quote(SafeText.decodeUtf8(buf, p, q - p)) + "'";
     }
 
     /** An error at the current position. */

@@ -1,5 +1,6 @@
 package org.handsim.vrml;
 
+import org.handsim.util.SafeText;
 import org.jogamp.java3d.loaders.ParsingErrorException;
 
 /**
@@ -30,15 +31,16 @@ public final class VrmlParseException extends ParsingErrorException {
      * @param detail what is wrong, naming the offending token or value
      */
     public VrmlParseException(String file, int line, int column, String detail) {
-        super(file + ":" + line + ":" + column + ": " + oneLine(detail));
+        super(oneLine(file) + ":" + line + ":" + column + ": " + oneLine(detail));
         this.file = file;
         this.line = line;
         this.column = column;
         this.detail = oneLine(detail);
     }
 
+    /** Control and line-breaking characters escaped (util.SafeText): the message stays one line. */
     private static String oneLine(String s) {
-        return s.replace('\n', ' ').replace('\r', ' ');
+        return SafeText.line(s);
     }
 
     /** The file as named by the caller (or the Inline/EXTERNPROTO file in which the error is). */

@@ -1,5 +1,6 @@
 package org.handsim.vrml;
 
+import org.handsim.util.SafeText;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -143,9 +144,9 @@ final class VrmlParser {
             if (n == null) {
                 if (scope.defs.containsKey(name)) return null; // DEF of an unresolved EXTERNPROTO instance
                 if (scope.open.contains(name)) {
-                    throw text.error(at, "USE '" + name + "' inside the node DEF '" + name + "' itself (a node cannot contain itself)");
+                    throw text.error(at, "USE '" + SafeText.quote(name) + "' inside the node DEF '" + SafeText.quote(name) + "' itself (a node cannot contain itself)");
                 }
-                throw text.error(at, "USE '" + name + "' before any DEF '" + name + "' in this scope");
+                throw text.error(at, "USE '" + SafeText.quote(name) + "' before any DEF '" + SafeText.quote(name) + "' in this scope");
             }
             return n;
         }
@@ -160,11 +161,11 @@ final class VrmlParser {
         if (type == null) type = Builtins.get(word);
         if (type == null) {
             if (word.equals("NULL")) throw text.error(start, "NULL is not allowed here (only as the value of an SFNode field)");
-            if (isKeyword(word)) throw text.error(start, "keyword '" + word + "' where a node was expected");
-            throw text.error(start, "unknown node type '" + word + "' (not a VRML97 node, and no PROTO of that name was declared before)");
+            if (isKeyword(word)) throw text.error(start, "keyword '" + SafeText.quote(word) + "' where a node was expected");
+            throw text.error(start, "unknown node type '" + SafeText.quote(word) + "' (not a VRML97 node, and no PROTO of that name was declared before)");
         }
         if (type.proto != null && type.proto.defining) {
-            throw text.error(start, "PROTO '" + word + "' is used inside its own definition (recursive PROTO)");
+            throw text.error(start, "PROTO '" + SafeText.quote(word) + "' is used inside its own definition (recursive PROTO)");
         }
         if (++depth + baseDepth > session.maxDepth) {
             throw text.error(start, "nodes nested more than " + session.maxDepth + " levels deep (limit of this loader)");
@@ -227,7 +228,7 @@ final class VrmlParser {
             }
             int i = type.indexOf(fname);
             if (i < 0) {
-                session.warn(text, fieldAt, "unknown field '" + fname + "' in " + type.name + (type.proto != null ? " (PROTO)" : " (not a VRML97 field)") + "; skipped");
+                session.warn(text, fieldAt, "unknown field '" + SafeText.quote(fname) + "' in " + type.name + (type.proto != null ? " (PROTO)" : " (not a VRML97 field)") + "; skipped");
                 skipValue();
                 continue;
             }

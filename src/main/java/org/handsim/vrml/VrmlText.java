@@ -1,6 +1,5 @@
 package org.handsim.vrml;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
@@ -64,24 +63,43 @@ final class VrmlText {
         return new VrmlText(name, raw);
     }
 
+    /**
+     * Decompresses in two streaming passes so that memory never exceeds the result: the first
+     * counts the expanded bytes through a fixed 64 KiB buffer and refuses the stream as soon as
+     * the count passes {@link #MAX_BYTES} (a gzip bomb costs its compressed size and one
+     * buffer, never its expansion); the second fills an array of exactly the counted size.
+     */
     private static byte[] gunzip(String name, byte[] raw) {
+        byte[] chunk = new byte[1 << 16];
+        long total = 0;
         try (InputStream in = new GZIPInputStream(new java.io.ByteArrayInputStream(raw), 1 << 16)) {
-            ByteArrayOutputStream out = new ByteArrayOutputStream(Math.max(1 << 16, Math.min(raw.length * 4, 1 << 26)));
-            byte[] chunk = new byte[1 << 16];
-            long total = 0;
             int n;
             while ((n = in.read(chunk)) > 0) {
                 total += n;
                 if (total > MAX_BYTES) {
                     throw new VrmlParseException(name, 1, 1, "gzip stream expands to more than " + MAX_BYTES + " bytes; refused");
                 }
-                out.write(chunk, 0, n);
             }
-            return out.toByteArray();
         } catch (IOException e) {
-            throw new VrmlParseException(name, 1, 1, "file starts with the gzip signature (1f 8b) but cannot be decompressed: "
-                + e.getMessage());
+            throw notGzip(name, e);
         }
+        byte[] plain = new byte[(int) total];
+        try (InputStream in = new GZIPInputStream(new java.io.ByteArrayInputStream(raw), 1 << 16)) {
+            int off = 0;
+            while (off < plain.length) {
+                int n = in.read(plain, off, plain.length - off);
+                if (n < 0) break;
+                off += n;
+            }
+        } catch (IOException e) {
+            throw notGzip(name, e);
+        }
+        return plain;
+    }
+
+    private static VrmlParseException notGzip(String name, IOException e) {
+        return new VrmlParseException(name, 1, 1, "file starts with the gzip signature (1f 8b) but cannot be decompressed: "
+            + e.getMessage());
     }
 
     /**

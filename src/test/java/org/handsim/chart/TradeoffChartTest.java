@@ -28,8 +28,8 @@ class TradeoffChartTest {
         TradeoffChart.write(table(), dir);
         List<String> lines = Files.readAllLines(dir.resolve("9-test.csv"));
         assertEquals("series,setting,default,cost_s,error", lines.get(0));
-        assertEquals("a,default,true,0.001,1.0E-5", lines.get(2));
-        assertEquals("b,exact,false,0.002,0.0", lines.get(4), "a zero error stays 0 in the CSV");
+        assertEquals("a,default,true,0.001,0.00001", lines.get(2), "util.Decimal: plain decimals from 1e-6");
+        assertEquals("b,exact,false,0.002,0", lines.get(4), "a zero error stays 0 in the CSV");
         assertTrue(Files.size(dir.resolve("9-test.png")) > 1000);
         assertTrue(Files.readString(dir.resolve("9-test.svg")).contains("<svg"));
     }
@@ -66,5 +66,38 @@ class TradeoffChartTest {
         assertEquals("fast", gen2.generateLabel(q.getDataset(), 0, 0));
         assertEquals("default", gen2.generateLabel(q.getDataset(), 0, 1));
         assertEquals(null, gen2.generateLabel(q.getDataset(), 0, 2));
+    }
+
+    @Test
+    void pointLabelsNeverOverlapAndTheLastTickLabelIsNotCut() {
+        // three series on the same x values with y values close together: labels at a fixed offset collided
+        StudyTable t = new StudyTable("9-crowd", "crowd", List.of("cost_s", "error"), "cost_s", "error", "cost", "error");
+        double[] xs = {2.6e-4, 2.9e-4, 3.1e-4, 4e-4, 8e-4, 1.6e-3, 3.7e-3, 7.3e-3, 1.1e-2};
+        String[] names = {"20 ms", "10 ms", "5 ms", "2 ms", "1 ms", "0.5 ms", "0.2 ms", "0.1 ms", "0.05 ms"};
+        for (String series : new String[] {"breakaway", "peak force", "peak torque"}) {
+            for (int i = 0; i < xs.length; i++) {
+                double y = series.equals("peak torque") ? 2e-15 : (series.equals("breakaway") ? 4e-14 : 6e-14) * (1 - 0.05 * i);
+                t.add(series, names[i], i == 4, xs[i], y);
+            }
+        }
+        JFreeChart c = TradeoffChart.create(t.labelEveryPoint(true));
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(1000, 700, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.awt.Graphics2D g = img.createGraphics();
+        c.draw(g, new java.awt.Rectangle(0, 0, 1000, 700));
+        LabelPlacingRenderer r = (LabelPlacingRenderer) c.getXYPlot().getRenderer();
+        List<java.awt.geom.Rectangle2D> boxes = r.labelBoxes();
+        assertTrue(boxes.size() >= 20, "most of the 27 labels find a place: " + boxes.size());
+        for (int i = 0; i < boxes.size(); i++) {
+            assertTrue(r.dataArea().contains(boxes.get(i)), "inside the plot: " + boxes.get(i));
+            for (int j = i + 1; j < boxes.size(); j++) {
+                assertTrue(!boxes.get(i).intersects(boxes.get(j)), "labels " + boxes.get(i) + " and " + boxes.get(j) + " overlap");
+            }
+        }
+        // the x axis ends on a labelled decade: half its label must fit right of the plot
+        LogAxis x = (LogAxis) c.getXYPlot().getDomainAxis();
+        String last = x.getNumberFormatOverride().format(x.getUpperBound());
+        double half = g.getFontMetrics(x.getTickLabelFont()).stringWidth(last) / 2.0;
+        assertTrue(r.dataArea().getMaxX() + half <= 1000, "the last tick label " + last + " ends at " + (r.dataArea().getMaxX() + half));
+        g.dispose();
     }
 }

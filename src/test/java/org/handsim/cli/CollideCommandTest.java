@@ -88,7 +88,7 @@ class CollideCommandTest {
         assertEquals("handsim: --pose-b needs 6 comma-separated numbers, got '1,2,3'", r.err());
         r = run("collide", "a.wrl", "b.wrl", "--repeat", "0");
         assertEquals(2, r.code());
-        assertEquals("handsim: --repeat must be in 1..1000000, got 0", r.err());
+        assertEquals("handsim: --repeat must be in 1..10000, got 0", r.err());
         r = run("collide", "a.wrl");
         assertEquals(2, r.code());
         assertTrue(r.err().contains("B.wrl"), r.err());

@@ -90,7 +90,8 @@ class RunCommandsTest {
         assertEquals(1, r.code(), r.err());
         List<String> rows = Files.readAllLines(dir.resolve("out").resolve("summary.csv"));
         assertEquals("run,scenario,status,sim_time_s,steps,wall_time_s,final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,"
-            + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error",
+            + "final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error,"
+            + "force_closure,epsilon,volume,hold_min_N",
             rows.get(0), "the README's header");
         assertEquals(4, rows.size());
         assertTrue(rows.get(1).startsWith("as is,paper-breakaway,ok,"), rows.get(1));

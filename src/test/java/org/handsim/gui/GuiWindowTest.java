@@ -26,7 +26,8 @@ import org.junit.jupiter.api.Test;
  * The window end to end (issue 7, "Done means"), in a separate JVM on the current display —
  * the test JVM itself runs headless with Java3D's no-op renderer. The child process opens
  * {@code handsim gui} on the paper's experiment and runs a script that presses each of the
- * four buttons, imports the cube, runs the experiment with dynamics (in real time to
+ * four buttons, imports the cube (placed clear of the hand), opens the paper's scenario again
+ * (the cube where the paper has it), runs the experiment with dynamics (in real time to
  * t = 2.5 s, after the breakaway, where it logs the Dynamics panel and takes a screenshot; then
  * as fast as possible to the end), and takes a second screenshot with the hand, object and
  * contacts hidden (the empty scene). Checked:
@@ -134,6 +135,8 @@ class GuiWindowTest {
             "press Dynamics",
             "press Objects",
             "import " + cube,
+            "assert-contacts 0",
+            "open " + TestPaths.root().resolve("scenarios/paper-breakaway.json"),
             "press Dynamics",
             "speed 1",
             "press Run with dynamics",
@@ -167,7 +170,8 @@ class GuiWindowTest {
         assertTrue(row.group(1).equals("BROKEN") || row.group(1).equals("STALLED"), row.group());
         double tb = Double.parseDouble(row.group(2));
         assertTrue(tb > 0, "breakaway time " + tb);
-        assertTrue(c.log().contains("finger 3 BREAKAWAY"), "the events list names the breakaway:\n" + c.log());
+        assertTrue(c.log().contains("gui: event: t = " + row.group(2) + " s  finger 3: BLOCKED → BROKEN, BREAKAWAY"),
+            "the events list names the breakaway, at its time:\n" + c.log());
 
         // the screenshots
         Rectangle[] regions = regions(c.log(), full);
@@ -213,15 +217,15 @@ class GuiWindowTest {
         VrmlTesting.deleteTree(dir);
     }
 
-    /** The view and chart regions the program printed for a screenshot. */
+    /** The view, chart and status bar regions the program printed for a screenshot. */
     static Rectangle[] regions(String log, Path shot) {
         Matcher m = Pattern.compile("gui: screenshot " + Pattern.quote(shot.toString())
-            + " (\\d+)x(\\d+) view=(\\d+),(\\d+),(\\d+),(\\d+) charts=(\\d+),(\\d+),(\\d+),(\\d+)").matcher(log);
+            + " (\\d+)x(\\d+) view=(\\d+),(\\d+),(\\d+),(\\d+) charts=(\\d+),(\\d+),(\\d+),(\\d+) status=(\\d+),(\\d+),(\\d+),(\\d+)").matcher(log);
         assertTrue(m.find(), "no screenshot line for " + shot + " in:\n" + log);
-        int[] v = new int[10];
-        for (int i = 0; i < 10; i++) v[i] = Integer.parseInt(m.group(i + 1));
+        int[] v = new int[14];
+        for (int i = 0; i < 14; i++) v[i] = Integer.parseInt(m.group(i + 1));
         assertTrue(new File(shot.toString()).length() > 0);
-        return new Rectangle[] {new Rectangle(v[2], v[3], v[4], v[5]), new Rectangle(v[6], v[7], v[8], v[9])};
+        return new Rectangle[] {new Rectangle(v[2], v[3], v[4], v[5]), new Rectangle(v[6], v[7], v[8], v[9]), new Rectangle(v[10], v[11], v[12], v[13])};
     }
 
     interface PixelTest { boolean at(int x, int y); }

@@ -31,6 +31,28 @@ class MeshSourceTest {
     }
 
     @Test
+    void objAndStlLoadWithTheirColours() throws IOException {
+        Path dir = Files.createTempDirectory("handsim-mesh-test");
+        try {
+            Path obj = dir.resolve("t.obj"), mtl = dir.resolve("t.mtl"), bare = dir.resolve("bare.obj");
+            String tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+            Files.writeString(obj, "mtllib t.mtl\nusemtl dark\n" + tetra);
+            Files.writeString(mtl, "newmtl dark\nKa 0 0 0\nKd 0.1 0.2 0.3\n");
+            Files.writeString(bare, tetra);
+            MeshSource.Model m = MeshSource.load(obj, 24);
+            assertEquals(4, m.mesh().triangleCount());
+            assertArrayEquals(new float[] {0.1f, 0.2f, 0.3f}, m.colour(), "Kd of the OBJ's material library");
+            assertEquals(null, MeshSource.load(bare, 24).colour(), "no library: the caller's default");
+            MeshSource.Model stl = MeshSource.load(TestPaths.root().resolve("vrml/objects/mug_mm.stl"), 24);
+            assertEquals(720, stl.mesh().triangleCount());
+            assertEquals(null, stl.colour());
+        } finally {
+            for (String f : new String[] {"t.obj", "t.mtl", "bare.obj"}) Files.deleteIfExists(dir.resolve(f));
+            Files.delete(dir);
+        }
+    }
+
+    @Test
     void badFilesAreErrorsNamingTheFileAndLine() throws IOException {
         Path dir = Files.createTempDirectory("handsim-mesh-test");
         try {

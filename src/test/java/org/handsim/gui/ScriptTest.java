@@ -44,7 +44,14 @@ class ScriptTest {
             {"assert-state 3 SLIPPING", "t.txt:1: unknown clutch state 'SLIPPING'"},
             {"show palm off", "t.txt:1: show needs hand|object|contacts"},
             {"wait 1.5", "t.txt:1: wait needs whole milliseconds"},
-            {"log everything", "t.txt:1: log needs dynamics, state, events or ik"},
+            {"log everything", "t.txt:1: log needs dynamics, state, events, ik or charts"},
+            {"camera sideways", "t.txt:1: camera needs home, fit, front, top or side"},
+            {"key ESCAPE", "t.txt:1: key needs one of SPACE, RIGHT, R, H, F, 1, 2, 3"},
+            {"save-charts c.jpg", "t.txt:1: save-charts needs a .png or .svg file"},
+            {"resize 800 600", "t.txt:1: resize needs WIDTH HEIGHT in pixels, at least 1024 700"},
+            {"assert-contacts 1.5", "t.txt:1: assert-contacts needs a whole number"},
+            {"press Play\nexpect-error x", "t.txt:2: expect-error needs an action after it"},
+            {"expect-error x\nexpect-error y\npress Play", "t.txt:1: expect-error needs an action after it"},
             {"press", "t.txt:1: press needs an argument"},
         };
         for (String[] c : cases) {

@@ -17,8 +17,14 @@ import org.junit.jupiter.api.Test;
  * h = Dw + 0.05 the tip touches when sin φ2 = 0.05/0.07: φ2 = 45.5847°, θ2 = 43.1247°,
  * q_contact = 125·θ2 = 5390.59 counts. The clutch then transmits k_clutch·Δθ2 to the held
  * link; τ_break = 1.26 N·m is reached after Δθ2 = 1.26/7.2192 rad = 10.0000°, i.e. 1250.0
- * counts. The force pushes along +z at the tip, moment arm A2 cos φ2 = 0.048990 m, so the force
- * at breakaway is 1.26/0.048990 = 25.72 N.
+ * counts. The force pushes along +z at the tip, moment arm A2 cos φ2 = 0.048990 m, so the
+ * frictionless force at breakaway is 1.26/0.048990 = 25.72 N.
+ *
+ * <p>With friction μ = 0.5 (8 edges) the least-norm force leans toward the direction the tip
+ * moves, t = z × (p − o), |t| = A2 = 0.07 m, φ2 = 45.58° off the plane's normal: beyond the
+ * cone's 26.57°, so it slides on the cone edge in the finger's plane, n + μ·(tip's tangential
+ * direction): t·edge = A2 (cos φ2 + μ sin φ2) = 0.07 · 1.056997 = 0.0739898 m per newton of
+ * normal force, λ = 1.26/0.0739898 = 17.029 N, |f| = λ √(1 + μ²) = 19.039 N.
  */
 class HandModelPlaneTest {
     static final double H = 0.084 + 0.05;
@@ -50,8 +56,20 @@ class HandModelPlaneTest {
     }
 
     @Test
+    void withFrictionTheBreakawayIsTheSameAndTheForceSlidesOnTheCone() {
+        Scenario s = scenario("[{\"type\":\"trapezoid\",\"to\":17500,\"v_max\":5000,\"a_max\":25000}]", 4.0).withFriction(0.5);
+        HandModel m = new HandModel(s, new Plane(), TorqueModel.NONE, false);
+        m.run(null);
+        double qc = 125 * (Math.toDegrees(Math.asin(0.05 / 0.07)) - 2.46);
+        assertEquals(qc + 1250.0, m.breakawayCounts(3), 0.05, "breakaway depends on the joint torque, not on friction");
+        double phi = Math.asin(0.05 / 0.07);
+        double lambda = 1.26 / (0.07 * (Math.cos(phi) + 0.5 * Math.sin(phi)));
+        assertEquals(lambda * Math.sqrt(1.25), m.breakawayForce(3), 1e-3);
+    }
+
+    @Test
     void contactBreakawayAndForceMatchTheHandComputation() {
-        Scenario s = scenario("[{\"type\":\"trapezoid\",\"to\":17500,\"v_max\":5000,\"a_max\":25000}]", 4.0);
+        Scenario s = scenario("[{\"type\":\"trapezoid\",\"to\":17500,\"v_max\":5000,\"a_max\":25000}]", 4.0).withFriction(0);
         HandModel m = new HandModel(s, new Plane(), TorqueModel.NONE, true);
         m.run(null);
         double qc = 125 * (Math.toDegrees(Math.asin(0.05 / 0.07)) - 2.46);

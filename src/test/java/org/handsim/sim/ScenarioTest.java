@@ -30,7 +30,7 @@ class ScenarioTest {
 
     @Test
     void badFieldsAreNamed() {
-        assertTrue(error(OK.replace("\"v_max\":5000", "\"v_max\":-1")).contains("field motors.M3[0].v_max: must be > 0, got -1.0"));
+        assertTrue(error(OK.replace("\"v_max\":5000", "\"v_max\":-1")).contains("field motors.M3[0].v_max: must be > 0, got -1"));
         assertTrue(error(OK.replace("\"to\":17500", "\"to\":20000")).contains("field motors.M3[0].to: must be in [0, 17500] counts"));
         assertTrue(error(OK.replace("\"dt_s\":0.001", "\"dt_s\":\"fast\"")).contains("field dt_s: must be a number"));
         assertTrue(error(OK.replace("\"dt_s\":0.001,", "")).contains("field dt_s: missing"));
@@ -52,5 +52,28 @@ class ScenarioTest {
         ScenarioException e = assertThrows(ScenarioException.class,
             () -> Sweep.applyOverrides(Path.of("s.json"), OK, Map.of("motors.M3[7].v_max", 1.0)));
         assertTrue(e.getMessage().contains("no element 7"), e.getMessage());
+    }
+
+    /** object.friction: Coulomb μ, default 0.5, ≥ 0; a bad value names the field. */
+    @Test
+    void objectFriction() {
+        String cube = Home.dir().resolve("vrml/objects/cube.wrl").toString().replace("\\", "/");
+        String withObject = OK.replace("\"dt_s\"", "\"object\":{\"file\":\"" + cube + "\"},\"dt_s\"");
+        assertEquals(0.5, Scenario.parse(Path.of("s.json"), withObject).friction());
+        assertEquals(0.5, Scenario.parse(Path.of("s.json"), withObject).object().friction());
+        assertEquals(8, Scenario.parse(Path.of("s.json"), withObject).coneEdges());
+        String mu = withObject.replace("\"file\":", "\"friction\":0.3,\"file\":");
+        assertEquals(0.3, Scenario.parse(Path.of("s.json"), mu).friction());
+        assertEquals(0, Scenario.parse(Path.of("s.json"), mu).withFriction(0).friction(), "--friction overrides the file");
+        assertEquals(0.3, Scenario.parse(Path.of("s.json"), mu).friction(), "copies leave the original alone");
+        assertEquals(12, Scenario.parse(Path.of("s.json"), mu).withConeEdges(12).coneEdges());
+        assertTrue(error(withObject.replace("\"file\":", "\"friction\":-0.1,\"file\":")).contains("field object.friction: must be >= 0, got -0.1"),
+            error(withObject.replace("\"file\":", "\"friction\":-0.1,\"file\":")));
+        assertTrue(error(withObject.replace("\"file\":", "\"friction\":\"high\",\"file\":")).contains("field object.friction: must be a number"));
+        // no object: the default, or what withFriction sets (analytic contact back ends)
+        assertEquals(0.5, Scenario.parse(Path.of("s.json"), OK).friction());
+        assertEquals(0.25, Scenario.parse(Path.of("s.json"), OK).withFriction(0.25).friction());
+        assertThrows(IllegalArgumentException.class, () -> Scenario.parse(Path.of("s.json"), OK).withFriction(-1));
+        assertThrows(IllegalArgumentException.class, () -> Scenario.parse(Path.of("s.json"), OK).withConeEdges(0));
     }
 }

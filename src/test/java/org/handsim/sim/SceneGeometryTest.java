@@ -2,6 +2,8 @@ package org.handsim.sim;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.handsim.math.RigidTransform;
@@ -92,5 +94,32 @@ class SceneGeometryTest {
         assertTrue(g.lastResult().triangleTests > 0);
         double nz = cs.normal(0)[2];
         assertTrue(nz > 0.99, "the cube's top face pushes up: normal z " + nz);
+    }
+
+    /**
+     * The shared meshes and trees are keyed by the placement's mesh scale (units × scale), not
+     * its scale alone: the cube in metres and the same file in millimetres at scale 1 000 are
+     * one mesh; in millimetres at scale 1 it is another, 1 000 times smaller (the 60 mm cube's
+     * diagonal 60√3 mm, its thinnest width 60 mm, its centroid's reach 30√3 mm become µm-sized).
+     */
+    @Test
+    void sharedGeometryIsKeyedByTheMeshScale() {
+        java.nio.file.Path file = Home.dir().resolve("vrml/objects/cube.wrl");
+        SceneGeometry metres = new SceneGeometry(new Scenario.ObjectPlacement(file, RigidTransform.IDENTITY, 1.0, 24), SceneGeometry.DEFAULT_K);
+        SceneGeometry mmTimes1000 = new SceneGeometry(new Scenario.ObjectPlacement(file, RigidTransform.IDENTITY, 1000.0, 24,
+            Scenario.Units.MM, null), SceneGeometry.DEFAULT_K);
+        SceneGeometry mm = new SceneGeometry(new Scenario.ObjectPlacement(file, RigidTransform.IDENTITY, 1.0, 24,
+            Scenario.Units.MM, null), SceneGeometry.DEFAULT_K);
+        assertSame(metres.objectMesh(), mmTimes1000.objectMesh());
+        assertSame(metres.objectTree(), mmTimes1000.objectTree());
+        assertNotSame(metres.objectMesh(), mm.objectMesh());
+        // the file's coordinates are single-precision floats: 0.03 to 1e-8
+        assertEquals(0.06 * Math.sqrt(3), metres.objectMesh().diagonal(), 1e-7);
+        assertEquals(0.06, metres.minThickness(), 1e-7);
+        assertEquals(0.03 * Math.sqrt(3), metres.centroidAndRadius()[3], 1e-7);
+        assertEquals(metres.objectMesh().diagonal() * 1e-3, mm.objectMesh().diagonal(), 1e-15);
+        assertEquals(metres.minThickness() * 1e-3, mm.minThickness(), 1e-15);
+        assertEquals(metres.centroidAndRadius()[3] * 1e-3, mm.centroidAndRadius()[3], 1e-15);
+        assertSame(metres.linkTree(2), mm.linkTree(2), "the links' trees are shared by every scene");
     }
 }

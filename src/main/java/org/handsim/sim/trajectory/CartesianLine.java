@@ -24,6 +24,7 @@ public final class CartesianLine implements Trajectory {
     private final double[] q = new double[SAMPLES];
     private final double[] slope = new double[SAMPLES];
     private final double maxDeviation;
+    private final double[] target;
 
     /**
      * @param finger      1, 2 or 3
@@ -35,6 +36,7 @@ public final class CartesianLine implements Trajectory {
     public CartesianLine(int finger, double fromCounts, double spreadCounts, double[] target, double duration) {
         if (!(duration > 0)) throw new IllegalArgumentException("duration must be > 0, got " + duration);
         this.total = duration;
+        this.target = target.clone();
         Transmission tr = Transmission.barrettHand();
         FingerKinematics fk = FingerKinematics.of(finger);
         double[] p0 = fk.fingertip(tr.joints(finger, fromCounts, spreadCounts, null));
@@ -68,6 +70,15 @@ public final class CartesianLine implements Trajectory {
     public double maxDeviationM() { return maxDeviation; }
 
     @Override public double duration() { return total; }
+
+    @Override
+    public java.util.Map<String, Object> segment() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("type", "line");
+        m.put("target_m", target.clone());
+        m.put("duration_s", total);
+        return m;
+    }
     @Override public double start() { return q[0]; }
     @Override public double end() { return q[SAMPLES - 1]; }
 

@@ -19,6 +19,14 @@ public final class Hold implements Trajectory {
     @Override public double end() { return q; }
 
     @Override
+    public java.util.Map<String, Object> segment() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("type", "hold");
+        m.put("duration_s", total);
+        return m;
+    }
+
+    @Override
     public void sample(double t, double[] out) {
         out[0] = q;
         out[1] = 0;

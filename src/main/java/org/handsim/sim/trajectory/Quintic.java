@@ -26,6 +26,15 @@ public final class Quintic implements Trajectory {
     @Override public double end() { return q1; }
 
     @Override
+    public java.util.Map<String, Object> segment() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("type", "quintic");
+        m.put("to", q1);
+        m.put("duration_s", total);
+        return m;
+    }
+
+    @Override
     public void sample(double t, double[] out) {
         double d = q1 - q0;
         if (t <= 0) { out[0] = q0; out[1] = 0; out[2] = 0; return; }

@@ -38,6 +38,12 @@ public final class Sequence implements Trajectory {
     /** @return the segments, in order */
     public List<Trajectory> segments() { return List.of(parts); }
 
+    /** Not one segment: write {@link #segments()} one by one. */
+    @Override
+    public java.util.Map<String, Object> segment() {
+        throw new UnsupportedOperationException("a sequence is a list of segments: write segments() one by one");
+    }
+
     @Override
     public void sample(double t, double[] out) {
         int lo = 0, hi = parts.length - 1;

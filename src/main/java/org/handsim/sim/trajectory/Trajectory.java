@@ -20,6 +20,13 @@ public interface Trajectory {
      */
     void sample(double t, double[] out);
 
+    /**
+     * This trajectory as one segment of a scenario file's motor list ({@code Scenario}'s format:
+     * {@code type} and its fields, in the order a file writes them; the start is the previous
+     * segment's end). A {@link Sequence} is a list of segments, not one.
+     */
+    java.util.Map<String, Object> segment();
+
     /** @return q(t) in counts */
     default double position(double t) {
         double[] o = new double[3];

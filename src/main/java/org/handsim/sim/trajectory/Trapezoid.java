@@ -10,6 +10,7 @@ package org.handsim.sim.trajectory;
  */
 public final class Trapezoid implements Trajectory {
     private final double q0, q1, dir, vPeak, accel, tRamp, tCruise, total;
+    private final double vMax;
 
     /**
      * @param from   start position, counts
@@ -26,6 +27,7 @@ public final class Trapezoid implements Trajectory {
         double dist = Math.abs(to - from);
         this.dir = Math.signum(to - from);
         this.accel = aMax;
+        this.vMax = vMax;
         if (dist >= vMax * vMax / aMax) {
             vPeak = vMax;
             tRamp = vMax / aMax;
@@ -41,6 +43,16 @@ public final class Trapezoid implements Trajectory {
     @Override public double duration() { return total; }
     @Override public double start() { return q0; }
     @Override public double end() { return q1; }
+
+    @Override
+    public java.util.Map<String, Object> segment() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("type", "trapezoid");
+        m.put("to", q1);
+        m.put("v_max", vMax);
+        m.put("a_max", accel);
+        return m;
+    }
 
     /** @return true when the move never reaches v_max (triangular profile). */
     public boolean triangular() { return tCruise == 0; }

@@ -1,0 +1,140 @@
+package org.handsim.cli;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.handsim.chart.ChartExport;
+import org.handsim.chart.GraspChart;
+import org.handsim.sim.GraspAssessment;
+import org.handsim.sim.HandModel;
+import org.handsim.sim.Home;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.Simulation;
+import org.handsim.sim.SimulationException;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.JsonWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code handsim grasp}: how good the grasp of a scenario is, and how much it holds. */
+@Command(name = "grasp", mixinStandardHelpOptions = true,
+    description = {"Runs a scenario to time T and evaluates its grasp and the load it holds.",
+        "Runs the scenario (default: the paper's experiment) to time T (default: its",
+        "end) and prints its grasp there as one JSON line (README, output contracts):",
+        "  {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
+        "   \"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,",
+        "   \"volume\":v,\"hold_N\":{\"+x\":F,\"-x\":F,\"+y\":F,\"-y\":F,\"+z\":F,\"-z\":F},",
+        "   \"hold_min_N\":F}",
+        "World frame; normals point into the object; epsilon and volume of the grasp",
+        "wrench space (torques divided by the object's radius R); hold_N: the largest",
+        "force through the object's centroid the grasp holds with every joint within",
+        "its limit, at most the hand's rated 58.84 N.",
+        "--chart BASE also evaluates the grasp every --every seconds along the run and",
+        "writes BASE.png, BASE.svg (epsilon and the smallest hold against time) and",
+        "BASE.csv."})
+public final class GraspCommand implements Callable<Integer> {
+    /** Header of the {@code --chart} CSV. */
+    static final String CHART_HEADER = "time_s,force_closure,epsilon,volume,hold_min_N";
+
+    @Spec CommandSpec spec;
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENARIO", description = "scenario JSON file")
+    Path scenarioFile;
+
+    @Option(names = "--at", paramLabel = "T", description = "evaluate at time T seconds (the first step at or after it; default: the end)")
+    Double at;
+
+    @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction coefficient of the contacts (default: the scenario's object.friction, else 0.5)")
+    Double friction;
+
+    @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
+    Integer edges;
+
+    @Option(names = "--chart", paramLabel = "BASE", description = "also write BASE.png, BASE.svg and BASE.csv: the grasp against time")
+    Path chart;
+
+    @Option(names = "--every", paramLabel = "S", description = "sampling interval of --chart, seconds (default 0.02)")
+    Double every;
+
+    @Override
+    public Integer call() throws IOException {
+        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario());
+        scenario = withFriction(scenario, friction, edges);
+        double interval = every != null ? every : 0.02;
+        if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
+        if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + every);
+        double mu = scenario.friction();
+        int m = scenario.coneEdges();
+        HandModel model = Simulation.model(scenario, false);
+        double end = model.totalSteps() * scenario.dt();
+        double until = end;
+        if (at != null) {
+            if (!(at >= 0) || at > end + 1e-9 * scenario.dt()) {
+                throw CliError.usage("handsim: --at must be in [0, " + (float) end + "] seconds (the scenario's duration), got " + at);
+            }
+            until = at;
+        }
+        List<GraspAssessment> samples = new ArrayList<>();
+        try {
+            double next = 0;
+            if (chart != null) { samples.add(GraspAssessment.of(model, mu, m)); next = interval; }
+            while (model.running() && model.time() < until - 1e-9 * scenario.dt()) {
+                model.step();
+                if (chart != null && model.time() >= next - 1e-9 * scenario.dt()) {
+                    samples.add(GraspAssessment.of(model, mu, m));
+                    while (next <= model.time() + 1e-9 * scenario.dt()) next += interval;
+                }
+            }
+        } catch (SimulationException e) {
+            throw new CliError(CliError.NUMERIC, "handsim: " + scenario.file() + ": run stopped: " + e.getMessage() + " (no output written)");
+        }
+        GraspAssessment g = GraspAssessment.of(model, mu, m);
+        if (chart != null) {
+            if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
+            writeChart(chart, samples, model, scenario.name());
+        }
+        spec.commandLine().getOut().println(JsonWriter.write(g.toJson()));
+        return 0;
+    }
+
+    /**
+     * The scenario with {@code --friction} and {@code --edges} applied (exit 2 naming the value if
+     * one is out of range), for every command that takes them.
+     */
+    static Scenario withFriction(Scenario s, Double friction, Integer edges) {
+        checkFriction(friction, edges);
+        if (friction != null) s = s.withFriction(friction);
+        if (edges != null) s = s.withConeEdges(edges);
+        return s;
+    }
+
+    /** Exit 2 naming the value unless {@code --friction} ≥ 0 and 1 ≤ {@code --edges} ≤ 1024 (null: not given). */
+    static void checkFriction(Double friction, Integer edges) {
+        if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
+            throw CliError.usage("handsim: --friction must be a number >= 0, got " + friction);
+        }
+        if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
+    }
+
+    private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+        double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
+        ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
+            "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "
+            + model.scenario().coneEdges() + " cone edges)"), base, 900, 650);
+        try (AtomicFile f = new AtomicFile(Path.of(base + ".csv"))) {
+            Writer w = f.writer();
+            w.write(CHART_HEADER);
+            w.write('\n');
+            for (GraspAssessment s : samples) {
+                w.write(s.timeS() + "," + s.quality().forceClosure() + "," + s.quality().epsilon() + "," + s.quality().volume() + "," + s.holdMinN() + "\n");
+            }
+            f.commit();
+        }
+    }
+}

@@ -1,0 +1,86 @@
+package org.handsim.cli;
+
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.Locale;
+import org.handsim.plan.Engines;
+import org.handsim.plan.IndexedJob;
+import org.handsim.plan.TrialEngine;
+import org.handsim.sim.Sweep;
+import org.handsim.util.AtomicFile;
+
+/**
+ * The runs of a sweep file as an {@link IndexedJob} ({@code handsim sweep --engine spark}): run
+ * i of the file gives its {@code summary.csv} row, exactly as the local sweep writes it. The
+ * job carries the sweep file's path; each worker loads the file once.
+ */
+final class SweepJob implements IndexedJob<String> {
+    private static final long serialVersionUID = 1L;
+    private final String file;
+    private final Double friction;
+    private final Integer edges;
+    private transient volatile Sweep sweep;
+
+    /** @param friction, edges the command's overrides (null: each scenario's) */
+    SweepJob(Path file, Double friction, Integer edges) {
+        this.file = file.toAbsolutePath().normalize().toString();
+        this.friction = friction;
+        this.edges = edges;
+    }
+
+    @Override
+    public String run(int index) {
+        Sweep s = sweep;
+        if (s == null) {
+            synchronized (this) {
+                if (sweep == null) sweep = Sweep.load(Path.of(file));
+                s = sweep;
+            }
+        }
+        return SweepCommand.runOne(s.runs().get(index), friction, edges);
+    }
+
+    /** {@code handsim sweep} on an engine other than the local threads: the same table. */
+    static int runOnEngine(SweepCommand c, Sweep sweep, int threads, String engine, String master) throws Exception {
+        TrialEngine eng;
+        try {
+            eng = Engines.find(engine);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: " + e.getMessage());
+        }
+        int runs = sweep.runs().size();
+        Path dir = c.out != null ? c.out : Path.of("out", sweep.name());
+        String url = master != null ? master : c.threads != null ? "local[" + threads + "]" : "local[*]";
+        long t0 = System.nanoTime();
+        int[] failed = {0}, done = {0};
+        java.io.PrintWriter err = c.spec.commandLine().getErr();
+        try (AtomicFile f = new AtomicFile(dir.resolve("summary.csv"))) {
+            Writer w = f.writer();
+            w.write(SweepCommand.HEADER);
+            w.write('\n');
+            try {
+                eng.run(new SweepJob(c.file, c.friction, c.edges), runs, new TrialEngine.Settings(threads, url, "handsim sweep " + sweep.name()), row -> {
+                    try {
+                        if (row.contains(",failed,")) failed[0]++;
+                        w.write(row);
+                        w.write('\n');
+                    } catch (java.io.IOException e) {
+                        throw new java.io.UncheckedIOException(e);
+                    }
+                    err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", ++done[0], runs, sweep.runs().get(done[0] - 1).label(),
+                        (System.nanoTime() - t0) / 1e9));
+                    err.flush();
+                });
+            } catch (java.io.UncheckedIOException e) {
+                throw e.getCause();
+            } catch (Exception e) {
+                throw new CliError(1, "handsim: sweep " + sweep.name() + ": the " + engine + " engine failed: " + PlanCommand.oneLine(e));
+            }
+            f.commit();
+        }
+        double wall = (System.nanoTime() - t0) / 1e9;
+        c.spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %s in %.2f s; wrote %s",
+            sweep.name(), runs, failed[0], url, wall, dir.resolve("summary.csv")));
+        return failed[0] == 0 ? 0 : 1;
+    }
+}

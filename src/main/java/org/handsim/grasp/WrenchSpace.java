@@ -1,0 +1,78 @@
+package org.handsim.grasp;
+
+/**
+ * The quality of a grasp from its primitive wrenches: the L1 grasp wrench space (GraspIt!'s) is
+ * the convex hull in 6-D of the wrenches {@link GraspWrenches#of} builds (layout: wrench j at
+ * {@code w[6j .. 6j+5]}). Two entry points:
+ * <ul>
+ *   <li>{@link #quality}: the whole hull — force closure, ε, 6-D volume and facet count;</li>
+ *   <li>{@link #epsilon}: force closure and ε only (volume NaN, facets −1), the fast path: a
+ *       best-first partial hull ({@link ConvexHull#epsilon}) that stops at the facet nearest
+ *       the origin once no wrench lies beyond it.</li>
+ * </ul>
+ *
+ * <p><b>Definitions and tolerances</b> (S = the largest absolute wrench coordinate; τ =
+ * {@link ConvexHull#DISTANCE_TOLERANCE} · S = 1e-11 · S):
+ * <ul>
+ *   <li>lower-dimensional (affine rank &lt; 6, e.g. one or two contacts, collinear or coincident
+ *       contacts, fewer than 7 distinct wrenches): no force closure, ε = 0, volume 0, facets 0;</li>
+ *   <li>force closure: the origin lies strictly inside the hull — its distance to every facet
+ *       hyperplane exceeds τ (Ferrari, Canny, "Planning optimal grasps", ICRA 1992; Murray, Li,
+ *       Sastry, <i>A Mathematical Introduction to Robotic Manipulation</i>, §5.4);</li>
+ *   <li>ε: the radius of the largest origin-centred ball inside the hull = the smallest facet
+ *       offset, when force closure holds, else 0 (newtons of the scaled wrench);</li>
+ *   <li>volume: the 6-D volume of the hull; facets: facets of the polytope (coplanar simplicial
+ *       facets merged, {@link ConvexHull#facetCount()}).</li>
+ * </ul>
+ * Thread-safe: each thread works in its own reusable hull workspace.
+ */
+public final class WrenchSpace {
+    /** Dimension of a wrench. */
+    public static final int DIM = 6;
+
+    private static final ThreadLocal<ConvexHull> HULL = ThreadLocal.withInitial(() -> new ConvexHull(DIM));
+
+    private WrenchSpace() {}
+
+    /**
+     * The whole hull of the wrenches: force closure, ε, volume, facets.
+     *
+     * @param wrenches 6·count values (newtons; torques already divided by R)
+     * @param count    number of wrenches
+     * @param contacts number of contacts (reported back; not used in the computation)
+     * @throws IllegalArgumentException for too few values or a non-finite value
+     */
+    public static GraspQuality quality(double[] wrenches, int count, int contacts) {
+        check(wrenches, count, contacts);
+        ConvexHull hull = HULL.get();
+        if (!hull.build(wrenches, count)) return GraspQuality.none(contacts, count);
+        double b = hull.minOffset();
+        boolean closure = b > hull.tolerance();
+        return new GraspQuality(contacts, count, closure, closure ? b : 0, hull.volume(), hull.facetCount());
+    }
+
+    /**
+     * Force closure and ε only (volume NaN, facets −1): the fast path, equal to
+     * {@link #quality}'s force closure and ε.
+     *
+     * @param wrenches 6·count values (newtons; torques already divided by R)
+     * @param count    number of wrenches
+     * @param contacts number of contacts (reported back)
+     * @throws IllegalArgumentException for too few values or a non-finite value
+     */
+    public static GraspQuality epsilon(double[] wrenches, int count, int contacts) {
+        check(wrenches, count, contacts);
+        ConvexHull hull = HULL.get();
+        double b = hull.epsilon(wrenches, count);
+        if (Double.isNaN(b)) return new GraspQuality(contacts, count, false, 0, Double.NaN, -1);
+        boolean closure = b > hull.tolerance();
+        return new GraspQuality(contacts, count, closure, closure ? b : 0, Double.NaN, -1);
+    }
+
+    private static void check(double[] wrenches, int count, int contacts) {
+        if (count < 0 || wrenches.length < DIM * count) {
+            throw new IllegalArgumentException("need 6*count = " + DIM * count + " wrench values, got " + wrenches.length);
+        }
+        if (contacts < 0) throw new IllegalArgumentException("contacts must be >= 0, got " + contacts);
+    }
+}

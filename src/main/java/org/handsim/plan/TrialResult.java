@@ -1,0 +1,59 @@
+package org.handsim.plan;
+
+import java.io.Serializable;
+import org.handsim.util.JsonWriter;
+
+/**
+ * One row of {@code plan.csv} (the contract, README): the trial's parameters, where the hand
+ * ended, and the grasp's evaluation. A failed trial keeps its parameters and carries the
+ * one-line error; its other fields are empty in the table.
+ *
+ * @param palmPosition the palm position the fingers closed from, metres (null if the trial failed before)
+ * @param palmRotation its axis-angle rotation, radians (null likewise)
+ */
+public record TrialResult(int index, boolean ok, double[] approach, double roll, int spreadCounts, double standoff,
+                          int contacts, boolean forceClosure, double epsilon, double volume, double holdMinN,
+                          String[] finalStates, double simTimeS, double wallS, String error,
+                          double[] palmPosition, double[] palmRotation) implements Serializable {
+    private static final long serialVersionUID = 1L;
+
+    /** The header of plan.csv (contract). */
+    public static final String HEADER = "trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,standoff_m,"
+        + "contacts,force_closure,epsilon,volume,hold_min_N,final_state1,final_state2,final_state3,sim_time_s,wall_s,error";
+
+    /** A failed trial: its parameters and the error (one line). */
+    public static TrialResult failed(TrialParameters p, double wallS, String error) {
+        String e = error == null ? "" : error.replace('\n', ' ').replace('\r', ' ');
+        return new TrialResult(p.index(), false, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), 0, false, 0, 0, 0,
+            null, 0, wallS, e, null, null);
+    }
+
+    /** The CSV row (no line end). Numbers in JsonWriter's form (shortest round trip, integers as integers). */
+    public String csvRow() {
+        StringBuilder sb = new StringBuilder(256);
+        sb.append(index).append(',').append(ok ? "ok" : "failed");
+        for (double v : approach) sb.append(',').append(num(v));
+        sb.append(',').append(num(roll)).append(',').append(spreadCounts).append(',').append(num(standoff));
+        if (ok) {
+            sb.append(',').append(contacts).append(',').append(forceClosure).append(',').append(num(epsilon))
+                .append(',').append(num(volume)).append(',').append(num(holdMinN));
+            for (String s : finalStates) sb.append(',').append(s);
+            sb.append(',').append(num(simTimeS));
+        } else {
+            sb.append(",,,,,,,,,");
+        }
+        sb.append(',').append(num(wallS)).append(',').append(csvText(error));
+        return sb.toString();
+    }
+
+    static String num(double v) {
+        return Double.isNaN(v) ? "" : JsonWriter.write(v);
+    }
+
+    /** Quotes a text field for CSV when it holds a comma, quote or line break. */
+    static String csvText(String s) {
+        if (s == null || s.isEmpty()) return "";
+        if (s.indexOf(',') < 0 && s.indexOf('"') < 0 && s.indexOf('\n') < 0 && s.indexOf('\r') < 0) return s;
+        return "\"" + s.replace("\"", "\"\"").replace('\n', ' ').replace('\r', ' ') + "\"";
+    }
+}

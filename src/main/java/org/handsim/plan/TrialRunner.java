@@ -1,0 +1,147 @@
+package org.handsim.plan;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.function.IntConsumer;
+import org.handsim.sim.ClutchState;
+import org.handsim.sim.GraspAssessment;
+import org.handsim.sim.HandClearance;
+import org.handsim.sim.HandModel;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.Simulation;
+import org.handsim.util.JsonWriter;
+
+/**
+ * Runs trial i of a plan from its {@link PlanSpec} alone: sample its parameters
+ * ({@link TrialSampler}), approach ({@link Autograsp}), write the trial as a scenario, run that
+ * scenario until every finger has stalled or its profile ends, and evaluate the grasp
+ * ({@link GraspAssessment}: force closure, ε, volume, minimum hold). The scenario run here is
+ * exactly the one {@link #scenarioJson} writes for {@code best/NN.json} but for its outputs: no
+ * trace, no charts, no joint torques (the clutch, the contacts and the evaluation do not use
+ * them: the contacts carry the torque the clutch transmits, DESIGN.md), and it stops as soon
+ * as all three fingers are STALLED — after that nothing in the model changes, so
+ * {@code handsim run} on the written scenario ends in the same grasp.
+ *
+ * <p>A trial that throws becomes a failed row with its one-line error; the runner goes on.
+ * Not thread-safe (collision scratch): one runner per thread; the trees are shared.
+ */
+public final class TrialRunner {
+    private final PlanSpec spec;
+    private final TrialSampler sampler;
+    private final Path templateFile;
+    private final Map<String, Object> template;
+    private final HandClearance clearance;
+    private final double[] startCounts = new double[3];
+    private final IntConsumer fault;
+
+    /**
+     * @throws org.handsim.sim.ScenarioException if the template's object cannot be loaded
+     */
+    public TrialRunner(PlanSpec spec) {
+        this(spec, null);
+    }
+
+    /**
+     * As {@link #TrialRunner(PlanSpec)}, with {@code fault} called before each trial (tests: a
+     * trial that throws).
+     */
+    public TrialRunner(PlanSpec spec, IntConsumer fault) {
+        this.spec = spec;
+        this.sampler = new TrialSampler(spec);
+        this.templateFile = Path.of(spec.templateFile());
+        this.template = spec.template();
+        Scenario t = Scenario.parse(templateFile, spec.templateJson());
+        this.clearance = new HandClearance(t.object());
+        for (int k = 0; k < 3; k++) startCounts[k] = t.startCounts(k);
+        this.fault = fault;
+    }
+
+    public PlanSpec spec() { return spec; }
+
+    /** Trial {@code index}: never throws for a failing trial (a failed row instead). */
+    public TrialResult run(int index) {
+        TrialParameters p = sampler.sample(index);
+        long t0 = System.nanoTime();
+        try {
+            if (fault != null) fault.accept(index);
+            return attempt(p, t0);
+        } catch (RuntimeException e) {
+            String msg = e.getMessage() != null ? e.getMessage() : e.toString();
+            return TrialResult.failed(p, (System.nanoTime() - t0) / 1e9, msg);
+        }
+    }
+
+    private TrialResult attempt(TrialParameters p, long t0) {
+        Autograsp.Approach ap = Autograsp.approach(clearance, p.approach(), p.roll(), p.spreadCounts(), startCounts, p.standoff());
+        String text = scenarioJson(p, ap.position(), ap.rotation(), spec.name() + "-trial" + p.index(), false, null);
+        Scenario s = Scenario.parse(templateFile, text);
+        HandModel m = Simulation.model(s, false);
+        while (m.running() && !allStalled(m)) m.step();
+        GraspAssessment g = GraspAssessment.of(m, spec.mu(), spec.edges());
+        int contacts = 0;
+        String[] states = new String[3];
+        for (int k = 1; k <= 3; k++) {
+            contacts += m.contacts(k).size();
+            states[k - 1] = m.state(k).name();
+        }
+        double wall = (System.nanoTime() - t0) / 1e9;
+        return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), contacts,
+            g.quality().forceClosure(), g.quality().epsilon(), g.quality().volume(), g.holdMinN(), states, m.time(), wall, "",
+            ap.position(), ap.rotation());
+    }
+
+    private static boolean allStalled(HandModel m) {
+        return m.state(1) == ClutchState.STALLED && m.state(2) == ClutchState.STALLED && m.state(3) == ClutchState.STALLED;
+    }
+
+    /**
+     * The trial as a scenario (JSON text): the template with the hand at the approach's pose,
+     * the spread held at the trial's q_M4, and {@code name}. For a trial ({@code best} false)
+     * the outputs are off; for {@code best/NN.json} they are the template's and
+     * {@code objectFile} (may be null) replaces the object's file (relative to the new file).
+     */
+    @SuppressWarnings("unchecked")
+    public String scenarioJson(TrialParameters p, double[] position, double[] rotation, String name, boolean best, String objectFile) {
+        Map<String, Object> t = new LinkedHashMap<>(template);
+        t.put("name", name);
+        if (best) {
+            t.put("description", String.format(java.util.Locale.ROOT, "Grasp found by handsim plan %s (trial %d of %d, seed %d):"
+                + " the hand approached along (%s, %s, %s) with roll %s rad, spread %d counts, standoff %s m, then closed every finger.",
+                spec.target(), p.index(), spec.trials(), spec.seed(), JsonWriter.write(p.approach()[0]), JsonWriter.write(p.approach()[1]),
+                JsonWriter.write(p.approach()[2]), JsonWriter.write(p.roll()), p.spreadCounts(), JsonWriter.write(p.standoff())));
+        }
+        Map<String, Object> hand = new LinkedHashMap<>();
+        hand.put("position_m", position);
+        hand.put("rotation_rad", rotation);
+        t.put("hand", hand);
+        Map<String, Object> start = t.get("start_counts") instanceof Map
+            ? new LinkedHashMap<>((Map<String, Object>) t.get("start_counts")) : new LinkedHashMap<>();
+        start.put("M4", p.spreadCounts());
+        t.put("start_counts", start);
+        if (t.get("motors") instanceof Map) {
+            Map<String, Object> motors = new LinkedHashMap<>((Map<String, Object>) t.get("motors"));
+            motors.remove("M4");
+            t.put("motors", motors);
+        }
+        if (objectFile != null) {
+            Map<String, Object> o = new LinkedHashMap<>((Map<String, Object>) t.get("object"));
+            o.put("file", objectFile);
+            t.put("object", o);
+        }
+        if (!best) {
+            Map<String, Object> out = new LinkedHashMap<>();
+            out.put("trace", false);
+            out.put("charts", false);
+            out.put("torques", false);
+            t.put("outputs", out);
+        }
+        return best ? JsonWriter.pretty(t) : JsonWriter.write(t);
+    }
+
+    /** The parameters of a trial (the sampler's). */
+    public TrialParameters parameters(int index) {
+        return sampler.sample(index);
+    }
+
+}

@@ -1,0 +1,162 @@
+package org.handsim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.handsim.sim.Home;
+import org.handsim.util.Json;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@code handsim grasp}, the {@code "grasp"} of {@code handsim run}'s summary.json and the grasp
+ * columns of {@code handsim sweep}: the README's contracts, and the issue's check that the
+ * three-finger mug grasp is force closure with μ = 0.5 and not with μ = 0 (frictionless point
+ * contacts never are, with fewer than seven of them: here six).
+ */
+class GraspCommandTest {
+    static final String MUG = Home.scenarios().resolve("mug-grasp.json").toString();
+    static final List<String> KEYS = List.of("time_s", "contacts", "force_closure", "epsilon", "volume", "hold_N", "hold_min_N");
+
+    @SuppressWarnings("unchecked")
+    static Map<String, Object> json(String text) {
+        return (Map<String, Object>) Json.parse("output", text);
+    }
+
+    @SuppressWarnings("unchecked")
+    static void contract(Map<String, Object> g) {
+        assertEquals(KEYS, new ArrayList<>(g.keySet()), "the README's keys, in order");
+        for (Object o : (List<Object>) g.get("contacts")) {
+            assertEquals(List.of("finger", "link", "point", "normal", "force_N"), new ArrayList<>(((Map<String, Object>) o).keySet()));
+        }
+        Map<String, Object> hold = (Map<String, Object>) g.get("hold_N");
+        assertEquals(List.of("+x", "-x", "+y", "-y", "+z", "-z"), new ArrayList<>(hold.keySet()));
+        double min = Double.POSITIVE_INFINITY;
+        for (Object v : hold.values()) min = Math.min(min, ((Number) v).doubleValue());
+        assertEquals(min, ((Number) g.get("hold_min_N")).doubleValue());
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void theMugGraspIsForceClosureWithFrictionAndNotWithout() {
+        CliTesting.Run r = CliTesting.run("grasp", MUG);
+        assertEquals(0, r.code(), r.err());
+        Map<String, Object> g = json(r.out());
+        contract(g);
+        assertEquals(4.7, ((Number) g.get("time_s")).doubleValue(), 1e-9, "the scenario's end");
+        assertEquals(6, ((List<Object>) g.get("contacts")).size(), "inner and outer link of each finger");
+        assertEquals(true, g.get("force_closure"));
+        assertTrue(((Number) g.get("epsilon")).doubleValue() > 0);
+        assertTrue(((Number) g.get("volume")).doubleValue() > 0);
+
+        CliTesting.Run r0 = CliTesting.run("grasp", MUG, "--friction", "0");
+        assertEquals(0, r0.code(), r0.err());
+        Map<String, Object> g0 = json(r0.out());
+        contract(g0);
+        assertEquals(false, g0.get("force_closure"));
+        assertEquals(0, ((Number) g0.get("epsilon")).doubleValue());
+        assertEquals(0, ((Number) g0.get("volume")).doubleValue(), "six frictionless wrenches: a hull of at most five dimensions, volume 0");
+        assertEquals(0, ((Number) g0.get("hold_min_N")).doubleValue(), 1e-9, "frictionless: some direction is not held at all");
+    }
+
+    /** --at picks the first step at or after T; the inner links alone already hold the mug at 2 s (all BLOCKED). */
+    @Test
+    @SuppressWarnings("unchecked")
+    void atATime() {
+        CliTesting.Run r = CliTesting.run("grasp", MUG, "--at", "2.0");
+        assertEquals(0, r.code(), r.err());
+        Map<String, Object> g = json(r.out());
+        contract(g);
+        assertEquals(2.0, ((Number) g.get("time_s")).doubleValue(), 1e-9);
+        for (Object o : (List<Object>) g.get("contacts")) assertEquals(2, ((Number) ((Map<String, Object>) o).get("link")).intValue());
+        CliTesting.Run start = CliTesting.run("grasp", MUG, "--at", "0");
+        Map<String, Object> g0 = json(start.out());
+        contract(g0);
+        assertEquals(0, ((List<Object>) g0.get("contacts")).size());
+        assertEquals(false, g0.get("force_closure"));
+    }
+
+    @Test
+    void badArgumentsExit2AndAMissingFileExits3() {
+        CliTesting.Run r = CliTesting.run("grasp", MUG, "--friction", "-0.5");
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("--friction must be a number >= 0, got -0.5"), r.err());
+        r = CliTesting.run("grasp", MUG, "--edges", "0");
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("--edges must be between 1 and 1024, got 0"), r.err());
+        r = CliTesting.run("grasp", MUG, "--at", "9");
+        assertEquals(2, r.code());
+        assertTrue(r.err().contains("--at must be in [0, 4.7]"), r.err());
+        r = CliTesting.run("grasp", MUG, "--every", "0.1");
+        assertEquals(2, r.code());
+        r = CliTesting.run("grasp", "no-such-scenario.json");
+        assertEquals(3, r.code());
+        assertFalse(r.err().contains("Exception"), r.err());
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void runSummaryHasTheGraspWithFrictionAndNoneWithout() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-grasp");
+        CliTesting.Run r = CliTesting.run("run", MUG, "--no-charts", "--out", dir.resolve("mu05").toString());
+        assertEquals(0, r.code(), r.err());
+        Map<String, Object> s = json(Files.readString(dir.resolve("mu05").resolve("summary.json")));
+        Map<String, Object> g = (Map<String, Object>) s.get("grasp");
+        contract(g);
+        assertEquals(true, g.get("force_closure"));
+        CliTesting.Run r0 = CliTesting.run("run", MUG, "--no-charts", "--friction", "0", "--out", dir.resolve("mu0").toString());
+        assertEquals(0, r0.code(), r0.err());
+        Map<String, Object> g0 = (Map<String, Object>) json(Files.readString(dir.resolve("mu0").resolve("summary.json"))).get("grasp");
+        contract(g0);
+        assertEquals(false, g0.get("force_closure"));
+        // the grasp of run and of grasp agree
+        Map<String, Object> direct = json(CliTesting.run("grasp", MUG).out());
+        assertEquals(direct.get("epsilon"), g.get("epsilon"));
+        assertEquals(direct.get("hold_N"), g.get("hold_N"));
+    }
+
+    /** The sweep's grasp columns, with object.friction set per run (the scenario field). */
+    @Test
+    void sweepColumnsFollowObjectFriction() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-grasp");
+        Path base = dir.resolve("base.json");
+        Files.writeString(base, Files.readString(Path.of(MUG))
+            .replace("../vrml/objects/mug.wrl", Home.dir().resolve("vrml/objects/mug.wrl").toString().replace("\\", "/")));
+        Path sweep = dir.resolve("sweep.json");
+        Files.writeString(sweep, "{\"name\":\"g\",\"base\":\"base.json\",\"runs\":["
+            + "{\"label\":\"mu 0.5\",\"set\":{}},{\"label\":\"mu 0\",\"set\":{\"object.friction\":0}}]}");
+        CliTesting.Run r = CliTesting.run("sweep", sweep.toString(), "--out", dir.resolve("out").toString(), "--threads", "1");
+        assertEquals(0, r.code(), r.err());
+        List<String> rows = Files.readAllLines(dir.resolve("out").resolve("summary.csv"));
+        assertTrue(rows.get(0).endsWith(",error,force_closure,epsilon,volume,hold_min_N"), rows.get(0));
+        String[] with = rows.get(1).split(",", -1), without = rows.get(2).split(",", -1);
+        assertEquals(SweepCommand.HEADER.split(",").length, with.length);
+        assertEquals("", with[18], "no error");
+        assertEquals("true", with[19]);
+        assertTrue(Double.parseDouble(with[20]) > 0);
+        assertEquals("false", without[19]);
+        assertEquals(0, Double.parseDouble(without[20]));
+    }
+
+    @Test
+    void chartFilesAndTheirTable() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-grasp");
+        Path base = dir.resolve("mug");
+        CliTesting.Run r = CliTesting.run("grasp", MUG, "--chart", base.toString(), "--every", "0.1");
+        assertEquals(0, r.code(), r.err());
+        contract(json(r.out()));
+        assertTrue(Files.size(Path.of(base + ".png")) > 10_000);
+        assertTrue(Files.readString(Path.of(base + ".svg")).contains("<svg"));
+        List<String> csv = Files.readAllLines(Path.of(base + ".csv"));
+        assertEquals(GraspCommand.CHART_HEADER, csv.get(0));
+        assertEquals("time_s,force_closure,epsilon,volume,hold_min_N", csv.get(0), "the README's header");
+        assertEquals(1 + 48, csv.size(), "t = 0, 0.1, ..., 4.7");
+        assertTrue(csv.get(1).startsWith("0.0,false,0.0,"), csv.get(1));
+        assertTrue(csv.get(csv.size() - 1).startsWith("4.7,true,"), csv.get(csv.size() - 1));
+    }
+}

@@ -1,0 +1,162 @@
+package org.handsim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.handsim.sim.GraspAssessment;
+import org.handsim.sim.HandModel;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.Simulation;
+import org.handsim.plan.PlanTesting;
+import org.junit.jupiter.api.Test;
+
+/** {@code handsim plan}: the outputs of a small plan, and one-line errors with exit 2 or 3 for bad targets and options. */
+class PlanCommandTest {
+    static final String MUG = PlanTesting.MUG.toString();
+
+    @Test
+    void aSmallPlanWritesEveryOutput() throws Exception {
+        Path dir = Files.createTempDirectory("plan-cmd");
+        try {
+            CliTesting.Run r = CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "2", "--out", dir.toString());
+            assertEquals(0, r.code(), r.err());
+            assertTrue(r.out().startsWith("plan-mug: 8 trials (0 failed)"), r.out());
+            for (String f : new String[] {"plan.csv", "plan.json", "best/01.json", "best/08.json", "epsilon-histogram.png",
+                "epsilon-histogram.svg", "epsilon-directions.png", "epsilon-directions.svg"}) {
+                assertTrue(Files.isRegularFile(dir.resolve(f)), f);
+            }
+            assertFalse(Files.exists(dir.resolve("best/09.json")), "8 trials: 8 best files");
+            List<String> csv = Files.readAllLines(dir.resolve("plan.csv"));
+            assertEquals(9, csv.size());
+            // the same plan on one thread: the same table
+            Path one = dir.resolve("one");
+            assertEquals(0, CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "1", "--out", one.toString()).code());
+            assertEquals(PlanTesting.withoutTiming(csv), PlanTesting.withoutTiming(Files.readAllLines(one.resolve("plan.csv"))));
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    /**
+     * best/01.json is the best trial as a scenario: run to its end as {@code handsim run} runs it
+     * (trace on, torques on, no early stop), its grasp has the row's ε, force closure and contacts.
+     */
+    @Test
+    void bestScenarioReproducesItsRow() throws Exception {
+        Path dir = Files.createTempDirectory("plan-best");
+        try {
+            CliTesting.Run r = CliTesting.run("plan", MUG, "--trials", "500", "--seed", "1", "--out", dir.toString());
+            assertEquals(0, r.code(), r.err());
+            Map<String, String> best = null;
+            List<String> csv = Files.readAllLines(dir.resolve("plan.csv"));
+            String[] head = csv.get(0).split(",");
+            double bestEps = -1;
+            for (String line : csv.subList(1, csv.size())) {
+                String[] f = line.split(",", -1);
+                if (!f[1].equals("ok")) continue;
+                double e = Double.parseDouble(f[10]);
+                if (e > bestEps) {
+                    bestEps = e;
+                    best = new java.util.HashMap<>();
+                    for (int i = 0; i < head.length; i++) best.put(head[i], f[i]);
+                }
+            }
+            assertTrue(bestEps > 0, "a 500-trial plan on the mug finds force-closure grasps");
+            Scenario s = Scenario.load(dir.resolve("best/01.json"));
+            assertTrue(s.writeTrace() && s.computeTorques(), "the best scenario keeps the template's outputs");
+            HandModel m = Simulation.model(s, true);
+            m.run(null);
+            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            assertEquals(bestEps, g.quality().epsilon(), 1e-12 * bestEps, "epsilon of trial " + best.get("trial"));
+            assertEquals(Boolean.parseBoolean(best.get("force_closure")), g.quality().forceClosure());
+            assertEquals(Integer.parseInt(best.get("contacts")), g.contacts().size());
+            for (int k = 1; k <= 3; k++) assertEquals(best.get("final_state" + k), m.state(k).name());
+            // and through the command itself: handsim run best/01.json (summary.json's "grasp", once run reports it)
+            CliTesting.Run run = CliTesting.run("run", dir.resolve("best/01.json").toString(), "--no-charts", "--out", dir.resolve("run").toString());
+            assertEquals(0, run.code(), run.err());
+            @SuppressWarnings("unchecked")
+            Map<String, Object> summary = (Map<String, Object>) org.handsim.util.Json.parse("summary.json",
+                Files.readString(dir.resolve("run/summary.json")));
+            if (summary.get("grasp") instanceof Map) {
+                @SuppressWarnings("unchecked")
+                Map<String, Object> grasp = (Map<String, Object>) summary.get("grasp");
+                assertEquals(bestEps, ((Number) grasp.get("epsilon")).doubleValue(), 1e-12 * bestEps, "handsim run's epsilon");
+            }
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    @Test
+    void badTargetsAreOneLineExit3() throws Exception {
+        Path dir = Files.createTempDirectory("plan-bad");
+        try {
+            CliTesting.Run missing = CliTesting.run("plan", dir.resolve("nothing.wrl").toString());
+            assertEquals(3, missing.code());
+            assertOneLine(missing.err(), "nothing.wrl");
+
+            Path broken = dir.resolve("broken.wrl");
+            Files.writeString(broken, "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 ] } } }\n");
+            CliTesting.Run bad = CliTesting.run("plan", broken.toString(), "--out", dir.resolve("o").toString());
+            assertEquals(3, bad.code());
+            assertOneLine(bad.err(), "broken.wrl:");
+            assertFalse(Files.exists(dir.resolve("o/plan.csv")), "nothing written");
+
+            Path noObject = dir.resolve("empty.json");
+            Files.writeString(noObject, "{\"name\": \"empty\", \"dt_s\": 0.001, \"duration_s\": 1}");
+            CliTesting.Run none = CliTesting.run("plan", noObject.toString());
+            assertEquals(3, none.code());
+            assertOneLine(none.err(), "no object");
+
+            Path badJson = dir.resolve("bad.json");
+            Files.writeString(badJson, "{\"name\": \"x\", \"dt_s\": -1}");
+            CliTesting.Run bj = CliTesting.run("plan", badJson.toString());
+            assertEquals(3, bj.code());
+            assertOneLine(bj.err(), "dt_s");
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    @Test
+    void badOptionsAreOneLineExit2() {
+        String[][] cases = {
+            {"--trials", "0"}, {"--trials", "many"}, {"--threads", "0"}, {"--friction", "-0.5"}, {"--friction", "NaN"},
+            {"--engine", "hadoop"}, {"--master", "local[2]"}, {"--seed", "1.5"}};
+        String[] expect = {"--trials", "many", "--threads", "--friction", "--friction", "hadoop", "--master", "1.5"};
+        for (int c = 0; c < cases.length; c++) {
+            String[] args = new String[2 + cases[c].length];
+            args[0] = "plan";
+            args[1] = MUG;
+            System.arraycopy(cases[c], 0, args, 2, cases[c].length);
+            CliTesting.Run r = CliTesting.run(args);
+            assertEquals(2, r.code(), String.join(" ", args) + ": " + r.err());
+            assertTrue(r.err().contains(expect[c]), String.join(" ", args) + ": " + r.err());
+            assertFalse(r.err().contains("Exception"), r.err());
+        }
+    }
+
+    /** Without the spark/ build on the class path, --engine spark says how to get it, exit 2. */
+    @Test
+    void sparkEngineOutsideItsBuildSaysWhy() {
+        CliTesting.Run r = CliTesting.run("plan", MUG, "--engine", "spark");
+        assertEquals(2, r.code());
+        assertOneLine(r.err(), "./handsim");
+    }
+
+    static void assertOneLine(String err, String mentions) {
+        assertEquals(1, err.lines().count(), err);
+        assertTrue(err.contains(mentions), err);
+        assertFalse(err.contains("Exception"), err);
+    }
+
+    @Test
+    void noTargetIsExit2() {
+        assertEquals(2, CliTesting.run("plan").code());
+    }
+}

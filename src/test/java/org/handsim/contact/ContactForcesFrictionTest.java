@@ -1,0 +1,263 @@
+package org.handsim.contact;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.handsim.grasp.FrictionCone;
+import org.handsim.kinematics.FingerKinematics;
+import org.junit.jupiter.api.Test;
+import org.ojalgo.optimisation.Expression;
+import org.ojalgo.optimisation.ExpressionsBasedModel;
+import org.ojalgo.optimisation.Optimisation;
+import org.ojalgo.optimisation.Variable;
+
+/**
+ * Contact forces with Coulomb friction (least-norm forces in the linearised cones that carry
+ * the joint torques): cases by hand, and the least-norm property against an independent
+ * quadratic program (ojAlgo's convex solver on the edge weights).
+ *
+ * <p>The hand cases use finger 3 upright (ContactForcesTest): joint 2's axis z1 = (0, −1, 0)
+ * through o1 = (0.05, 0, 0); a contact on the inner link at p − o1 = (0, 0, 0.05) moves, when
+ * the joint closes, along t = z1 × (p − o1) = (−0.05, 0, 0), |t| = 0.05 m. The push direction
+ * n = (−cos φ, 0, −sin φ) leans φ off t in the x–z plane; its cone (FrictionCone: |n_x| ≥ 0.9
+ * gives a = e_y, t1 = (sin φ, 0, −cos φ)) has edges 0 and 4, n ± μ t1, in the same plane, and t
+ * lies on edge 4's side.
+ */
+class ContactForcesFrictionTest {
+    static final int M = 8;
+    static final double MU = 0.5, TAU = 1.26;
+
+    private static double[] upright() {
+        double[] f = new double[48];
+        FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(90 - 2.46), 0}, f);
+        return f;
+    }
+
+    private static double[] cones(double[] dirs, int n, double mu) {
+        double[] c = new double[3 * M * n];
+        for (int i = 0; i < n; i++) FrictionCone.edges(dirs[3 * i], dirs[3 * i + 1], dirs[3 * i + 2], mu, M, c, 3 * M * i);
+        return c;
+    }
+
+    private static ContactForces solveOne(double phiDeg, double tau) {
+        double phi = Math.toRadians(phiDeg);
+        double[] d = {-Math.cos(phi), 0, -Math.sin(phi)};
+        ContactForces cf = new ContactForces();
+        cf.solveWithFriction(upright(), 1, new double[] {0, tau, 0}, 1, new double[] {0.05, 0, 0.05}, d, new int[] {2}, cones(d, 1, MU), M);
+        return cf;
+    }
+
+    /**
+     * φ = 20°: t is inside the cone (tan 20° = 0.36 < μ; in the plane of edges 0 and 4 the
+     * pyramid's section is the full ±26.6° wedge), so the least-norm force is along t:
+     * f = τ t/|t|² = 1.26 · (−0.05, 0, 0)/0.0025 = (−25.2, 0, 0) — less than the frictionless
+     * τ/(0.05 cos 20°) = 26.82 N, and the torque is carried exactly.
+     */
+    @Test
+    void insideTheConeTheForceFollowsTheLinksMotion() {
+        ContactForces cf = solveOne(20, TAU);
+        double[] f = new double[3];
+        cf.forceVector(0, f, 0);
+        assertEquals(-25.2, f[0], 1e-9);
+        assertEquals(0, f[1], 1e-9);
+        assertEquals(0, f[2], 1e-9);
+        assertEquals(25.2, cf.force(0), 1e-9);
+        assertEquals(TAU, cf.jointTorque(0, 1), 1e-12);
+        assertEquals(0, cf.residual(), 1e-12);
+        assertFalse(cf.undetermined(0));
+    }
+
+    /**
+     * φ = 40°: t is outside (tan 40° = 0.84 > μ): the force slides on edge 4, f = λ (n − μ t1),
+     * with t·(n − μ t1) = 0.05 (cos φ + μ sin φ), so λ = τ / (0.05 (cos 40° + 0.5 sin 40°))
+     * = 1.26 / 0.054372 = 23.174 N of normal force and |f| = λ √(1 + μ²) = 25.909 N.
+     */
+    @Test
+    void outsideTheConeTheForceSlidesOnTheNearestEdge() {
+        double phi = Math.toRadians(40);
+        double lambda = TAU / (0.05 * (Math.cos(phi) + MU * Math.sin(phi)));
+        ContactForces cf = solveOne(40, TAU);
+        double[] f = new double[3];
+        cf.forceVector(0, f, 0);
+        double[] n = {-Math.cos(phi), 0, -Math.sin(phi)}, t1 = {Math.sin(phi), 0, -Math.cos(phi)};
+        for (int c = 0; c < 3; c++) assertEquals(lambda * (n[c] - MU * t1[c]), f[c], 1e-9, "component " + c);
+        assertEquals(lambda * Math.sqrt(1 + MU * MU), cf.force(0), 1e-9);
+        assertEquals(TAU, cf.jointTorque(0, 1), 1e-12);
+        assertEquals(0, cf.residual(), 1e-12);
+    }
+
+    /**
+     * φ = 90°: the push passes through the joint axis (no frictionless moment arm: undetermined
+     * without friction), but friction carries the torque: on edge 4, t·(n − μ t1) = 0.05 μ, so
+     * λ = 1.26/0.025 = 50.4 N of normal force.
+     */
+    @Test
+    void aPushThroughTheJointAxisIsCarriedByFrictionAlone() {
+        ContactForces cf = solveOne(90, TAU);
+        assertFalse(cf.undetermined(0));
+        assertEquals(0, cf.arm(0, 1), 1e-15);
+        assertEquals(TAU / (0.05 * MU) * Math.sqrt(1 + MU * MU), cf.force(0), 1e-9);
+        assertEquals(TAU, cf.jointTorque(0, 1), 1e-12);
+    }
+
+    /** A torque that would need the contact to pull: no force, the whole torque is the residual. */
+    @Test
+    void contactsCannotPull() {
+        ContactForces cf = solveOne(20, -0.5);
+        assertEquals(0, cf.force(0));
+        assertEquals(0.5, cf.residual(), 1e-12);
+    }
+
+    /**
+     * A torque on joint 3 with contacts only on the inner link cannot be carried: joint 2's is,
+     * exactly, and the residual is joint 3's torque.
+     */
+    @Test
+    void aJointNoContactLoadsIsTheResidual() {
+        double[] d = {-1, 0, 0};
+        ContactForces cf = new ContactForces();
+        cf.solveWithFriction(upright(), 1, new double[] {0, TAU, 0.3}, 1, new double[] {0.05, 0, 0.05}, d, new int[] {2}, cones(d, 1, MU), M);
+        assertEquals(TAU, cf.jointTorque(0, 1), 1e-12);
+        assertEquals(0.3, cf.residual(), 1e-12);
+    }
+
+    /** Near the joint axis (every edge's arm below 0.5 mm) the contact is undetermined, f = 0. */
+    @Test
+    void aContactOnTheJointAxisIsUndetermined() {
+        double[] d = {-1, 0, 0};
+        ContactForces cf = new ContactForces();
+        cf.solveWithFriction(upright(), 1, new double[] {0, TAU, 0}, 1, new double[] {0.05, 0, 0.0003}, d, new int[] {2}, cones(d, 1, MU), M);
+        assertTrue(cf.undetermined(0));
+        assertEquals(0, cf.force(0));
+        assertTrue(Double.isFinite(cf.residual()));
+    }
+
+    /**
+     * The least-norm property on 300 seeded finger poses with 1–5 contacts on links 2 and 3:
+     * torques made by random forces in the cones (so they can be carried), solved, and compared
+     * with an independent quadratic program — minimise Σ|f_i|² over edge weights λ ≥ 0 with
+     * f_i = Σ λ_ie e_ie and the two torque equations — solved by ojAlgo. The least-norm forces
+     * are unique, so they must agree; every force must lie in its cone and carry the torques.
+     */
+    @Test
+    void leastNormForcesAgreeWithAQuadraticProgram() {
+        Random rnd = new Random(20260412);
+        ContactForces cf = new ContactForces();
+        int compared = 0;
+        for (int trial = 0; trial < 300; trial++) {
+            double[] frames = new double[48];
+            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
+                Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
+            int n = 1 + rnd.nextInt(5);
+            double mu = 0.1 + 0.9 * rnd.nextDouble();
+            double[] p = new double[3 * n], d = new double[3 * n];
+            int[] links = new int[n];
+            for (int i = 0; i < n; i++) {
+                links[i] = 2 + rnd.nextInt(2);
+                int fr = 12 * links[i];                   // the link's frame {kj}: x along the link, back to the joint
+                double s = -(0.01 + 0.04 * rnd.nextDouble());
+                double off = 0.008 * (rnd.nextDouble() - 0.5);
+                for (int c = 0; c < 3; c++) {
+                    p[3 * i + c] = frames[fr + 4 * c + 3] + s * frames[fr + 4 * c] + off * frames[fr + 4 * c + 1];
+                    // push roughly along the link's y axis (its closing side), tilted at random
+                    d[3 * i + c] = frames[fr + 4 * c + 1] + 0.6 * rnd.nextGaussian() * (c == 0 ? 1 : 0.5);
+                }
+                double l = Math.sqrt(d[3 * i] * d[3 * i] + d[3 * i + 1] * d[3 * i + 1] + d[3 * i + 2] * d[3 * i + 2]);
+                for (int c = 0; c < 3; c++) d[3 * i + c] /= l;
+            }
+            double[] cones = cones(d, n, mu);
+            double[] tau = new double[3];
+            // torques from random forces in the cones: carriable by construction
+            for (int i = 0; i < n; i++) {
+                for (int e = 0; e < M; e++) {
+                    double w = rnd.nextDouble() < 0.5 ? 0 : 10 * rnd.nextDouble();
+                    for (int jm = 1; jm < links[i]; jm++) {
+                        tau[jm] += w * torqueDir(frames, jm, p, i, cones, 3 * M * i + 3 * e);
+                    }
+                }
+            }
+            cf.solveWithFriction(frames, 1, tau, n, p, d, links, cones, M);
+            double[] ref = quadraticProgram(frames, tau, n, p, links, cones, cf);
+            if (ref == null) continue;
+            double scale = 1e-6 * (1 + norm(ref));
+            double[] f = new double[3];
+            double t2 = 0, t3 = 0;
+            for (int i = 0; i < n; i++) {
+                cf.forceVector(i, f, 0);
+                for (int c = 0; c < 3; c++) assertEquals(ref[3 * i + c], f[c], scale, "trial " + trial + " contact " + i + " component " + c);
+                if (!cf.undetermined(i)) {
+                    double[] e = java.util.Arrays.copyOfRange(cones, 3 * M * i, 3 * M * (i + 1));
+                    assertTrue(ConeProjectionTest.inCone(e, M, new double[] {d[3 * i], d[3 * i + 1], d[3 * i + 2]}, f, 1e-9 * (1 + cf.force(i))),
+                        "trial " + trial + ": force in its cone");
+                }
+                t2 += cf.jointTorque(i, 1);
+                t3 += cf.jointTorque(i, 2);
+            }
+            if (cf.residual() < 1e-9) {
+                assertEquals(tau[1], t2, 1e-9 * (1 + Math.abs(tau[1])), "trial " + trial);
+                assertEquals(tau[2], t3, 1e-9 * (1 + Math.abs(tau[2])), "trial " + trial);
+            }
+            compared++;
+        }
+        assertTrue(compared > 250, "compared " + compared);
+    }
+
+    /** t_m · e for joint m (0-based) at contact i: (z × (p − o)) · e. */
+    private static double torqueDir(double[] frames, int jm, double[] p, int i, double[] e, int eo) {
+        int f = 12 * jm;
+        double zx = frames[f + 2], zy = frames[f + 6], zz = frames[f + 10];
+        double rx = p[3 * i] - frames[f + 3], ry = p[3 * i + 1] - frames[f + 7], rz = p[3 * i + 2] - frames[f + 11];
+        double tx = zy * rz - zz * ry, ty = zz * rx - zx * rz, tz = zx * ry - zy * rx;
+        return tx * e[eo] + ty * e[eo + 1] + tz * e[eo + 2];
+    }
+
+    /**
+     * The reference: minimise Σ|f|² over λ ≥ 0 (undetermined contacts left out, as the solver
+     * does) with the torque rows of joints 2 and 3 that some contact loads; null if ojAlgo does
+     * not report an optimum.
+     */
+    private static double[] quadraticProgram(double[] frames, double[] tau, int n, double[] p, int[] links, double[] cones, ContactForces cf) {
+        ExpressionsBasedModel model = new ExpressionsBasedModel();
+        Variable[] lam = new Variable[n * M];
+        for (int v = 0; v < n * M; v++) lam[v] = model.addVariable("l" + v).lower(0);
+        Expression obj = model.addExpression("objective").weight(1);
+        for (int i = 0; i < n; i++) {
+            if (cf.undetermined(i)) { for (int e = 0; e < M; e++) lam[i * M + e].upper(0); }
+            for (int a = 0; a < M; a++) {
+                for (int b = 0; b < M; b++) {
+                    int ea = 3 * M * i + 3 * a, eb = 3 * M * i + 3 * b;
+                    double dot = cones[ea] * cones[eb] + cones[ea + 1] * cones[eb + 1] + cones[ea + 2] * cones[eb + 2];
+                    obj.set(lam[i * M + a], lam[i * M + b], dot);
+                }
+            }
+        }
+        for (int jm = 1; jm < 3; jm++) {
+            boolean used = false;
+            for (int i = 0; i < n; i++) used |= jm < links[i] && !cf.undetermined(i);
+            if (!used) continue;
+            Expression row = model.addExpression("tau" + jm).level(tau[jm]);
+            for (int i = 0; i < n; i++) {
+                if (jm >= links[i]) continue;
+                for (int e = 0; e < M; e++) row.set(lam[i * M + e], torqueDir(frames, jm, p, i, cones, 3 * M * i + 3 * e));
+            }
+        }
+        Optimisation.Result r = model.minimise();
+        if (!r.getState().isOptimal()) return null;
+        double[] f = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            for (int e = 0; e < M; e++) {
+                double w = lam[i * M + e].getValue().doubleValue();
+                for (int c = 0; c < 3; c++) f[3 * i + c] += w * cones[3 * M * i + 3 * e + c];
+            }
+        }
+        return f;
+    }
+
+    private static double norm(double[] v) {
+        double s = 0;
+        for (double x : v) s += x * x;
+        return Math.sqrt(s);
+    }
+}

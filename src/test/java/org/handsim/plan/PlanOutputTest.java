@@ -1,0 +1,138 @@
+package org.handsim.plan;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.SplittableRandom;
+import org.handsim.sim.Scenario;
+import org.handsim.util.Json;
+import org.junit.jupiter.api.Test;
+
+/** plan.csv, plan.json and best/ as the README's contracts say; the bounded-memory summaries against direct computation. */
+class PlanOutputTest {
+    /** Results with chosen ε, without running trials (the parameters are the sampler's). */
+    static TrialResult fake(TrialRunner r, int i, boolean ok, boolean fc, double eps, double hold) {
+        TrialParameters p = r.parameters(i);
+        if (!ok) return TrialResult.failed(p, 0.001, "no");
+        return new TrialResult(i, true, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), 3, fc, eps, fc ? 1e-3 : 0, hold,
+            new String[] {"STALLED", "BROKEN", "FREE"}, 2.0, 0.01, "", new double[] {0.01 * i, 0, 0.2}, new double[] {0, 0.1 * i, 0});
+    }
+
+    @Test
+    void tableJsonAndTheTenBestAsTheContractSays() throws Exception {
+        Path dir = Files.createTempDirectory("plan-output");
+        try {
+            PlanSpec spec = PlanTesting.mugPlan(30, 9);
+            TrialRunner r = new TrialRunner(spec);
+            double[] eps = new double[30];
+            try (PlanOutput o = new PlanOutput(dir, r, null)) {
+                for (int i = 0; i < 30; i++) {
+                    boolean ok = i % 7 != 3, fc = i % 3 != 0;
+                    eps[i] = fc ? 0.01 * ((i * 37) % 30) + 0.001 : 0;
+                    o.accept(fake(r, i, ok, fc, eps[i], i));
+                    if (!ok) eps[i] = -1;
+                }
+                Map<String, Object> json = o.finish(2.5, "local");
+                assertEquals(List.of("target", "trials", "force_closure", "best_epsilon", "wall_time_s", "trials_per_s", "engine", "seed"),
+                    new ArrayList<>(json.keySet()));
+            }
+            List<String> lines = Files.readAllLines(dir.resolve("plan.csv"));
+            assertEquals("trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,standoff_m,contacts,force_closure,"
+                + "epsilon,volume,hold_min_N,final_state1,final_state2,final_state3,sim_time_s,wall_s,error", lines.get(0));
+            assertEquals(31, lines.size());
+            @SuppressWarnings("unchecked")
+            Map<String, Object> pj = (Map<String, Object>) Json.parse("plan.json", Files.readString(dir.resolve("plan.json")));
+            long fcCount = 0;
+            double best = 0;
+            List<Integer> order = new ArrayList<>();
+            for (int i = 0; i < 30; i++) {
+                if (eps[i] > 0) fcCount++;
+                if (eps[i] > best) best = eps[i];
+                if (eps[i] >= 0) order.add(i);
+            }
+            order.sort((a, b) -> eps[a] != eps[b] ? Double.compare(eps[b], eps[a]) : Integer.compare(b, a)); // ties: larger hold = larger i
+            assertEquals(fcCount, ((Number) pj.get("force_closure")).longValue());
+            assertEquals(best, ((Number) pj.get("best_epsilon")).doubleValue());
+            assertEquals(30, ((Number) pj.get("trials")).intValue());
+            assertEquals(12.0, ((Number) pj.get("trials_per_s")).doubleValue());
+            assertEquals("local", pj.get("engine"));
+            assertEquals(9, ((Number) pj.get("seed")).intValue());
+            for (int b = 1; b <= 10; b++) {
+                Path f = dir.resolve(String.format("best/%02d.json", b));
+                assertTrue(Files.isRegularFile(f), f.toString());
+                Scenario s = Scenario.load(f);   // opens as it is: the object file is found relative to best/
+                assertEquals(PlanTesting.MUG.toAbsolutePath().normalize(), s.object().file());
+                int i = order.get(b - 1);
+                assertEquals(0.01 * i, s.worldFromPalm().origin()[0], 1e-15, "best " + b + " is trial " + i);
+                assertEquals(r.parameters(i).spreadCounts(), s.startCounts(3));
+            }
+            assertFalse(Files.exists(dir.resolve("best/11.json")));
+            assertFalse(Files.exists(dir.resolve(".plan.csv.partial")));
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    @Test
+    void rowsOutOfOrderAreRefusedAndNothingLooksFinished() throws Exception {
+        Path dir = Files.createTempDirectory("plan-output");
+        try {
+            TrialRunner r = new TrialRunner(PlanTesting.mugPlan(3, 1));
+            try (PlanOutput o = new PlanOutput(dir, r, null)) {
+                o.accept(fake(r, 0, true, true, 0.1, 1));
+                assertThrows(IllegalStateException.class, () -> o.accept(fake(r, 2, true, true, 0.1, 1)));
+                assertThrows(IllegalStateException.class, () -> o.accept(fake(r, 0, true, true, 0.1, 1)));
+                assertThrows(IllegalStateException.class, () -> o.finish(1, "local"));
+            }
+            assertFalse(Files.exists(dir.resolve("plan.csv")));
+            assertFalse(Files.exists(dir.resolve(".plan.csv.partial")));
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    /** The doubling histogram equals binning all values at the final width. */
+    @Test
+    void histogramMatchesDirectBinning() {
+        SplittableRandom rnd = new SplittableRandom(8);
+        EpsilonHistogram h = new EpsilonHistogram();
+        List<Double> all = new ArrayList<>();
+        long zeros = 0;
+        for (int i = 0; i < 5000; i++) {
+            double e = i % 5 == 0 ? 0 : Math.pow(rnd.nextDouble(), 3) * (i < 100 ? 0.01 : 0.3);
+            h.add(e > 0, e);
+            if (e > 0) all.add(e); else zeros++;
+        }
+        long[] direct = new long[EpsilonHistogram.BINS];
+        for (double e : all) direct[(int) Math.floor(e / h.width())]++;
+        long[] got = h.counts();
+        for (int b = 0; b < EpsilonHistogram.BINS; b++) assertEquals(direct[b], got[b], "bin " + b);
+        assertEquals(zeros, h.noClosure());
+        assertTrue(all.stream().mapToDouble(Double::doubleValue).max().getAsDouble() < h.width() * EpsilonHistogram.BINS);
+        assertTrue(all.stream().mapToDouble(Double::doubleValue).max().getAsDouble() >= h.width() * EpsilonHistogram.BINS / 2,
+            "the range is at most twice the largest value");
+    }
+
+    @Test
+    void directionCellsByHand() {
+        // a = (0, 1, 0): azimuth 90° → cell (90 + 180)/10 = 27; elevation 0 → cell 9
+        assertEquals(27, DirectionMap.azimuthCell(new double[] {0, 1, 0}));
+        assertEquals(9, DirectionMap.elevationCell(new double[] {0, 1, 0}));
+        // straight down: elevation −90° → cell 0; straight up → the last cell
+        assertEquals(0, DirectionMap.elevationCell(new double[] {0, 0, -1}));
+        assertEquals(DirectionMap.EL_CELLS - 1, DirectionMap.elevationCell(new double[] {0, 0, 1}));
+        DirectionMap m = new DirectionMap();
+        m.add(new double[] {0, 1, 0}, 0.2);
+        m.add(new double[] {0, 1, 0}, 0.5);
+        m.add(new double[] {0, 1, 0}, 0);
+        assertEquals(0.5, m.best()[27][9]);
+        assertEquals(3, m.count()[27][9]);
+    }
+}

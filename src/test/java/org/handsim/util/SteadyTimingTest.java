@@ -1,0 +1,39 @@
+package org.handsim.util;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+/** {@link SteadyTiming}: the warm-up rules and the batches (what is timed, never how fast). */
+class SteadyTimingTest {
+    @Test
+    void warmsUpByTimeAndCountThenTimesTheBatches() {
+        long[] calls = {0};
+        SteadyTiming.Result r = SteadyTiming.median(() -> ++calls[0], 7);
+        assertTrue(r.warmupCalls() >= SteadyTiming.WARMUP_CALLS, "at least 10 000 warm-up calls: " + r.warmupCalls());
+        assertTrue(r.warmupSeconds() >= SteadyTiming.WARMUP_SECONDS, "at least 0.5 s of warm-up: " + r.warmupSeconds());
+        assertEquals(7, r.samples());
+        assertEquals(r.warmupCalls() + r.timedCalls(), calls[0], "every call is warm-up or timed");
+        assertTrue(r.timedCalls() % 7 == 0 && r.timedCalls() >= 7, "equal batches: " + r.timedCalls());
+        assertTrue(r.medianSeconds() > 0 && r.medianMicros() == r.medianSeconds() * 1e6);
+        assertThrows(IllegalArgumentException.class, () -> SteadyTiming.median(() -> 1, 0));
+    }
+
+    /** A slow operation: 10 000 calls would take 20 s, the warm-up stops at its cap (5 s); batches of one call. */
+    @Test
+    void aSlowOperationIsWarmedUpOnlyUpToTheCap() {
+        SteadyTiming.Result r = SteadyTiming.median(() -> {
+            long end = System.nanoTime() + 2_000_000;
+            long n = 0;
+            while (System.nanoTime() < end) n++;
+            return n;
+        }, 3);
+        assertTrue(r.warmupCalls() < SteadyTiming.WARMUP_CALLS, "capped: " + r.warmupCalls());
+        assertTrue(r.warmupSeconds() >= SteadyTiming.WARMUP_CAP_SECONDS && r.warmupSeconds() < SteadyTiming.WARMUP_CAP_SECONDS + 0.5,
+            "stops at the cap: " + r.warmupSeconds());
+        assertEquals(3, r.timedCalls(), "a call longer than a batch is a batch of one");
+        assertTrue(r.medianSeconds() >= 0.002, "at least the busy-wait: " + r.medianSeconds());
+    }
+}
