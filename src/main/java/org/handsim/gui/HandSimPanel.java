@@ -120,6 +120,7 @@ public class HandSimPanel extends JPanel {
         Scenario.ObjectPlacement before = scenario.object(), after = s.object();
         scenario = s;
         preview = null;
+        view.setFriction(s.friction(), s.coneEdges());
         runner.load(s);
         if (after == null) {
             objectModel = null;
