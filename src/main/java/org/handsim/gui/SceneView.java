@@ -321,7 +321,8 @@ public final class SceneView {
      * per contact m edges from the contact point to p − h·f_i and the m segments of the rim
      * through their ends (h = {@link #CONE_HEIGHT_M}; f_i the edges of {@link FrictionCone} about
      * the normal into the object, the opposite of the pose's outward normal), in the colour of
-     * the contact's finger. Returns the number of line segments. No allocation.
+     * the contact's finger (a contact without a normal direction gets none). Returns the number
+     * of line segments. No allocation.
      */
     private int coneLines(Pose p, int n) {
         int m = Math.min(coneEdgeCount, MAX_CONE_EDGES);
@@ -329,7 +330,9 @@ public final class SceneView {
         int[] fingers = p.contactFingers();
         int v = 0;
         for (int i = 0; i < n; i++) {
-            FrictionCone.edges(-nrm[3 * i], -nrm[3 * i + 1], -nrm[3 * i + 2], coneMu, m, coneEdges, 0);
+            double nx = nrm[3 * i], ny = nrm[3 * i + 1], nz = nrm[3 * i + 2], len2 = nx * nx + ny * ny + nz * nz;
+            if (!(len2 > 0) || !Double.isFinite(len2)) continue;    // no direction: no cone (never an exception on the EDT)
+            FrictionCone.edges(-nx, -ny, -nz, coneMu, m, coneEdges, 0);
             int rgb = CONE_RGB[Math.max(0, Math.min(2, fingers[i] - 1))];
             float r = ((rgb >> 16) & 255) / 255f, g = ((rgb >> 8) & 255) / 255f, b = (rgb & 255) / 255f;
             for (int e = 0; e < m; e++) {
@@ -350,6 +353,7 @@ public final class SceneView {
                 v += 4;
             }
         }
+        if (v == 0) return 0;
         cones.setCoordinates(0, coneCoords, 0, v);
         cones.setColors(0, coneColours, 0, v);
         cones.setValidVertexCount(v);
