@@ -26,6 +26,7 @@ public final class BenchMain {
         SUITES.put("vrml", new VrmlBench());
         SUITES.put("grasp", new GraspBench());
         SUITES.put("plan", new PlanBench());
+        SUITES.put("live-grasp", new LiveGraspBench());
     }
 
     public static void main(String[] args) throws Exception {

@@ -16,6 +16,7 @@ import org.handsim.plan.PlanSpec;
 import org.handsim.plan.TrialEngine;
 import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
+import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -55,6 +56,13 @@ public final class PlanCommand implements Callable<Integer> {
     @Option(names = "--friction", paramLabel = "MU", description = "Coulomb friction of the contacts (default: the template's object.friction, else 0.5)")
     Double friction;
 
+    @Option(names = "--units", paramLabel = "auto|mm|cm|m", defaultValue = "auto", description = {
+        "unit of the object file's coordinates. auto",
+        "(default): a template's object.units; an object",
+        "file by its size (metres up to 2 units across,",
+        "else mm, as the window's import)"})
+    String units;
+
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default out/plan-<name>)")
     Path out;
 
@@ -80,6 +88,8 @@ public final class PlanCommand implements Callable<Integer> {
         if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
             throw CliError.usage("handsim: --friction must be a finite number >= 0, got " + friction);
         }
+        Scenario.Units unit = units.equals("auto") ? null : Scenario.Units.of(units);
+        if (unit == null && !units.equals("auto")) throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + units + "'");
         TrialEngine eng;
         try {
             eng = Engines.find(engine);
@@ -89,7 +99,7 @@ public final class PlanCommand implements Callable<Integer> {
         PlanSpec planSpec;
         TrialRunner runner;
         try {
-            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES);
+            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES, unit);
             runner = new TrialRunner(planSpec);      // loads the object once here: a bad file is one error, not N rows
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
@@ -97,6 +107,9 @@ public final class PlanCommand implements Callable<Integer> {
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
         String url = master != null ? master : threads != null ? "local[" + threads + "]" : "local[*]";
         Path dir = out != null ? out : Path.of("out", "plan-" + planSpec.name());
+        if (unit == null && !target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json")) {
+            err.println("handsim plan: " + target.getFileName() + ": units " + planSpec.units().id() + " by its size (--units to choose)");
+        }
         ProgressBar bar = new ProgressBar(err, "handsim plan " + planSpec.name());
         long t0 = System.nanoTime();
         Map<String, Object> summary;

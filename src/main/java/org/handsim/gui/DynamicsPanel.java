@@ -31,9 +31,22 @@ import org.handsim.sim.Snapshot;
  * Gravity is a world-frame vector (m/s²), chosen from a list of directions or typed in;
  * applying it rebuilds the model (the simulation restarts at t = 0).
  *
+ * <h2>The grasp, live</h2>
+ * The <b>Grasp</b> box shows the grasp of the state on screen as {@code handsim grasp} reports
+ * it (issue 12; {@link org.handsim.sim.GraspAssessment}, DESIGN.md decisions 5 and 6): force
+ * closure (yes / no), the Ferrari–Canny ε and the volume of the L1 grasp wrench space, and the
+ * minimum hold over the six world directions ±x, ±y, ±z in newtons — with the friction μ and
+ * cone edges m of the scenario (the Objects panel's friction field), the simulated time it was
+ * evaluated at and the number of contacts. Numbers have four significant digits. It is
+ * evaluated off the simulation and Swing threads when the contacts change, at most 10 times a
+ * second ({@link LiveGrasp}), so during a run it may trail the view by up to ~0.1 s; paused or
+ * finished, it is the grasp of the state shown.
+ *
  * <p>Script names: button {@code dyn.run} ("Run with dynamics"), {@code dyn.gravity} (the
  * list), {@code dyn.gx}, {@code dyn.gy}, {@code dyn.gz}, button {@code dyn.applyGravity}
- * ("Apply gravity"). Event dispatch thread only.
+ * ("Apply gravity"); labels {@code dyn.grasp.closure}, {@code dyn.grasp.epsilon},
+ * {@code dyn.grasp.volume}, {@code dyn.grasp.hold}, {@code dyn.grasp.at}; the script's
+ * {@code log grasp} prints them ({@link #graspLine()}). Event dispatch thread only.
  */
 public final class DynamicsPanel {
     private static final String[] GRAVITY = {"-z (palm up)", "-x (hand on its side)", "+z (palm down)", "-y", "+y", "+x", "none", "custom"};
@@ -51,6 +64,10 @@ public final class DynamicsPanel {
     private long lastGeneration = -1;
     private String header = "";
     private final List<SimulationRunner.Event> shown = new ArrayList<>();
+    private final JLabel closure = graspLabel("dyn.grasp.closure"), epsilon = graspLabel("dyn.grasp.epsilon"),
+        volume = graspLabel("dyn.grasp.volume"), hold = graspLabel("dyn.grasp.hold"), graspAt = new JLabel();
+    private LiveGrasp.Result grasp;
+    private String graspNote = "";
 
     DynamicsPanel(HandSimWindow window) {
         this.window = window;
@@ -95,6 +112,20 @@ public final class DynamicsPanel {
         tp.add(sp, BorderLayout.CENTER);
         panel.add(tp);
 
+        JPanel gp = Widgets.titled(new JPanel(new GridBagLayout()), "Grasp (live): as handsim grasp reports it");
+        String[] names = {"force closure", "ε (epsilon)", "volume", "min. hold"};
+        JLabel[] values = {closure, epsilon, volume, hold};
+        for (int r = 0; r < names.length; r++) {
+            JLabel l = new JLabel(names[r]);
+            l.setFont(Widgets.small());
+            gp.add(l, Widgets.at(0, r));
+            gp.add(values[r], Widgets.at(1, r));
+        }
+        graspAt.setName("dyn.grasp.at");
+        gp.add(graspAt, Widgets.at(0, names.length, 2));
+        showGrasp();
+        panel.add(gp);
+
         events.setName("dyn.events");
         events.setEditable(false);
         events.setLineWrap(true);
@@ -103,6 +134,13 @@ public final class DynamicsPanel {
         JPanel ep = Widgets.titled(new JPanel(new BorderLayout()), "Events");
         ep.add(new JScrollPane(events), BorderLayout.CENTER);
         panel.add(ep);
+    }
+
+    private static JLabel graspLabel(String name) {
+        JLabel l = new JLabel("–");
+        l.setName(name);
+        l.setFont(l.getFont().deriveFont(java.awt.Font.BOLD));
+        return l;
     }
 
     private static int presetOf(double[] g) {
@@ -148,8 +186,66 @@ public final class DynamicsPanel {
                 sc.name(), sc.object() != null ? " with " + sc.object().file().getFileName() : "", Widgets.fmt(sc.duration(), 3));
             for (String w : s.warnings()) header += "warning: " + w + System.lineSeparator();
             render();
+            grasp = null;       // the new model's grasp comes from its first evaluation
+            showGrasp();
         }
         table.set(s);
+    }
+
+    /**
+     * Shows a grasp evaluation (called by the window's timer with each new one). Returns false if
+     * it belongs to a model generation the panel has not shown yet (the window offers it again);
+     * one of an earlier generation is dropped.
+     */
+    boolean grasp(LiveGrasp.Result g) {
+        if (g.generation() > lastGeneration) return false;
+        if (g.generation() == lastGeneration) {
+            grasp = g;
+            showGrasp();
+        }
+        return true;
+    }
+
+    private void showGrasp() {
+        LiveGrasp.Result g = grasp;
+        if (g == null) {
+            for (JLabel l : new JLabel[] {closure, epsilon, volume, hold}) {
+                l.setText("–");
+                l.setForeground(java.awt.Color.DARK_GRAY);
+            }
+            note("not evaluated yet");
+            return;
+        }
+        if (g.assessment() == null) {
+            for (JLabel l : new JLabel[] {closure, epsilon, volume, hold}) l.setText("–");
+            note("cannot evaluate: " + g.error());
+            return;
+        }
+        org.handsim.sim.GraspAssessment a = g.assessment();
+        boolean fc = a.quality().forceClosure();
+        closure.setText(fc ? "yes" : "no");
+        closure.setForeground(fc ? Widgets.OK : Widgets.ERROR);
+        epsilon.setText(Widgets.significant(a.quality().epsilon(), 4));
+        volume.setText(Widgets.significant(a.quality().volume(), 4));
+        hold.setText(Widgets.significant(a.holdMinN(), 4) + " N");
+        note(String.format(Locale.ROOT, "%d contact%s as at t = %.4f s (evaluated when they change), μ %s, %d cone edges",
+            a.contacts().size(), a.contacts().size() == 1 ? "" : "s", a.timeS(), org.handsim.util.Decimal.format(g.mu()), g.edges()));
+    }
+
+    /**
+     * The Grasp box as one line (the script's {@code log grasp}): {@code force_closure=yes
+     * epsilon=0.1984  volume=0.08472  hold_min=58.84 N  6 contacts as at t = 2.2560 s (evaluated when they change),
+     * μ 0.5, 8 cone edges}.
+     */
+    public String graspLine() {
+        return "force_closure=" + closure.getText() + "  epsilon=" + epsilon.getText() + "  volume=" + volume.getText()
+            + "  hold_min=" + hold.getText() + "  " + graspNote;
+    }
+
+    /** The line under the grasp figures (wrapped at the panel's width). */
+    private void note(String text) {
+        graspNote = text;
+        graspAt.setText("<html><body style='width: 240px'><small>" + text.replace("&", "&amp;").replace("<", "&lt;") + "</small></body></html>");
     }
 
     /** Lists a clutch state change (called by the window's view update) in time order. */

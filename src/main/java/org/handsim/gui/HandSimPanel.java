@@ -37,7 +37,9 @@ import org.handsim.sim.Scenario;
  * other method runs on the event dispatch thread. Step listeners are called there too, each time
  * the view shows a newer state of the model (at most every {@value #TICK_MS} ms: the model may
  * have taken many steps in between; {@link SimulationRunner.State} says where it is).
- * {@link #dispose()} stops the model's thread and Java3D's.
+ * {@link #dispose()} stops the model's thread and Java3D's. The grasp of the model (force
+ * closure, ε, volume, hold), evaluated live off both threads: {@code runner().grasp().latest()}
+ * ({@link LiveGrasp}); the friction cones: {@code view().setVisible(SceneView.Part.CONES, true)}.
  */
 public class HandSimPanel extends JPanel {
     private static final long serialVersionUID = 1L;
@@ -120,6 +122,7 @@ public class HandSimPanel extends JPanel {
         Scenario.ObjectPlacement before = scenario.object(), after = s.object();
         scenario = s;
         preview = null;
+        view.setFriction(s.friction(), s.coneEdges());
         runner.load(s);
         if (after == null) {
             objectModel = null;

@@ -75,7 +75,8 @@ import org.handsim.util.JsonWriter;
  *       (Ctrl+I: VRML97, OBJ, STL), Export traces (Ctrl+E: trace.csv of the run so far, the
  *       {@code handsim run} contract), Save charts (PNG or SVG), Screenshot (F12), Close (Ctrl+W).</li>
  *   <li><b>View</b>: camera Home (H), Fit to the scene (F), Front (1), Top (2), Side (3);
- *       contact points, normals; per finger and joint the chart series.</li>
+ *       contact points, normals, the object, friction cones (off at first); per finger and
+ *       joint the chart series.</li>
  *   <li><b>Run</b>: Play/Pause (Space), Step (→), Reset (R).</li>
  * </ul>
  * Keys without Ctrl act only while no text field has the keyboard focus (so typing an "r" into
@@ -125,7 +126,7 @@ public final class HandSimWindow {
     private final KeyEventDispatcher keys = this::plainKey;
     private int ticks;
     private boolean chartsDirty;
-    private long shownGeneration = -1;
+    private long shownGeneration = -1, shownGraspSerial = -1;
     private String shownError, shownNote;
     private Path scenarioFile;
 
@@ -148,6 +149,7 @@ public final class HandSimWindow {
         sim.setMessages(this::status);
         sim.addStepListener(this::update);
         sim.addTickHook(this::tickCharts);
+        sim.addTickHook(this::tickGrasp);
         charts.setDuration(scenario.duration());
 
         frame = new JFrame("HandSim — BarrettHand simulator");
@@ -270,9 +272,8 @@ public final class HandSimWindow {
         view.add(check("view.contacts", "Contact points", true, on -> sim.view().setVisible(SceneView.Part.CONTACTS, on)));
         view.add(check("view.normals", "Contact normals", true, on -> sim.view().setVisible(SceneView.Part.NORMALS, on)));
         view.add(check("view.object", "Object", true, on -> sim.view().setVisible(SceneView.Part.OBJECT, on)));
-        JCheckBoxMenuItem cones = check("view.cones", "Friction cones", false, on -> { });
-        cones.setEnabled(false);
-        cones.setToolTipText("needs the grasp analysis (issue 12)");
+        JCheckBoxMenuItem cones = check("view.cones", "Friction cones", false, on -> sim.view().setVisible(SceneView.Part.CONES, on));
+        cones.setToolTipText("the linearised friction cone at each contact, in its finger's colour (the object's friction μ)");
         view.add(cones);
         view.addSeparator();
         JMenu series = new JMenu("Chart series");
@@ -696,6 +697,12 @@ public final class HandSimWindow {
             charts.flush();
             chartsDirty = false;
         }
+    }
+
+    /** Every tick: a newer grasp evaluation into the Dynamics panel. */
+    private void tickGrasp() {
+        LiveGrasp.Result g = sim.runner().grasp().latest();
+        if (g != null && g.serial() != shownGraspSerial && dynamics.grasp(g)) shownGraspSerial = g.serial();
     }
 
     /** Runs the view update now and draws the charts (scripts call it before a screenshot). */

@@ -264,7 +264,7 @@ public final class KinematicsPanel {
                     all.append(one);
                 }
             }
-            p = p.withContacts(all);
+            p = p.withContacts(all, perFinger);
         }
         window.preview(p);
         StringBuilder touching = new StringBuilder();

@@ -13,6 +13,7 @@ import javax.swing.JPanel;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.Home;
 import org.handsim.sim.MeshFiles;
@@ -39,9 +40,16 @@ import org.handsim.sim.Scenario;
  * rebuilds the model with the object ({@code Scenario.withObject}); a file that fails to load is
  * reported in the window (status bar; a dialog when interactive) and changes nothing.
  *
+ * <h2>Friction</h2>
+ * The object's Coulomb coefficient μ (scenario field {@code object.friction}, default 0.5; 0 is
+ * frictionless): the contact forces of the simulation, the friction cones the view draws and the
+ * grasp the Dynamics panel evaluates all use it. Enter (or Place) rebuilds the model with it;
+ * a saved scenario keeps it.
+ *
  * <p>Script names: buttons {@code obj.import} ("Import…"), {@code obj.place} ("Place"),
  * {@code obj.remove} ("Remove"); fields {@code obj.x}, {@code obj.y}, {@code obj.z},
- * {@code obj.rx}, {@code obj.ry}, {@code obj.rz}, {@code obj.scale}; list {@code obj.units}.
+ * {@code obj.rx}, {@code obj.ry}, {@code obj.rz}, {@code obj.scale}, {@code obj.friction};
+ * list {@code obj.units}.
  * The script action {@code import FILE} does what the file chooser does. Event dispatch thread only.
  */
 public final class ObjectsPanel {
@@ -52,7 +60,7 @@ public final class ObjectsPanel {
     private final JPanel panel = Widgets.column();
     private final JLabel file = new JLabel("no object");
     private final JLabel placed = new JLabel(" ");
-    private final JTextField x, y, z, rx, ry, rz, scale;
+    private final JTextField x, y, z, rx, ry, rz, scale, friction;
     private final JComboBox<String> units = new JComboBox<>(UNITS);
     private boolean syncing;
 
@@ -99,6 +107,15 @@ public final class ObjectsPanel {
         place.add(Widgets.note("Rotation: axis-angle vector (axis × angle in degrees). The scale multiplies the file's "
             + "coordinates after the units."), Widgets.at(0, 3, 4));
         panel.add(place);
+
+        JPanel fr = Widgets.titled(new JPanel(new GridBagLayout()), "Friction of the contacts");
+        friction = Widgets.field("obj.friction", org.handsim.util.Decimal.format(FrictionCone.DEFAULT_MU), 6, null);
+        friction.addActionListener(e -> applyFriction());
+        fr.add(new JLabel("Coulomb μ"), Widgets.at(0, 0));
+        fr.add(friction, Widgets.at(1, 0));
+        fr.add(Widgets.note("μ ≥ 0 (0: frictionless). The simulation's contact forces, the friction cones (View menu) and "
+            + "the grasp (Dynamics panel) use it; Enter restarts the model at t = 0."), Widgets.at(0, 1, 4));
+        panel.add(fr);
     }
 
     JComponent component() {
@@ -196,6 +213,29 @@ public final class ObjectsPanel {
         window.status("object removed", false);
     }
 
+    /** Friction field's Enter: the working scenario with the object's μ, the model rebuilt. */
+    private void applyFriction() {
+        Scenario.ObjectPlacement p = window.scenario().object();
+        if (p == null) {
+            window.status("import an object first: the friction is the object's", true);
+            return;
+        }
+        try {
+            double mu = frictionValue();
+            window.load(window.scenario().withFriction(mu));
+            window.status(String.format(Locale.ROOT, "friction μ = %s applied%s: the model restarts at t = 0", Widgets.significant(mu, 4),
+                mu == 0 ? " (frictionless contacts)" : ""), false);
+        } catch (IllegalArgumentException e) {
+            window.status("friction not applied: " + e.getMessage(), true);
+        }
+    }
+
+    private double frictionValue() {
+        double mu = Widgets.number(friction, "friction");
+        if (!(mu >= 0)) throw new IllegalArgumentException("friction must be >= 0, got " + friction.getText().trim());
+        return mu;
+    }
+
     private void place() {
         Scenario.ObjectPlacement p = window.scenario().object();
         if (p == null) {
@@ -209,7 +249,8 @@ public final class ObjectsPanel {
             double sc = Widgets.number(scale, "scale");
             if (!(sc > 0)) throw new IllegalArgumentException("scale must be > 0, got " + sc);
             Scenario.Units u = chosenUnits() != null ? chosenUnits() : p.units();
-            window.load(window.scenario().withObject(Scenario.ObjectPlacement.of(p.file(), position, rotation, sc, p.divisions(), u).withFriction(p.friction())));
+            double mu = frictionValue();
+            window.load(window.scenario().withObject(Scenario.ObjectPlacement.of(p.file(), position, rotation, sc, p.divisions(), u).withFriction(mu)));
             placed.setText("placed by hand");
             window.status(String.format(Locale.ROOT, "object placed at (%.3f, %.3f, %.3f) m", position[0], position[1], position[2]), false);
         } catch (IllegalArgumentException e) {
@@ -229,6 +270,7 @@ public final class ObjectsPanel {
         ry.setText(Widgets.fmt(Math.toDegrees(r[1]), 2));
         rz.setText(Widgets.fmt(Math.toDegrees(r[2]), 2));
         scale.setText(Widgets.fmt(p.scale(), 4));
+        friction.setText(org.handsim.util.Decimal.format(p.friction()));   // the number the scenario holds, shortest
         syncing = true;
         try {
             if (chosenUnits() != null) units.setSelectedItem(p.units().id());

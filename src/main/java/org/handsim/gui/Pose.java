@@ -15,13 +15,15 @@ import org.handsim.sim.Snapshot;
  * @param contactPoints  3 per contact, world frame, m
  * @param contactNormals 3 per contact, outward object normal, world frame
  * @param contactForces  per contact, N
+ * @param contactFingers per contact, the finger 1..3 that touches
  * @param target         a marker in the world (m), or null
  * @param closest        a second marker (the closest reachable point), or null
  */
 public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] contactPoints, double[] contactNormals,
-                   double[] contactForces, double[] target, double[] closest) {
+                   double[] contactForces, int[] contactFingers, double[] target, double[] closest) {
 
     private static final double[] NONE = new double[0];
+    private static final int[] NO_FINGERS = new int[0];
 
     /** The pose of a simulation snapshot (the arrays are shared with the immutable snapshot). */
     public static Pose of(Snapshot s, RigidTransform worldFromPalm) {
@@ -29,6 +31,7 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
         int n = 0;
         for (Snapshot.FingerSnapshot f : s.fingers()) n += f.contactCount();
         double[] p = new double[3 * n], nn = new double[3 * n], force = new double[n];
+        int[] fingers = new int[n];
         int at = 0;
         for (int k = 0; k < 3; k++) {
             Snapshot.FingerSnapshot f = s.fingers()[k];
@@ -37,9 +40,10 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
             System.arraycopy(f.contactPoints(), 0, p, 3 * at, 3 * c);
             System.arraycopy(f.contactNormals(), 0, nn, 3 * at, 3 * c);
             System.arraycopy(f.contactForces(), 0, force, at, c);
+            java.util.Arrays.fill(fingers, at, at + c, k + 1);
             at += c;
         }
-        return new Pose(worldFromPalm.toArray(), frames, p, nn, force, null, null);
+        return new Pose(worldFromPalm.toArray(), frames, p, nn, force, fingers, null, null);
     }
 
     /**
@@ -55,23 +59,29 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
             FingerKinematics.of(k).framesInPalm(joints[k - 1], inPalm);
             for (int j = 0; j < 4; j++) RigidTransform.multiply(wp, 0, inPalm, 12 * j, frames[k - 1], 12 * j);
         }
-        return new Pose(wp, frames, NONE, NONE, NONE, null, null);
+        return new Pose(wp, frames, NONE, NONE, NONE, NO_FINGERS, null, null);
     }
 
     /** A copy with markers (world frame, m; either may be null). */
     public Pose withMarkers(double[] targetWorld, double[] closestWorld) {
-        return new Pose(worldFromPalm, framesWorld, contactPoints, contactNormals, contactForces, targetWorld, closestWorld);
+        return new Pose(worldFromPalm, framesWorld, contactPoints, contactNormals, contactForces, contactFingers, targetWorld, closestWorld);
     }
 
-    /** A copy with the contacts of a set (points and outward normals, forces 0: a preview's, not solved). */
-    public Pose withContacts(org.handsim.sim.ContactSet c) {
+    /**
+     * A copy with the contacts of a set (points and outward normals, forces 0: a preview's, not
+     * solved), finger by finger: the first {@code perFinger[0]} are finger 1's, and so on.
+     */
+    public Pose withContacts(org.handsim.sim.ContactSet c, int[] perFinger) {
         int n = c.size();
         double[] p = new double[3 * n], nn = new double[3 * n];
-        for (int i = 0; i < n; i++) {
+        int[] fingers = new int[n];
+        for (int i = 0, k = 0, left = perFinger[0]; i < n; i++, left--) {
+            while (left == 0 && k < 2) left = perFinger[++k];
+            fingers[i] = k + 1;
             System.arraycopy(c.point(i), 0, p, 3 * i, 3);
             System.arraycopy(c.normal(i), 0, nn, 3 * i, 3);
         }
-        return new Pose(worldFromPalm, framesWorld, p, nn, new double[n], target, closest);
+        return new Pose(worldFromPalm, framesWorld, p, nn, new double[n], fingers, target, closest);
     }
 
     /** @return the number of contacts */

@@ -5,6 +5,7 @@ import java.lang.management.ManagementFactory;
 import java.util.BitSet;
 import java.util.Iterator;
 import java.util.concurrent.atomic.AtomicLong;
+import org.handsim.grasp.FrictionCone;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
 import org.jogamp.java3d.AmbientLight;
@@ -56,6 +57,8 @@ import org.jogamp.vecmath.Vector3f;
  *          ├─ Switch object  └─ TransformGroup object ← world ← object · scale
  *          ├─ Switch contacts (per-child mask)  spheres at the contact points, one LineArray
  *          │                                   of normals (outward, 35 mm), drawn over the scene
+ *          ├─ Switch cones    one LineArray: each contact's linearised friction cone, in its
+ *          │                  finger's colour, drawn over the scene (View ▸ Friction cones)
  *          └─ Switch markers  the inverse-kinematics target and its closest reachable point
  * </pre>
  * One mesh per link type serves all three fingers: the nine link {@link Shape3D}s share three
@@ -77,6 +80,16 @@ public final class SceneView {
     public static final int BACKGROUND_RGB = 0x56616E;
     static final int MAX_CONTACTS = 64;
     static final double NORMAL_LENGTH_M = 0.035;
+    /**
+     * Height of a drawn friction cone along the contact normal, m: each edge f_i (normal component
+     * 1, {@link FrictionCone}) is drawn from the contact point back to p − h·f_i, outside the
+     * object, so a cone is h high and μ·h wide in radius, on the scale of the links (~50 mm).
+     */
+    static final double CONE_HEIGHT_M = 0.02;
+    /** Most edges a drawn cone has (a cone of more edges is drawn with this many). */
+    static final int MAX_CONE_EDGES = 32;
+    /** Colours of the fingers' cones, 0xRRGGBB: the charts' finger colours ({@link TraceCharts#FINGER_RGB}). */
+    static final int[] CONE_RGB = TraceCharts.FINGER_RGB;
     private static final BoundingSphere EVERYWHERE = new BoundingSphere(new Point3d(), 1000);
 
     private final FrameCountingCanvas canvas;
@@ -86,6 +99,13 @@ public final class SceneView {
     private final TransformGroup[][] linkTg = new TransformGroup[3][3];
     private final TransformGroup objectTg = writable(new TransformGroup());
     private final Switch handSwitch = switchNode(), objectSwitch = switchNode(), contactSwitch = switchNode(), markerSwitch = switchNode();
+    private final Switch coneSwitch = switchNode();
+    private final LineArray cones = new LineArray(4 * MAX_CONE_EDGES * MAX_CONTACTS, GeometryArray.COORDINATES | GeometryArray.COLOR_3);
+    private final float[] coneCoords = new float[12 * MAX_CONE_EDGES * MAX_CONTACTS];
+    private final float[] coneColours = new float[12 * MAX_CONE_EDGES * MAX_CONTACTS];
+    private final double[] coneEdges = new double[3 * MAX_CONE_EDGES];
+    private double coneMu = FrictionCone.DEFAULT_MU;
+    private int coneEdgeCount = FrictionCone.DEFAULT_EDGES;
     private final TransformGroup[] contactTg = new TransformGroup[MAX_CONTACTS];
     private final LineArray normals = new LineArray(2 * MAX_CONTACTS, GeometryArray.COORDINATES);
     private final float[] normalCoords = new float[6 * MAX_CONTACTS];
@@ -96,7 +116,8 @@ public final class SceneView {
     private final Vector3d scratchV = new Vector3d();
     private final double[] m16 = new double[16];
     private BranchGroup objectBranch;
-    private boolean showContacts = true, showNormals = true;
+    private boolean showContacts = true, showNormals = true, showCones;
+    private Pose lastPose;
     private final View view3d;
     private final int handTriangles;
 
@@ -200,6 +221,18 @@ public final class SceneView {
         contactSwitch.setChildMask(new BitSet());
         spinTg.addChild(contactSwitch);
 
+        // friction cones: per-vertex colours (the finger's), over the scene like the normals
+        cones.setCapability(GeometryArray.ALLOW_COORDINATE_WRITE);
+        cones.setCapability(GeometryArray.ALLOW_COLOR_WRITE);
+        cones.setCapability(GeometryArray.ALLOW_COUNT_WRITE);
+        cones.setValidVertexCount(2);
+        Appearance coneLook = new Appearance();
+        coneLook.setLineAttributes(new LineAttributes(2f, LineAttributes.PATTERN_SOLID, true));
+        onTop(coneLook);
+        coneSwitch.addChild(new Shape3D(cones, coneLook));
+        coneSwitch.setWhichChild(Switch.CHILD_NONE);
+        spinTg.addChild(coneSwitch);
+
         // inverse-kinematics markers
         Appearance targetLook = appearance(new float[] {0.9f, 0.2f, 0.9f}, null);
         targetLook.getMaterial().setEmissiveColor(0.4f, 0f, 0.4f);
@@ -253,6 +286,7 @@ public final class SceneView {
 
     /** Shows a pose: palm, links, contacts and markers. Event dispatch thread only. */
     public void show(Pose p) {
+        lastPose = p;
         set(palmTg, p.worldFromPalm(), 0, 1);
         for (int k = 0; k < 3; k++) {
             for (int j = 0; j < 3; j++) set(linkTg[k][j], p.framesWorld()[k], 12 * (j + 1), 1);
@@ -274,10 +308,80 @@ public final class SceneView {
             if (showNormals) mask.set(MAX_CONTACTS);
         }
         contactSwitch.setChildMask(showContacts ? mask : new BitSet());
+        int lines = showCones && n > 0 ? coneLines(p, n) : 0;
+        coneSwitch.setWhichChild(showCones && lines > 0 ? Switch.CHILD_ALL : Switch.CHILD_NONE);
         BitSet markers = new BitSet(2);
         if (p.target() != null) { translate(targetTg, p.target(), 0); markers.set(0); }
         if (p.closest() != null) { translate(closestTg, p.closest(), 0); markers.set(1); }
         markerSwitch.setChildMask(markers);
+    }
+
+    /**
+     * Writes the friction cones of the first {@code n} contacts of {@code p} into the cone lines:
+     * per contact m edges from the contact point to p − h·f_i and the m segments of the rim
+     * through their ends (h = {@link #CONE_HEIGHT_M}; f_i the edges of {@link FrictionCone} about
+     * the normal into the object, the opposite of the pose's outward normal), in the colour of
+     * the contact's finger (a contact without a normal direction gets none). Returns the number
+     * of line segments. No allocation.
+     */
+    private int coneLines(Pose p, int n) {
+        int m = Math.min(coneEdgeCount, MAX_CONE_EDGES);
+        double[] pts = p.contactPoints(), nrm = p.contactNormals();
+        int[] fingers = p.contactFingers();
+        int v = 0;
+        for (int i = 0; i < n; i++) {
+            double nx = nrm[3 * i], ny = nrm[3 * i + 1], nz = nrm[3 * i + 2], len2 = nx * nx + ny * ny + nz * nz;
+            if (!(len2 > 0) || !Double.isFinite(len2)) continue;    // no direction: no cone (never an exception on the EDT)
+            FrictionCone.edges(-nx, -ny, -nz, coneMu, m, coneEdges, 0);
+            int rgb = CONE_RGB[Math.max(0, Math.min(2, fingers[i] - 1))];
+            float r = ((rgb >> 16) & 255) / 255f, g = ((rgb >> 8) & 255) / 255f, b = (rgb & 255) / 255f;
+            for (int e = 0; e < m; e++) {
+                int e2 = (e + 1) % m;
+                for (int c = 0; c < 3; c++) {
+                    double apex = pts[3 * i + c];
+                    double rim = apex - CONE_HEIGHT_M * coneEdges[3 * e + c], rim2 = apex - CONE_HEIGHT_M * coneEdges[3 * e2 + c];
+                    coneCoords[3 * v + c] = (float) apex;            // edge: apex to rim
+                    coneCoords[3 * v + 3 + c] = (float) rim;
+                    coneCoords[3 * v + 6 + c] = (float) rim;         // rim segment
+                    coneCoords[3 * v + 9 + c] = (float) rim2;
+                }
+                for (int k = 0; k < 4; k++) {
+                    coneColours[3 * (v + k)] = r;
+                    coneColours[3 * (v + k) + 1] = g;
+                    coneColours[3 * (v + k) + 2] = b;
+                }
+                v += 4;
+            }
+        }
+        if (v == 0) return 0;
+        cones.setCoordinates(0, coneCoords, 0, v);
+        cones.setColors(0, coneColours, 0, v);
+        cones.setValidVertexCount(v);
+        return v / 2;
+    }
+
+    /**
+     * The friction the cones are drawn with: Coulomb μ and the edges m of the linearised cone
+     * (the scenario's {@code object.friction} and cone edges; at most {@link #MAX_CONE_EDGES}
+     * are drawn). From the next pose shown. Event dispatch thread only.
+     */
+    public void setFriction(double mu, int edges) {
+        coneMu = FrictionCone.checkMu(mu);
+        coneEdgeCount = FrictionCone.checkEdges(edges);
+    }
+
+    /**
+     * Where a world point is drawn in the canvas, pixels from its top-left corner {x, y} (for
+     * tests: where a contact is on a screenshot). Uses the last rendered view. Event dispatch thread.
+     */
+    public double[] pixelOf(double[] world) {
+        Transform3D toPlate = new Transform3D();
+        canvas.getVworldToImagePlate(toPlate);
+        Point3d v = new Point3d(world[0], world[2], -world[1]);   // world (x, y, z) -> vworld (x, z, -y); the spin is off
+        toPlate.transform(v);
+        org.jogamp.vecmath.Point2d px = new org.jogamp.vecmath.Point2d();
+        canvas.getPixelLocationFromImagePlate(v, px);
+        return new double[] {px.x, px.y};
     }
 
     /**
@@ -308,11 +412,19 @@ public final class SceneView {
     }
 
     /** What {@link #setVisible} can hide. */
-    public enum Part { HAND, OBJECT, CONTACTS, NORMALS }
+    public enum Part { HAND, OBJECT, CONTACTS, NORMALS, CONES }
 
-    /** Shows or hides a part of the scene (contacts and normals from the next pose shown). Event dispatch thread only. */
+    /**
+     * Shows or hides a part of the scene (contacts and normals from the next pose shown; the
+     * friction cones, hidden at first, at once). Event dispatch thread only.
+     */
     public void setVisible(Part part, boolean on) {
         switch (part) {
+            case CONES:
+                showCones = on;
+                if (!on) coneSwitch.setWhichChild(Switch.CHILD_NONE);
+                else if (lastPose != null) show(lastPose);
+                break;
             case HAND: handSwitch.setWhichChild(on ? Switch.CHILD_ALL : Switch.CHILD_NONE); break;
             case OBJECT: objectSwitch.setWhichChild(on ? Switch.CHILD_ALL : Switch.CHILD_NONE); break;
             case NORMALS:

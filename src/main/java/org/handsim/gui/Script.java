@@ -43,7 +43,8 @@ import org.handsim.sim.ClutchState;
  * speed FACTOR | max        simulation speed: 1 = real time, max = as fast as possible
  * wait MS                   wait MS milliseconds of wall time
  * screenshot FILE           save the whole window as PNG
- * show hand|object|contacts|normals on|off     show or hide a part of the 3D scene
+ * show hand|object|contacts|normals|cones on|off   show or hide a part of the 3D scene (cones:
+ *                           the friction cones at the contacts, as View ▸ Friction cones)
  * assert-state FINGER S1[|S2...]       fail unless finger 1..3's clutch is in one of the
  *                                      states (FREE, BLOCKED, BROKEN, STALLED)
  * assert-status TEXT        fail unless the status bar contains TEXT
@@ -51,9 +52,13 @@ import org.handsim.sim.ClutchState;
  *                           finished, reset, ready) contains TEXT
  * assert-time SECONDS       fail unless the model is at that simulated time (within dt/2)
  * assert-contacts N         fail unless the hand has N contacts now (the preview's, if one is shown)
- * log dynamics|state|events|ik|charts  print the Dynamics table, the time and clutch states,
- *                                      the Dynamics events, the Kinematics answer, or the
- *                                      charts' time axis, points and series shown
+ * log dynamics|state|events|ik|charts|grasp   print the Dynamics table, the time and clutch
+ *                                      states, the Dynamics events, the Kinematics answer, the
+ *                                      charts' time axis, points and series shown, or the
+ *                                      Dynamics panel's Grasp box (after waiting for the
+ *                                      evaluation of the state shown)
+ * log contacts              print each contact of the state shown: finger, point (world, m)
+ *                           and where the 3D view draws it (pixels in the window)
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
  * Output lines start with {@code gui: }. An unknown verb or a bad argument is an error naming
@@ -92,11 +97,11 @@ public final class Script {
         + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
         + "  wait MS              wait MS milliseconds%n"
         + "  screenshot FILE      save the whole window as PNG%n"
-        + "  show hand|object|contacts|normals on|off%n"
+        + "  show hand|object|contacts|normals|cones on|off%n"
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
-        + "  log dynamics|state|events|ik|charts%n"
+        + "  log dynamics|state|events|ik|charts|grasp|contacts%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
         + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
         + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
@@ -249,8 +254,8 @@ public final class Script {
                 return List.of(rest.toLowerCase(Locale.ROOT));
             case SHOW: {
                 String[] p = rest.toLowerCase(Locale.ROOT).split("\\s+");
-                if (p.length != 2 || !Arrays.asList("hand", "object", "contacts", "normals").contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
-                    throw error(src, n, "show needs hand|object|contacts|normals and on|off, got '" + rest + "'");
+                if (p.length != 2 || !Arrays.asList("hand", "object", "contacts", "normals", "cones").contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
+                    throw error(src, n, "show needs hand|object|contacts|normals|cones and on|off, got '" + rest + "'");
                 }
                 return List.of(p[0], p[1]);
             }
@@ -276,8 +281,8 @@ public final class Script {
                 return List.of(p[0], p[1]);
             }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events, ik or charts, got '" + rest + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp or contacts, got '" + rest + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

@@ -128,7 +128,14 @@ public final class ScriptRunner {
             case SHOW: {
                 SceneView.Part p = SceneView.Part.valueOf(a.arg(0).toUpperCase(Locale.ROOT));
                 boolean on = a.arg(1).equals("on");
-                edt(() -> { window.view().setVisible(p, on); return null; });
+                edt(() -> {
+                    window.view().setVisible(p, on);
+                    // the View menu's check box says what is shown
+                    AbstractButton item = window.menuItems().get("view." + a.arg(0));
+                    if (item != null) item.setSelected(on);
+                    return null;
+                });
+                say("show " + a.arg(0) + " " + a.arg(1));
                 break;
             }
             case ASSERT_STATE: {
@@ -270,6 +277,29 @@ public final class ScriptRunner {
         int n = 0;
         if (s.snapshot() != null) for (org.handsim.sim.Snapshot.FingerSnapshot f : s.snapshot().fingers()) n += f.contactCount();
         return n;
+    }
+
+    /**
+     * The contacts of the state shown, one line each: {@code finger 3 at (x, y, z) m, pixel
+     * (px, py)} — the pixel where the 3D view draws the point, in window coordinates (as the
+     * screenshot's regions). EDT.
+     */
+    private List<String> contactLines() {
+        List<String> out = new ArrayList<>();
+        SimulationRunner.State s = window.runner().latest();
+        if (s.snapshot() == null) return out;
+        java.awt.Point at = SwingUtilities.convertPoint(window.view().canvas().getParent(), window.view().canvas().getLocation(), window.frame());
+        for (int k = 1; k <= 3; k++) {
+            org.handsim.sim.Snapshot.FingerSnapshot f = s.snapshot().fingers()[k - 1];
+            double[] p = f.contactPoints();
+            for (int i = 0; i < f.contactCount(); i++) {
+                double[] w = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+                double[] px = window.view().pixelOf(w);
+                out.add(String.format(Locale.ROOT, "finger %d at (%.5f, %.5f, %.5f) m, pixel (%.1f, %.1f)", k, w[0], w[1], w[2],
+                    at.x + px[0], at.y + px[1]));
+            }
+        }
+        return out;
     }
 
     /**
@@ -442,6 +472,17 @@ public final class ScriptRunner {
             case "ik":
                 for (String l : edt(() -> window.kinematics().ikText()).split("\n")) say("ik: " + l);
                 break;
+            case "grasp":
+                window.runner().grasp().awaitIdle();
+                edt(() -> { window.refreshNow(); return null; });
+                say("grasp: " + edt(() -> window.dynamics().graspLine()));
+                break;
+            case "contacts": {
+                List<String> lines = edt(this::contactLines);
+                say("contacts: " + lines.size());
+                for (String l : lines) say("contact: " + l);
+                break;
+            }
             case "charts": {
                 window.charts().awaitDrawn();
                 double[] r = window.charts().timeRange();

@@ -27,7 +27,10 @@ import org.handsim.sim.Snapshot;
  *       in N), one every {@link #TRACE_INTERVAL_S} simulated seconds, so the charts get every
  *       sample however fast the model runs and however seldom the window looks;</li>
  *   <li>{@link #drainEvents}: every change of a finger's clutch state, with the time of the
- *       step it happened in, for the same reason.</li>
+ *       step it happened in, for the same reason;</li>
+ *   <li>{@link #grasp()}: the grasp's force closure, ε, volume and minimum hold, evaluated on a
+ *       thread of its own from copies offered at each publication when the contacts changed,
+ *       at most 10 times a second ({@link LiveGrasp}).</li>
  * </ul>
  * Commands ({@link #load}, {@link #play}, {@link #pause}, {@link #step}, {@link #reset},
  * {@link #setSpeed}) may be called from any thread; they are queued and run in order on the
@@ -97,6 +100,7 @@ public final class SimulationRunner implements AutoCloseable {
     private final Thread thread;
     private final BlockingQueue<Runnable> commands = new LinkedBlockingQueue<>();
     private final ConcurrentLinkedQueue<double[]> trace = new ConcurrentLinkedQueue<>();
+    private final LiveGrasp grasp = new LiveGrasp();
     private volatile State latest;
     private volatile boolean closed;
 
@@ -181,6 +185,9 @@ public final class SimulationRunner implements AutoCloseable {
     /** The newest published state (never null). */
     public State latest() { return latest; }
 
+    /** The live evaluation of the model's grasp ({@link LiveGrasp#latest()}: the newest result). */
+    public LiveGrasp grasp() { return grasp; }
+
     /** Moves every trace row published so far into {@code sink}; returns how many. */
     public int drainTrace(java.util.function.Consumer<double[]> sink) {
         int n = 0;
@@ -230,6 +237,7 @@ public final class SimulationRunner implements AutoCloseable {
     public void close() {
         closed = true;
         thread.interrupt();
+        grasp.close();
     }
 
     // ------------------------------------------------------------------ the loop (simulation thread)
@@ -366,6 +374,8 @@ public final class SimulationRunner implements AutoCloseable {
             snap = model.snapshot();
             for (int k = 1; k <= 3; k++) br[k - 1] = model.breakawayTime(k);
             finished = !model.running();
+            // before the state: whoever sees this state and then awaits the grasp gets its grasp
+            grasp.offer(generation, model, model.scenario().friction(), model.scenario().coneEdges());
         }
         latest = new State(generation, publication, scenario, snap, br, playing, finished, error, note, warnings, origin,
             model != null && model.recorder() != null);

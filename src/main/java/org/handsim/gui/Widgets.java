@@ -70,6 +70,18 @@ final class Widgets {
         return s.matches("-0(\\.0*)?") ? s.substring(1) : s;   // no "-0.00"
     }
 
+    /**
+     * Formats a number with {@code digits} significant digits, rounded half-up and written out in
+     * full (0.1984, 0.08472, 58.84, 0.0001235, 2.500; never an exponent); 0 as "0"; NaN and ±∞ as Java writes them.
+     */
+    static String significant(double v, int digits) {
+        if (v == 0) return "0";
+        if (!Double.isFinite(v)) return String.valueOf(v);
+        java.math.BigDecimal r = new java.math.BigDecimal(v).round(new java.math.MathContext(digits, java.math.RoundingMode.HALF_UP));
+        if (r.precision() < digits) r = r.setScale(r.scale() + digits - r.precision());   // 2.5 -> 2.500: always that many digits
+        return r.toPlainString();
+    }
+
     static <T extends JComponent> T titled(T c, String title) {
         c.setBorder(BorderFactory.createCompoundBorder(BorderFactory.createTitledBorder(title),
             BorderFactory.createEmptyBorder(2, 4, 4, 4)));

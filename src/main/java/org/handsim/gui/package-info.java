@@ -23,8 +23,13 @@
  *       the 3D view, charts, labels and tables; panels change the working scenario there. Java3D
  *       renders on its own threads from the scene graph the EDT edits (the frame-rate
  *       measurement's spin behaviour runs on Java3D's behaviour thread).</li>
- *   <li><b>Nothing slow on the EDT.</b> Stepping, and reading VRML files, run on other threads;
- *       the EDT never waits for the model. Scripts run on their own thread and reach the EDT
+ *   <li><b>The grasp has a thread too.</b> At each publication the simulation thread hands
+ *       {@link org.handsim.gui.LiveGrasp} a copy of what a grasp evaluation reads
+ *       ({@code sim.GraspAssessment.Input}) when the contacts changed, without waiting; the
+ *       grasp thread evaluates the newest copy at most 10 times a second and publishes an
+ *       immutable result through a volatile field, which the EDT's timer shows.</li>
+ *   <li><b>Nothing slow on the EDT.</b> Stepping, the grasp evaluation, and reading VRML files
+ *       run on other threads; the EDT never waits for the model. Scripts run on their own thread and reach the EDT
  *       with {@code invokeAndWait}.</li>
  *   <li><b>Errors are shown, not lost.</b> A {@code SimulationException} stops the run and
  *       appears in the status bar and a dialog; uncaught exceptions (on the EDT or elsewhere)

@@ -8,8 +8,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.handsim.grasp.FrictionCone;
+import org.handsim.sim.ObjectPlacer;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
+import org.handsim.sim.SceneGeometry;
 import org.handsim.util.Json;
 import org.handsim.util.JsonWriter;
 
@@ -59,11 +61,26 @@ public record PlanSpec(String name, String target, String templateJson, String t
      * @throws ScenarioException naming the file (exit 3): unreadable, not a scenario, no object
      */
     public static PlanSpec forTarget(Path target, int trials, long seed, Double mu, int edges) {
+        return forTarget(target, trials, seed, mu, edges, null);
+    }
+
+    /**
+     * As {@link #forTarget(Path, int, long, Double, int)}, with the unit of the object file's
+     * coordinates ({@code handsim plan --units}).
+     *
+     * @param units the object file's unit, written into the template ({@code object.units}); null
+     *              ("auto"): a scenario template's own {@code object.units}, and for an object file
+     *              the unit its size suggests ({@link ObjectPlacer#guessUnits}: metres for a model at
+     *              most 2 units across, else millimetres, as the window's import does) — so a
+     *              millimetre STL (GraspIt!'s unit) is planned at its real size, not 1000 times it
+     */
+    public static PlanSpec forTarget(Path target, int trials, long seed, Double mu, int edges, Scenario.Units units) {
         Path abs = target.toAbsolutePath().normalize();
         if (!Files.isRegularFile(abs)) throw new ScenarioException(target + ": no such file");
         Map<String, Object> t;
         String name;
-        if (abs.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json")) {
+        boolean json = abs.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json");
+        if (json) {
             Scenario s = Scenario.load(abs);
             if (s.object() == null) throw new ScenarioException(target + ": field object: the template scenario has no object to grasp");
             t = parse(abs);
@@ -77,6 +94,9 @@ public record PlanSpec(String name, String target, String templateJson, String t
         }
         @SuppressWarnings("unchecked")
         Map<String, Object> obj = (Map<String, Object>) t.get("object");
+        if (units == null && !json) units = ObjectPlacer.guessUnits(SceneGeometry.mesh(abs, Scenario.DEFAULT_DIVISIONS, 1.0));
+        // metres is the scenarios' default: written only to override a template's own units
+        if (units != null && (units != Scenario.Units.M || obj.containsKey("units"))) obj.put("units", units.id());
         double friction = mu != null ? mu : obj.get("friction") instanceof Number ? ((Number) obj.get("friction")).doubleValue()
             : FrictionCone.DEFAULT_MU;
         if (!(friction >= 0) || !Double.isFinite(friction)) throw new IllegalArgumentException("--friction must be a finite number >= 0, got " + friction);
@@ -139,6 +159,11 @@ public record PlanSpec(String name, String target, String templateJson, String t
         if (dot > 0) n = n.substring(0, dot);
         n = n.replaceAll("[^A-Za-z0-9._-]", "_");
         return n.isEmpty() ? "object" : n;
+    }
+
+    /** The unit of the object file's coordinates the trials use (the template's {@code object.units}). */
+    public Scenario.Units units() {
+        return Scenario.parse(Path.of(templateFile), templateJson).object().units();
     }
 
     /** The template as a fresh mutable map (deep copy). */

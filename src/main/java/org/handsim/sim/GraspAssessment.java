@@ -44,6 +44,41 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     public record Contact(int finger, int link, double[] point, double[] normal, double[] forceN) {}
 
     /**
+     * What an evaluation reads of a model, copied: an immutable value that another thread may
+     * evaluate while the model steps on (the window's live grasp: the simulation thread copies,
+     * a worker evaluates). Arrays are fresh copies; treat them as read-only.
+     *
+     * @param timeS             simulated time, s
+     * @param contacts          every contact of the three fingers, finger by finger (world frame)
+     * @param framesWorld       per finger (index 0..2) the frames {k0}..{k3} in the world, 4 × 12 row-major
+     * @param clutchEngaged     per finger whether its clutch couples the inner link to the motor
+     *                          ({@link HandModel#clutchEngaged})
+     * @param hand              the hand's description (joint limits)
+     * @param centroidAndRadius the object's centroid and R {cx, cy, cz, R}, m, or null when the
+     *                          scene has no object geometry ({@link HandModel#objectCentroidAndRadius()})
+     */
+    public record Input(double timeS, List<Contact> contacts, double[][] framesWorld, boolean[] clutchEngaged,
+                        HandDescription hand, double[] centroidAndRadius) {
+        /** Copies what {@link GraspAssessment#of(Input, double, int)} needs from the model as it is now (its thread only). */
+        public static Input of(HandModel model) {
+            List<Contact> contacts = new ArrayList<>();
+            double[][] frames = new double[3][];
+            boolean[] engaged = new boolean[3];
+            for (int k = 1; k <= 3; k++) {
+                ContactSet cs = model.contacts(k);
+                for (int i = 0; i < cs.size(); i++) {
+                    double[] n = cs.normal(i);
+                    // into the object: 0 − n, which turns a zero component into +0, not −0
+                    contacts.add(new Contact(k, cs.link(i), cs.point(i), new double[] {0.0 - n[0], 0.0 - n[1], 0.0 - n[2]}, cs.forceVector(i)));
+                }
+                frames[k - 1] = model.framesWorld(k);
+                engaged[k - 1] = model.clutchEngaged(k);
+            }
+            return new Input(model.time(), List.copyOf(contacts), frames, engaged, model.hand(), model.objectCentroidAndRadius());
+        }
+    }
+
+    /**
      * Evaluates the grasp of {@code model} as it is now: its contacts (world frame) with the
      * forces the simulation gave them; the quality of the grasp wrench space with the torque
      * origin c = the object's centroid and R = its largest centroid-to-vertex distance
@@ -58,46 +93,53 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     public static GraspAssessment of(HandModel model, double mu, int edges) {
         FrictionCone.checkMu(mu);
         FrictionCone.checkEdges(edges);
-        List<Contact> contacts = new ArrayList<>();
-        for (int k = 1; k <= 3; k++) {
-            ContactSet cs = model.contacts(k);
-            for (int i = 0; i < cs.size(); i++) {
-                double[] n = cs.normal(i);
-                // into the object: 0 − n, which turns a zero component into +0, not −0
-                contacts.add(new Contact(k, cs.link(i), cs.point(i), new double[] {0.0 - n[0], 0.0 - n[1], 0.0 - n[2]}, cs.forceVector(i)));
-            }
-        }
+        return of(Input.of(model), mu, edges);
+    }
+
+    /**
+     * Evaluates a grasp copied from a model ({@link Input#of}), on any thread: the same numbers as
+     * {@link #of(HandModel, double, int)} on the model at the time of the copy.
+     */
+    public static GraspAssessment of(Input in, double mu, int edges) {
+        FrictionCone.checkMu(mu);
+        FrictionCone.checkEdges(edges);
+        List<Contact> contacts = in.contacts();
         int n = contacts.size();
-        if (n == 0) return new GraspAssessment(model.time(), GraspQuality.none(0, 0), new double[6], 0, List.of());
+        if (n == 0) return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, List.of());
         double[] points = new double[3 * n], normals = new double[3 * n];
         for (int i = 0; i < n; i++) {
             System.arraycopy(contacts.get(i).point(), 0, points, 3 * i, 3);
             System.arraycopy(contacts.get(i).normal(), 0, normals, 3 * i, 3);
         }
-        double[] cr = model.objectCentroidAndRadius();
+        double[] cr = in.centroidAndRadius();
         if (cr == null) cr = fromContacts(points, n);
         double[] c = {cr[0], cr[1], cr[2]};
         GraspQuality q = WrenchSpace.quality(GraspWrenches.of(n, points, normals, mu, edges, c, cr[3]), n * edges, n);
-        double[] hold = hold(model, contacts, mu, edges, c, cr[3]).holdSix();
+        double[] hold = hold(in, contacts, mu, edges, c, cr[3]).holdSix();
         double min = hold[0];
         for (double h : hold) min = Math.min(min, h);
-        return new GraspAssessment(model.time(), q, hold, min, List.copyOf(contacts));
+        return new GraspAssessment(in.timeS(), q, hold, min, contacts);
+    }
+
+    /** The hold LP of the model's grasp as it is now ({@link #hold(Input, List, double, int, double[], double)}). */
+    public static HoldCapacity hold(HandModel model, List<Contact> contacts, double mu, int edges, double[] c, double r) {
+        return hold(Input.of(model), contacts, mu, edges, c, r);
     }
 
     /**
-     * The hold LP of the model's grasp: per finger its joints — the spread k1 (fingers 1 and 2;
+     * The hold LP of a grasp: per finger its joints — the spread k1 (fingers 1 and 2;
      * finger 3's first link is fixed to the palm), the inner k2, the outer k3 — each turning about
-     * the z axis of the DH frame before it (world frame, {@link HandModel#framesWorld}), and each
+     * the z axis of the DH frame before it (world frame, {@link Input#framesWorld}), and each
      * contact loading the joints of its link's chain.
      */
-    public static HoldCapacity hold(HandModel model, List<Contact> contacts, double mu, int edges, double[] c, double r) {
-        HandDescription hand = model.hand();
+    public static HoldCapacity hold(Input in, List<Contact> contacts, double mu, int edges, double[] c, double r) {
+        HandDescription hand = in.hand();
         HoldCapacity hc = new HoldCapacity(mu, edges, c, r, hand.handRatingN());
         int[][] joint = new int[3][3];
         for (int k = 1; k <= 3; k++) {
-            double[] f = model.framesWorld(k);
+            double[] f = in.framesWorld()[k - 1];
             for (int j = 1; j <= 3; j++) {
-                double limit = jointLimit(hand, k, j, model.clutchEngaged(k));
+                double limit = jointLimit(hand, k, j, in.clutchEngaged()[k - 1]);
                 int o = 12 * (j - 1);
                 joint[k - 1][j - 1] = Double.isNaN(limit) ? -1
                     : hc.addJoint(new double[] {f[o + 2], f[o + 6], f[o + 10]}, new double[] {f[o + 3], f[o + 7], f[o + 11]}, limit);

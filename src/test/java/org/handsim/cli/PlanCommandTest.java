@@ -92,6 +92,65 @@ class PlanCommandTest {
         }
     }
 
+    /**
+     * An OBJ and a millimetre STL target. The STL is the mug of vrml/objects/mug.wrl written in
+     * millimetres (binary, 32-bit floats): found to be in millimetres by its size (or told by
+     * {@code --units mm}), it is planned at the mug's real size, so the same seed gives the VRML
+     * mug's table — the same contacts and force closure trial by trial, ε within the STL's float
+     * rounding — which taken as metres (a mug 100 m long) it does not. The OBJ (a cylinder in
+     * metres) runs and its trials find contacts.
+     */
+    @Test
+    void plansAnObjAndAMillimetreStl() throws Exception {
+        Path dir = Files.createTempDirectory("plan-formats");
+        try {
+            Path stl = PlanTesting.MUG.resolveSibling("mug_mm.stl"), obj = PlanTesting.MUG.resolveSibling("cylinder.obj");
+            CliTesting.Run wrl = CliTesting.run("plan", MUG, "--trials", "14", "--seed", "1", "--out", dir.resolve("wrl").toString());
+            CliTesting.Run auto = CliTesting.run("plan", stl.toString(), "--trials", "14", "--seed", "1", "--out", dir.resolve("auto").toString());
+            CliTesting.Run mm = CliTesting.run("plan", stl.toString(), "--trials", "14", "--seed", "1", "--units", "mm", "--out", dir.resolve("mm").toString());
+            CliTesting.Run metres = CliTesting.run("plan", stl.toString(), "--trials", "14", "--seed", "1", "--units", "m", "--out", dir.resolve("m").toString());
+            for (CliTesting.Run r : List.of(wrl, auto, mm, metres)) assertEquals(0, r.code(), r.err());
+            assertTrue(auto.err().contains("handsim plan: mug_mm.stl: units mm by its size (--units to choose)"), auto.err());
+            assertTrue(wrl.err().contains("handsim plan: mug.wrl: units m by its size"), wrl.err());
+            assertFalse(mm.err().contains("by its size"), mm.err());
+            assertEquals(Scenario.Units.MM, Scenario.load(dir.resolve("auto/best/01.json")).object().units(), "best/01.json keeps the units");
+            List<String[]> a = rows(dir.resolve("wrl")), b = rows(dir.resolve("auto")), c = rows(dir.resolve("mm")), d = rows(dir.resolve("m"));
+            assertEquals(PlanTesting.withoutTiming(Files.readAllLines(dir.resolve("auto/plan.csv"))),
+                PlanTesting.withoutTiming(Files.readAllLines(dir.resolve("mm/plan.csv"))), "auto found mm");
+            int closure = 0, differ = 0;
+            for (int i = 0; i < a.size(); i++) {
+                String[] x = a.get(i), y = b.get(i);
+                assertEquals("ok", y[1], "trial " + i);
+                assertEquals(x[8], y[8], "contacts of trial " + i);
+                assertEquals(x[9], y[9], "force closure of trial " + i);
+                double ex = Double.parseDouble(x[10]), ey = Double.parseDouble(y[10]);
+                assertEquals(ex, ey, 1e-3 * Math.max(ex, 1e-3), "epsilon of trial " + i);
+                if (x[9].equals("true")) closure++;
+                if (!x[8].equals(d.get(i)[8]) || !x[12].equals(d.get(i)[12])) differ++;
+            }
+            assertTrue(closure >= 1, "the 14 trials of seed 1 include force-closure grasps");
+            assertTrue(differ >= a.size() / 2, "in metres the STL is another object: " + differ + " of " + a.size() + " trials differ");
+            assertEquals(a.size(), c.size());
+
+            CliTesting.Run o = CliTesting.run("plan", obj.toString(), "--trials", "4", "--seed", "2", "--out", dir.resolve("obj").toString());
+            assertEquals(0, o.code(), o.err());
+            assertTrue(o.out().startsWith("plan-cylinder: 4 trials (0 failed)"), o.out());
+            for (String[] r : rows(dir.resolve("obj"))) {
+                assertEquals("ok", r[1]);
+                assertTrue(Integer.parseInt(r[8]) > 0, "a trial on the OBJ cylinder finds contacts: " + String.join(",", r));
+            }
+        } finally {
+            PlanTesting.deleteTree(dir);
+        }
+    }
+
+    private static List<String[]> rows(Path planDir) throws java.io.IOException {
+        List<String[]> out = new java.util.ArrayList<>();
+        List<String> lines = Files.readAllLines(planDir.resolve("plan.csv"));
+        for (String l : lines.subList(1, lines.size())) out.add(l.split(",", -1));
+        return out;
+    }
+
     @Test
     void badTargetsAreOneLineExit3() throws Exception {
         Path dir = Files.createTempDirectory("plan-bad");
@@ -105,6 +164,20 @@ class PlanCommandTest {
             CliTesting.Run bad = CliTesting.run("plan", broken.toString(), "--out", dir.resolve("o").toString());
             assertEquals(3, bad.code());
             assertOneLine(bad.err(), "broken.wrl:");
+            assertFalse(Files.exists(dir.resolve("o/plan.csv")), "nothing written");
+
+            Path stl = dir.resolve("truncated.stl");   // binary: the header announces 2 triangles, one is there
+            byte[] bytes = new byte[84 + 50];
+            java.nio.ByteBuffer.wrap(bytes).order(java.nio.ByteOrder.LITTLE_ENDIAN).putInt(80, 2);
+            Files.write(stl, bytes);
+            CliTesting.Run st = CliTesting.run("plan", stl.toString(), "--out", dir.resolve("o").toString());
+            assertEquals(3, st.code());
+            assertOneLine(st.err(), "truncated.stl: byte ");
+            Path obj = dir.resolve("broken.obj");
+            Files.writeString(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+            CliTesting.Run ob = CliTesting.run("plan", obj.toString(), "--units", "mm", "--out", dir.resolve("o").toString());
+            assertEquals(3, ob.code());
+            assertOneLine(ob.err(), "broken.obj:4:");
             assertFalse(Files.exists(dir.resolve("o/plan.csv")), "nothing written");
 
             Path noObject = dir.resolve("empty.json");
@@ -127,8 +200,8 @@ class PlanCommandTest {
     void badOptionsAreOneLineExit2() {
         String[][] cases = {
             {"--trials", "0"}, {"--trials", "many"}, {"--threads", "0"}, {"--friction", "-0.5"}, {"--friction", "NaN"},
-            {"--engine", "hadoop"}, {"--master", "local[2]"}, {"--seed", "1.5"}};
-        String[] expect = {"--trials", "many", "--threads", "--friction", "--friction", "hadoop", "--master", "1.5"};
+            {"--engine", "hadoop"}, {"--master", "local[2]"}, {"--seed", "1.5"}, {"--units", "inch"}};
+        String[] expect = {"--trials", "many", "--threads", "--friction", "--friction", "hadoop", "--master", "1.5", "inch"};
         for (int c = 0; c < cases.length; c++) {
             String[] args = new String[2 + cases[c].length];
             args[0] = "plan";
