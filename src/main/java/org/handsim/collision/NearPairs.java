@@ -42,6 +42,14 @@ public final class NearPairs {
     int[] triA = new int[32], triB = new int[32];
     /** Per pair: a lower bound on the distance between its two triangles at the gathering pose (≤ 0: may touch). */
     double[] gap = new double[32];
+    /**
+     * Per pair whose edge–edge axes are still to be tried ({@link #pending}): its gap before them
+     * (not less the margin) and B's three vertices at the gathering pose (9 values from 9·i).
+     */
+    double[] boundWithoutEdges = new double[32], anchorB = new double[9 * 32];
+    boolean[] pending = new boolean[32];
+    /** The rounding margin the gathering took off every separation. */
+    double margin;
     double reach, clearance = Double.NEGATIVE_INFINITY;
     /** Node pairs compared by the walk that gathered these pairs (for the counters). */
     long nodeTests;
@@ -63,15 +71,44 @@ public final class NearPairs {
     }
 
     void add(int a, int b, double separation) {
-        if (count == triA.length) {
-            triA = Arrays.copyOf(triA, 2 * count);
-            triB = Arrays.copyOf(triB, 2 * count);
-            gap = Arrays.copyOf(gap, 2 * count);
-        }
+        if (count == triA.length) grow();
         triA[count] = a;
         triB[count] = b;
         gap[count] = separation;
+        pending[count] = false;
         count++;
+    }
+
+    /**
+     * Adds a pair whose separation along the nine edge–edge axes is made only when a query
+     * first needs it ({@link TreeQuery}: most kept pairs are never within the displacement of a
+     * query): {@code bound} is its separation without those axes (&gt; 0, before the margin),
+     * B's vertices at the gathering pose are {@code vb[b0..b0+2]}, {@code [b1..]}, {@code [b2..]}.
+     */
+    void addPending(int a, int b, double bound, double[] vb, int b0, int b1, int b2) {
+        if (count == triA.length) grow();
+        int i = count;
+        triA[i] = a;
+        triB[i] = b;
+        gap[i] = bound - margin;
+        boundWithoutEdges[i] = bound;
+        pending[i] = true;
+        double[] v = anchorB;
+        int o = 9 * i;
+        v[o] = vb[b0]; v[o + 1] = vb[b0 + 1]; v[o + 2] = vb[b0 + 2];
+        v[o + 3] = vb[b1]; v[o + 4] = vb[b1 + 1]; v[o + 5] = vb[b1 + 2];
+        v[o + 6] = vb[b2]; v[o + 7] = vb[b2 + 1]; v[o + 8] = vb[b2 + 2];
+        count++;
+    }
+
+    private void grow() {
+        int n = 2 * triA.length;
+        triA = Arrays.copyOf(triA, n);
+        triB = Arrays.copyOf(triB, n);
+        gap = Arrays.copyOf(gap, n);
+        boundWithoutEdges = Arrays.copyOf(boundWithoutEdges, n);
+        pending = Arrays.copyOf(pending, n);
+        anchorB = Arrays.copyOf(anchorB, 9 * n);
     }
 
     /** @return the node pairs the gathering walk compared (its k-DOP separations), the roots included */
@@ -89,7 +126,8 @@ public final class NearPairs {
     /**
      * @return a lower bound (metres) on the distance between kept pair i's triangles at the
      *         gathering pose, less the rounding margin; ≤ 0 when they may touch there. A pose
-     *         displaced by less than this cannot make them intersect.
+     *         displaced by less than this cannot make them intersect. The edge–edge axes'
+     *         part of it is added when a query first needs it (until then the bound is lower).
      */
     public double separation(int i) { return gap[i]; }
 

@@ -58,6 +58,8 @@ public final class TreeQuery {
     private final TransformedBounds tb = new TransformedBounds();
     private final double[] m = new double[12];
     private int[] stack = new int[256];
+    private double[] sepStack = new double[128];          // the gathering's node-pair separations, beside the stack
+    private final double[] triBox = new double[6];        // the gathering's current A triangle's box
     private double[] placedBounds = new double[0];
     private int[] nodeStamp = new int[0];
     private double[] placedVerts = new double[0];
@@ -138,6 +140,7 @@ public final class TreeQuery {
             }
         }
         placeWithHints(b, identity, out.facetHints);
+        out.margin = margin;
         out.clearance = gather(a, b, reach, margin, out) - margin;
         return out;
     }
@@ -184,9 +187,20 @@ public final class TreeQuery {
         final double[] gap = near.gap;
         final boolean placeNormals = !normalsPlaced;
         int tested = 0;
+        final boolean[] pending = near.pending;
         for (int i = 0; i < n; i++) {
             if (gap[i] > displacement) continue;
             int ta = nta[i], tbi = ntb[i];
+            if (pending[i]) {
+                // the pair's bound with the edge-edge axes, as the gathering would have made it
+                // (B's vertices as placed then): the same number, so the same pairs are tested
+                pending[i] = false;
+                double[] ab = near.anchorB;
+                int o = 9 * i;
+                gap[i] = Math.max(near.boundWithoutEdges[i], edgeAxesGap(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2],
+                    ab, o, o + 3, o + 6)) - near.margin;
+                if (gap[i] > displacement) continue;
+            }
             if (placeNormals) placeNormal(b, tbi);
             tested++;
             int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
@@ -303,6 +317,7 @@ public final class TreeQuery {
         final boolean lz = lazy, placeNormals = !normalsPlaced;
         final double[] src = b.vertices(), nA = a.triN;
         int[] stk = stack;
+        double[] sep = sepStack;   // sep[sp / 2 − 1]: the separation of the node pair at stk[sp − 2..]
         int sp = 0;
         long tests = 1;
         double clear = Double.POSITIVE_INFINITY;
@@ -311,6 +326,7 @@ public final class TreeQuery {
         if (s0 > reach) {
             clear = s0;
         } else {
+            sep[0] = s0;
             stk[sp++] = 0;
             stk[sp++] = 0;
         }
@@ -319,11 +335,18 @@ public final class TreeQuery {
             int ca = childA[na], cb = childB[nb];
             if (ca < 0 && cb < 0) {
                 int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
-                double leafGap = kd.separation(ba, na * k, bbl, nb * k);   // pushed: within the reach
+                // pushed within the reach, so its separationUpTo was the whole separation (and
+                // B's node is placed once per walk: the same bounds now)
+                double leafGap = sep[sp >> 1];
                 for (int i = fa; i < ea; i++) {
                     int ta = orderA[i];
                     if (degA[ta]) continue;
                     int a0 = 3 * trisA[3 * ta], a1 = 3 * trisA[3 * ta + 1], a2 = 3 * trisA[3 * ta + 2];
+                    double[] boxA = triBox;
+                    for (int d = 0; d < 3; d++) {
+                        boxA[2 * d] = Math.min(va[a0 + d], Math.min(va[a1 + d], va[a2 + d]));
+                        boxA[2 * d + 1] = Math.max(va[a0 + d], Math.max(va[a1 + d], va[a2 + d]));
+                    }
                     for (int j = fb; j < eb; j++) {
                         int tbi = orderB[j];
                         if (degB[tbi]) continue;
@@ -335,8 +358,7 @@ public final class TreeQuery {
                         }
                         double gap = leafGap;
                         for (int d = 0; d < 3; d++) {
-                            double amin = Math.min(va[a0 + d], Math.min(va[a1 + d], va[a2 + d]));
-                            double amax = Math.max(va[a0 + d], Math.max(va[a1 + d], va[a2 + d]));
+                            double amin = boxA[2 * d], amax = boxA[2 * d + 1];
                             double bmin = Math.min(vb[b0 + d], Math.min(vb[b1 + d], vb[b2 + d]));
                             double bmax = Math.max(vb[b0 + d], Math.max(vb[b1 + d], vb[b2 + d]));
                             gap = Math.max(gap, Math.max(amin - bmax, bmin - amax));
@@ -348,8 +370,9 @@ public final class TreeQuery {
                             if (placeNormals) placeNormal(b, tbi);
                             gap = Math.max(gap, Math.max(axisGap(nA, 3 * ta, va, a0, a1, a2, vb, b0, b1, b2),
                                 axisGap(nB, 3 * tbi, va, a0, a1, a2, vb, b0, b1, b2)));
-                            if (gap > 0) gap = Math.max(gap, edgeAxesGap(va, a0, a1, a2, vb, b0, b1, b2));
-                            out.add(ta, tbi, gap - margin);
+                            // apart: the edge-edge axes may show more, computed when first needed (testNear)
+                            if (gap > 0) out.addPending(ta, tbi, gap, vb, b0, b1, b2);
+                            else out.add(ta, tbi, gap - margin);
                         }
                     }
                 }
@@ -359,6 +382,10 @@ public final class TreeQuery {
                 stk = Arrays.copyOf(stk, 2 * stk.length);
                 stack = stk;
             }
+            if (sp + 4 > 2 * sep.length) {
+                sep = Arrays.copyOf(sep, stk.length / 2);
+                sepStack = sep;
+            }
             tests += 2;
             if (cb < 0 || (ca >= 0 && sizeA[na] >= sizeB[nb])) {
                 int ob = nb * k;
@@ -366,11 +393,13 @@ public final class TreeQuery {
                 if (s1 > reach) {
                     if (s1 < clear) clear = s1;
                 } else {
+                    sep[sp >> 1] = s1;
                     stk[sp++] = ca; stk[sp++] = nb;
                 }
                 if (s2 > reach) {
                     if (s2 < clear) clear = s2;
                 } else {
+                    sep[sp >> 1] = s2;
                     stk[sp++] = na + 1; stk[sp++] = nb;
                 }
             } else {
@@ -383,11 +412,13 @@ public final class TreeQuery {
                 if (s1 > reach) {
                     if (s1 < clear) clear = s1;
                 } else {
+                    sep[sp >> 1] = s1;
                     stk[sp++] = na; stk[sp++] = cb;
                 }
                 if (s2 > reach) {
                     if (s2 < clear) clear = s2;
                 } else {
+                    sep[sp >> 1] = s2;
                     stk[sp++] = na; stk[sp++] = nb + 1;
                 }
             }
