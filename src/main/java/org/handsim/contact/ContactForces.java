@@ -30,10 +30,12 @@ package org.handsim.contact;
  * displacement leaves the cone. For a single contact that is f along t (the direction the
  * link moves) when t lies in the cone, else on the cone edge nearest t. The 1–3 multipliers y
  * are found by Newton's method on the dual (a smooth concave function, piecewise quadratic),
- * regularised by {@link #RHO} times the largest |t|² so that torques no cone can carry give the
- * least-squares answer instead of diverging, then polished on the final pieces to satisfy the
- * torques exactly. μ = 0 is the frictionless {@link #solve} (the cones are rays), which callers
- * use then: its forces are today's.
+ * regularised by {@link #RHO} times the largest |t|² so that its steps stay finite, then
+ * polished on the final pieces to satisfy the torques exactly. Torques the cones cannot carry
+ * get the least-squares torque — the one nearest τ that forces in the cones carry, found by
+ * non-negative least squares on the cone edges — and the least-norm forces carrying it
+ * ({@link #leastSquaresTorque}). μ = 0 is the frictionless {@link #solve} (the cones are
+ * rays), which callers use then: its forces are today's.
  *
  * <p>Frames: points, directions and the 48-value frame array ({k0}..{k3}, 12 row-major values
  * each, as {@code FingerKinematics.frames}) must all be in one frame (palm or world).
@@ -58,6 +60,8 @@ public final class ContactForces {
      */
     public static final double RHO = 1e-10;
     private static final int NEWTON_ITER = 60;
+    /** Torques carried to this fraction of |τ| count as carried exactly (the polish gives ~1e-16). */
+    private static final double EXACT = 1e-9;
 
     private double[] arms = new double[0];      // 3 per contact: a_1i, a_2i, a_3i
     private double[] mag = new double[0];
@@ -79,10 +83,14 @@ public final class ContactForces {
     private final int[] joint = new int[3];          // active dual rows: joint indices
     private final double[] y = new double[3], yTrial = new double[3], g = new double[3], step = new double[3];
     private final double[] hess = new double[9], tauActive = new double[3], pa = new double[3];
-    private double rho;
+    private double rho, t2Max;                       // ρ and the largest |t_mi|² of the last friction solve
     private int activeCount;                         // d of the last friction solve
     private int lastN = -1, lastM, lastD;            // what the pieces in piece[] belong to (warm start)
     private final int[] lastJoint = new int[3];
+    // the least-squares torque when no cone forces carry τ: one column per cone edge
+    private double[] edgeArms = new double[0], edgeWeight = new double[0], edgeZ = new double[0];
+    private boolean[] edgePassive = new boolean[0], edgeSkip = new boolean[0];
+    private final double[] tauStar = new double[3];
 
     /**
      * Solves for the contact magnitudes.
@@ -212,6 +220,7 @@ public final class ContactForces {
             return;
         }
         rho = RHO * s;
+        t2Max = s;
         // warm start: the pieces of the last solve (a held grasp keeps them while its torques
         // grow). Any y with Σ T_iᵀ Π_i(T_i y) = τ is optimal (the KKT conditions of a convex
         // problem), so if the exact solve on those pieces lands on the same pieces, it is the answer.
@@ -219,6 +228,18 @@ public final class ContactForces {
             finish(n);
             return;
         }
+        newtonFromTheInterior(n, m, d, cones);
+        // the polish failed to carry τ: if no cone forces can, the least-squares torque (below)
+        if (!carriesTauActive(n, d, EXACT)) leastSquaresTorque(r0, tau, n, m, d, cones);
+        finish(n);
+    }
+
+    /**
+     * Newton's method on the regularised dual for the torques {@code tauActive}, from y =
+     * (Σ TᵀT + ρI)⁻¹ τ (every contact inside its cone), then the polish on the final pieces.
+     * Leaves the forces in {@code fvec} and their pieces in {@code piece}.
+     */
+    private void newtonFromTheInterior(int n, int m, int d, double[] cones) {
         // start: every contact inside its cone, y = (Σ TᵀT + ρI)⁻¹ τ
         for (int i = 0; i < n; i++) piece[i] = 2 * m;
         hessian(n, m, d, cones, piece, true);
@@ -231,7 +252,7 @@ public final class ContactForces {
         for (int it = 0; it < NEWTON_ITER; it++) {
             double gMax = 0, yMax = 0;
             for (int a = 0; a < d; a++) { gMax = Math.max(gMax, Math.abs(g[a])); yMax = Math.max(yMax, Math.abs(y[a])); }
-            if (gMax <= 1e-13 * (tauMax + s * yMax) + Double.MIN_NORMAL) break;     // stationary to rounding
+            if (gMax <= 1e-13 * (tauMax + t2Max * yMax) + Double.MIN_NORMAL) break;     // stationary to rounding
             hessian(n, m, d, cones, piece, true);
             if (!org.handsim.math.Cholesky.decompose(hess, d)) break;
             for (int a = 0; a < d; a++) step[a] = -g[a];
@@ -259,7 +280,96 @@ public final class ContactForces {
         }
         // polish: the exact torques on the final pieces, if the system is regular there
         exactOnPieces(n, m, d, cones);
-        finish(n);
+    }
+
+    /** Whether the forces in {@code fvec} carry {@code tauActive} to {@code tol} × |τ| (2-norm). */
+    private boolean carriesTauActive(int n, int d, double tol) {
+        double r2 = 0, t2 = 0;
+        for (int a = 0; a < d; a++) {
+            double r = tauActive[a];
+            for (int i = 0; i < n; i++) {
+                int o = 9 * i + 3 * joint[a];
+                r -= tvec[o] * fvec[3 * i] + tvec[o + 1] * fvec[3 * i + 1] + tvec[o + 2] * fvec[3 * i + 2];
+            }
+            r2 += r * r;
+            t2 += tauActive[a] * tauActive[a];
+        }
+        return r2 <= tol * tol * t2;
+    }
+
+    /**
+     * Torques no forces in the cones carry (class comment): the regularised dual's minimum then
+     * lies at |y| ~ |residual|/ρ, where the forces are the tiny difference of huge projections
+     * and Newton's steps stall — on one contact that must push both joints k2 and k3 it ended at
+     * the apex, f = 0, although cone forces reduce the torque error. So, in two phases:
+     * (1) the least-squares torque τ* = argmin |τ − Σ T_iᵀ f_i| over forces in the cones, by
+     * non-negative least squares on the cone edges' torques (Lawson–Hanson; τ* is unique, the
+     * projection of τ onto the convex cone of carriable torques), kept only if it beats what
+     * Newton found; (2) the least-norm forces that carry τ* exactly, by Newton's method on τ*.
+     * τ* lies on the boundary of the carriable torques, where the dual's minimum need not be
+     * attained; if Newton does not carry τ* to {@link #EXACT}, the edge forces of phase 1, which
+     * carry it exactly — the least-norm ones when a single cone edge makes τ* (the generic case),
+     * else one basic solution of several.
+     */
+    private void leastSquaresTorque(int r0, double[] tau, int n, int m, int d, double[] cones) {
+        int cols = n * m;
+        ensureEdges(cols);
+        for (int i = 0; i < n; i++) {
+            for (int e = 0; e < m; e++) {
+                int c = i * m + e, ce = 3 * m * i + 3 * e;
+                edgeSkip[c] = undetermined[i];
+                edgeWeight[c] = 0;
+                for (int jm = 0; jm < 3; jm++) {
+                    int o = 9 * i + 3 * jm;
+                    edgeArms[3 * c + jm] = jm < r0 ? 0 : tvec[o] * cones[ce] + tvec[o + 1] * cones[ce + 1] + tvec[o + 2] * cones[ce + 2];
+                }
+            }
+        }
+        nnls(edgeArms, r0, tau, cols, edgeSkip, edgeWeight, edgePassive, edgeZ);
+        double before = 0, after = 0, scale = 0;
+        for (int a = 0; a < d; a++) {
+            int jm = joint[a];
+            double carried = 0, star = 0;
+            for (int i = 0; i < n; i++) carried += jointTorque(i, jm);
+            for (int c = 0; c < cols; c++) star += edgeArms[3 * c + jm] * edgeWeight[c];
+            before += (tau[jm] - carried) * (tau[jm] - carried);
+            after += (tau[jm] - star) * (tau[jm] - star);
+            scale += tau[jm] * tau[jm];
+            tauStar[a] = star;
+        }
+        // Newton's answer is within EXACT·|τ| of the least-squares torque: keep it
+        if (!(Math.sqrt(after) < Math.sqrt(before) - EXACT * Math.sqrt(scale))) return;
+        System.arraycopy(tauStar, 0, tauActive, 0, d);
+        newtonFromTheInterior(n, m, d, cones);
+        if (carriesTauActive(n, d, EXACT)) return;
+        for (int i = 0; i < n; i++) {
+            double fx = 0, fy = 0, fz = 0;
+            for (int e = 0; e < m; e++) {
+                double w = edgeWeight[i * m + e];
+                int ce = 3 * m * i + 3 * e;
+                fx += w * cones[ce]; fy += w * cones[ce + 1]; fz += w * cones[ce + 2];
+            }
+            fvec[3 * i] = fx; fvec[3 * i + 1] = fy; fvec[3 * i + 2] = fz;
+            piece[i] = ConeProjection.APEX;               // no warm start from these
+        }
+    }
+
+    private void ensureEdges(int cols) {
+        if (edgeWeight.length < cols) {
+            int c = Math.max(cols, 2 * edgeWeight.length);
+            edgeArms = new double[3 * c];
+            edgeWeight = new double[c];
+            edgeZ = new double[c];
+            edgePassive = new boolean[c];
+            edgeSkip = new boolean[c];
+        }
+        if (idxScratch.length < cols) {
+            idxScratch = new int[cols];
+            bScratch = new double[cols];
+            yScratch = new double[cols];
+            deadScratch = new boolean[cols];
+        }
+        if (gScratch.length < cols * cols) gScratch = new double[cols * cols];
     }
 
     /**
@@ -373,45 +483,55 @@ public final class ContactForces {
         return arm(frames, m, point, dir, 0) * f;
     }
 
-    /** Lawson–Hanson NNLS on the rows firstJoint..2 and the determined columns. */
+    /** Lawson–Hanson NNLS on the rows firstJoint..2 and the determined contacts' arms. */
     private void nnls(int r0, double[] tau, int n) {
-        for (int i = 0; i < n; i++) passive[i] = false;
+        nnls(arms, r0, tau, n, undetermined, mag, passive, z);
+    }
+
+    /**
+     * Lawson–Hanson non-negative least squares: x ≥ 0 minimising |A x − τ| over the rows
+     * r0..2, A's column c at {@code a[3c .. 3c+2]} (one value per joint), columns with
+     * {@code skip[c]} held at 0. {@code x} must be zero on entry; {@code passive} and {@code zz}
+     * are scratch of at least {@code cols} entries.
+     */
+    private void nnls(double[] a, int r0, double[] tau, int cols, boolean[] skip, double[] x, boolean[] passive, double[] zz) {
+        for (int i = 0; i < cols; i++) passive[i] = false;
         for (int iter = 0; iter < MAX_ITER; iter++) {
-            // gradient w = Aᵀ (τ − A f), the residual τ − A f computed once
+            // gradient w = Aᵀ (τ − A x), the residual τ − A x computed once
             for (int m = r0; m < 3; m++) {
                 double r = tau[m];
-                for (int j = 0; j < n; j++) r -= arms[3 * j + m] * mag[j];
+                for (int j = 0; j < cols; j++) r -= a[3 * j + m] * x[j];
                 res[m] = r;
             }
             int best = -1;
             double bestW = 1e-15;
-            for (int i = 0; i < n; i++) {
-                if (passive[i] || undetermined[i]) continue;
+            for (int i = 0; i < cols; i++) {
+                if (passive[i] || skip[i]) continue;
                 double g = 0;
-                for (int m = r0; m < 3; m++) g += arms[3 * i + m] * res[m];
+                for (int m = r0; m < 3; m++) g += a[3 * i + m] * res[m];
                 if (g > bestW) { bestW = g; best = i; }
             }
             if (best < 0) return;
             passive[best] = true;
             while (true) {
-                if (!leastSquaresOnPassive(r0, tau, n)) { passive[best] = false; return; }
+                if (!leastSquaresOnPassive(a, r0, tau, cols, passive, zz)) { passive[best] = false; return; }
                 double alpha = 1;
                 boolean feasible = true;
-                for (int i = 0; i < n; i++) {
-                    if (passive[i] && z[i] <= 0) {
+                for (int i = 0; i < cols; i++) {
+                    if (passive[i] && zz[i] <= 0) {
                         feasible = false;
-                        double a = mag[i] / (mag[i] - z[i]);
-                        if (a < alpha) alpha = a;
+                        double al = x[i] / (x[i] - zz[i]);
+                        if (al < alpha) alpha = al;
                     }
                 }
                 if (feasible) {
-                    for (int i = 0; i < n; i++) mag[i] = passive[i] ? z[i] : 0;
+                    for (int i = 0; i < cols; i++) x[i] = passive[i] ? zz[i] : 0;
                     break;
                 }
-                for (int i = 0; i < n; i++) {
+                for (int i = 0; i < cols; i++) {
                     if (passive[i]) {
-                        mag[i] += alpha * (z[i] - mag[i]);
-                        if (mag[i] <= 1e-15) { mag[i] = 0; passive[i] = false; }
+                        x[i] += alpha * (zz[i] - x[i]);
+                        if (x[i] <= 1e-15) { x[i] = 0; passive[i] = false; }
                     }
                 }
             }
@@ -419,27 +539,27 @@ public final class ContactForces {
     }
 
     /**
-     * Unconstrained least squares on the passive columns into z (normal equations, at most a
+     * Unconstrained least squares on the passive columns into zz (normal equations, at most a
      * handful of columns; a rank-deficient set is regularised by dropping dependent columns).
      */
-    private boolean leastSquaresOnPassive(int r0, double[] tau, int n) {
+    private boolean leastSquaresOnPassive(double[] a, int r0, double[] tau, int cols, boolean[] passive, double[] zz) {
         int p = 0;
         int[] idx = idxScratch;
-        for (int i = 0; i < n; i++) if (passive[i]) idx[p++] = i;
+        for (int i = 0; i < cols; i++) if (passive[i]) idx[p++] = i;
         double[] g = gScratch, b = bScratch;
-        for (int a = 0; a < p; a++) {
+        for (int u = 0; u < p; u++) {
             for (int c = 0; c < p; c++) {
-                double s = 0;
-                for (int m = r0; m < 3; m++) s += arms[3 * idx[a] + m] * arms[3 * idx[c] + m];
-                g[a * p + c] = s;
+                double sum = 0;
+                for (int m = r0; m < 3; m++) sum += a[3 * idx[u] + m] * a[3 * idx[c] + m];
+                g[u * p + c] = sum;
             }
-            double s = 0;
-            for (int m = r0; m < 3; m++) s += arms[3 * idx[a] + m] * tau[m];
-            b[a] = s;
+            double sum = 0;
+            for (int m = r0; m < 3; m++) sum += a[3 * idx[u] + m] * tau[m];
+            b[u] = sum;
         }
         // Cholesky with pivot check: a column dependent on earlier ones gets zero weight
         double scale = 0;
-        for (int a = 0; a < p; a++) scale = Math.max(scale, g[a * p + a]);
+        for (int u = 0; u < p; u++) scale = Math.max(scale, g[u * p + u]);
         boolean[] dead = deadScratch;
         java.util.Arrays.fill(dead, 0, p, false);
         for (int j = 0; j < p; j++) {
@@ -449,26 +569,26 @@ public final class ContactForces {
             double l = Math.sqrt(d);
             g[j * p + j] = l;
             for (int i = j + 1; i < p; i++) {
-                double s = g[i * p + j];
-                for (int k = 0; k < j; k++) if (!dead[k]) s -= g[i * p + k] * g[j * p + k];
-                g[i * p + j] = s / l;
+                double sum = g[i * p + j];
+                for (int k = 0; k < j; k++) if (!dead[k]) sum -= g[i * p + k] * g[j * p + k];
+                g[i * p + j] = sum / l;
             }
         }
-        double[] y = yScratch;
+        double[] yy = yScratch;
         for (int i = 0; i < p; i++) {
-            if (dead[i]) { y[i] = 0; continue; }
-            double s = b[i];
-            for (int k = 0; k < i; k++) if (!dead[k]) s -= g[i * p + k] * y[k];
-            y[i] = s / g[i * p + i];
+            if (dead[i]) { yy[i] = 0; continue; }
+            double sum = b[i];
+            for (int k = 0; k < i; k++) if (!dead[k]) sum -= g[i * p + k] * yy[k];
+            yy[i] = sum / g[i * p + i];
         }
         for (int i = p - 1; i >= 0; i--) {
-            if (dead[i]) { y[i] = 0; continue; }
-            double s = y[i];
-            for (int k = i + 1; k < p; k++) if (!dead[k]) s -= g[k * p + i] * y[k];
-            y[i] = s / g[i * p + i];
+            if (dead[i]) { yy[i] = 0; continue; }
+            double sum = yy[i];
+            for (int k = i + 1; k < p; k++) if (!dead[k]) sum -= g[k * p + i] * yy[k];
+            yy[i] = sum / g[i * p + i];
         }
-        for (int i = 0; i < n; i++) z[i] = 0;
-        for (int a = 0; a < p; a++) z[idx[a]] = y[a];
+        for (int i = 0; i < cols; i++) zz[i] = 0;
+        for (int u = 0; u < p; u++) zz[idx[u]] = yy[u];
         return true;
     }
 

@@ -56,6 +56,21 @@ public final class FingerClutch {
             || (state == ClutchState.STALLED && beforeStall != ClutchState.BROKEN);
     }
 
+    /**
+     * Whether the inner joint is held by its self-locking worm with no torque of the drive's own:
+     * STALLED before any breakaway. The outer link was blocked first, the motor stalls winding the
+     * outer joint ({@link #transmittedTorque}: nothing for the inner one), and the inner link,
+     * which touches nothing of its own, stays where the stalled drive train holds it, so whatever
+     * torque the contacts on the outer link put on joint k2 is a reaction of its worm gear (which a
+     * load on the link does not back-drive, DESIGN.md decision 6), like the spread joint's: it is
+     * not a torque the contact forces must match (DESIGN.md, "Which torques the contacts carry").
+     * In BLOCKED, BROKEN and STALLED after a breakaway the clutch puts a known torque on the held
+     * inner link (the wound springs, the jammed τ_break); in FREE the links move.
+     */
+    public boolean innerHeldByWorm() {
+        return state == ClutchState.STALLED && beforeStall != ClutchState.BROKEN;
+    }
+
     /** The motor's actual position (counts): the set-point, except while STALLED when closing. */
     public double motor() { return motor; }
 

@@ -429,9 +429,11 @@ public final class HandModel {
 
     /**
      * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
-     * the contact forces that carry the transmitted part over the flexion joints k2, k3: eq (11)
-     * as non-negative least squares without friction, the least-norm forces in the friction
-     * cones with it ({@link ContactForces#solveWithFriction}, DESIGN.md).
+     * the contact forces that carry the transmitted part over the flexion joints k2, k3 — over
+     * k3 alone while the inner joint is held by its worm ({@link FingerClutch#innerHeldByWorm}:
+     * STALLED before a breakaway, when the torque the contacts put on k2 is the worm's reaction):
+     * eq (11) as non-negative least squares without friction, the least-norm forces in the
+     * friction cones with it ({@link ContactForces#solveWithFriction}, DESIGN.md).
      */
     private void torquesAndForces(int k) {
         int i = k - 1;
@@ -462,11 +464,14 @@ public final class HandModel {
         if (n > 0) {
             // the same inputs as finger k's last solve (a held link, the same transmitted torque):
             // its solver still holds the answer
-            if (!(lazy && sameForceInputs(i, cs))) {
+            // the joints whose torque the drive determines: k2 and k3, or k3 alone while the inner
+            // joint is held by its worm (STALLED before a breakaway: its torque is a reaction)
+            int first = clutch[i].innerHeldByWorm() ? 2 : 1;
+            if (!(lazy && sameForceInputs(i, cs, first))) {
                 if (mu == 0) {
-                    solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
+                    solver.solve(framesWorld[i], first, tauContact, n, cs.points, cs.pushDirs, cs.links);
                 } else {
-                    solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
+                    solver.solveWithFriction(framesWorld[i], first, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
                 }
             }
             for (int c = 0; c < n; c++) {
@@ -478,17 +483,18 @@ public final class HandModel {
     }
 
     /**
-     * True when the contact-force solve of finger i would get what its last one got — the
-     * torques on k2, k3, the frames of joints 1–3 and every contact's link, point and push
-     * direction — and records them otherwise (for the next call). No allocation once the key
-     * array has grown to the contact count.
+     * True when the contact-force solve of finger i would get what its last one got — which
+     * joints carry a known torque ({@code first}), the torques on k2, k3, the frames of joints
+     * 1–3 and every contact's link, point and push direction — and records them otherwise (for
+     * the next call). No allocation once the key array has grown to the contact count.
      */
-    private boolean sameForceInputs(int i, ContactSet cs) {
-        int n = cs.size(), len = 3 + 36 + 7 * n;
+    private boolean sameForceInputs(int i, ContactSet cs, int first) {
+        int n = cs.size(), len = 4 + 36 + 7 * n;
         double[] key = forceKey[i];
         if (key.length < len) key = forceKey[i] = java.util.Arrays.copyOf(key, Math.max(len, 2 * key.length));
         boolean same = forceKeyLength[i] == len;
         int o = 0;
+        same &= key[o] == first; key[o++] = first;
         for (int j = 0; j < 3; j++, o++) { same &= key[o] == tauContact[j]; key[o] = tauContact[j]; }
         double[] f = framesWorld[i];
         for (int j = 0; j < 36; j++, o++) { same &= key[o] == f[j]; key[o] = f[j]; }

@@ -204,6 +204,147 @@ class ContactForcesFrictionTest {
         assertTrue(compared > 250, "compared " + compared);
     }
 
+    /**
+     * One contact on the outer link pushing along the link's closing side, asked for τk3 = 1.26
+     * N·m with τk2 = 0: its force line would have to pass through joint k2's axis, which no
+     * force in its cone does (k2's lever is about three times k3's), so the torques cannot be
+     * carried. The answer must be the least-squares torque τ* = argmin |τ − Tᵀf| over forces in
+     * the cone, checked here by its optimality conditions (Moreau: τ* is the projection of τ onto
+     * the convex cone C of carriable torques iff τ* ∈ C, r = τ − τ* has r·c ≤ 0 for every
+     * generator c of C — here the cone edges' torques — and r·τ* = 0): a nonzero force that
+     * reduces the error below the frictionless one. Before the two-phase fix, Newton's method on
+     * the regularised dual stalled at the cone's apex and reported f = 0 (residual 1.26 N·m).
+     */
+    @Test
+    void torquesNoConeForceCarriesGetTheLeastSquaresTorque() {
+        double[] frames = upright();
+        int fr = 36;                                          // frame {k3}: x along link 3
+        double[] p = new double[3], d = new double[3];
+        for (int c = 0; c < 3; c++) {
+            p[c] = frames[fr + 4 * c + 3] - 0.03 * frames[fr + 4 * c];
+            d[c] = frames[fr + 4 * c + 1];
+        }
+        double[] tau = {0, 0, TAU};
+        double[] cones = cones(d, 1, MU);
+        ContactForces cf = new ContactForces();
+        cf.solveWithFriction(frames, 1, tau, 1, p, d, new int[] {3}, cones, M);
+        ContactForces frictionless = new ContactForces();
+        frictionless.solve(frames, 1, tau, 1, p, d, new int[] {3});
+        assertTrue(frictionless.residual() > 0.1, "the case needs torques no force carries: " + frictionless.residual());
+        assertTrue(cf.force(0) > 1, "a force: " + cf.force(0));
+        double[] star = {0, cf.jointTorque(0, 1), cf.jointTorque(0, 2)};
+        double[] r = {0, tau[1] - star[1], tau[2] - star[2]};
+        assertEquals(Math.hypot(r[1], r[2]), cf.residual(), 1e-12);
+        assertTrue(cf.residual() < frictionless.residual() - 0.01, cf.residual() + " vs frictionless " + frictionless.residual());
+        assertEquals(0, r[1] * star[1] + r[2] * star[2], 1e-12, "r · τ* = 0");
+        for (int e = 0; e < M; e++) {
+            double g = r[1] * torqueDir(frames, 1, p, 0, cones, 3 * e) + r[2] * torqueDir(frames, 2, p, 0, cones, 3 * e);
+            assertTrue(g <= 1e-12, "edge " + e + ": r · Tᵀe = " + g + " > 0: a force along it would reduce the error");
+        }
+        double[] f = new double[3];
+        cf.forceVector(0, f, 0);
+        assertTrue(ConeProjectionTest.inCone(cones, M, d, f, 1e-9 * cf.force(0)), "in its cone");
+    }
+
+    /**
+     * Torques drawn at random (τk2, τk3 in [−0.5, 1.5] N·m, most of them not carriable by the
+     * contacts of the pose) on 300 seeded finger poses: the torques carried are the least-squares
+     * ones of an independent quadratic program (ojAlgo: minimise |Σ Tᵀf − τ|² over edge weights
+     * λ ≥ 0), and the forces are the least-norm ones carrying them (the second program of
+     * {@link #leastNormForcesAgreeWithAQuadraticProgram} on those torques).
+     */
+    @Test
+    void leastSquaresTorquesAgreeWithAQuadraticProgram() {
+        Random rnd = new Random(20260518);
+        ContactForces cf = new ContactForces();
+        int compared = 0, infeasible = 0;
+        for (int trial = 0; trial < 300; trial++) {
+            double[] frames = new double[48];
+            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
+                Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
+            int n = 1 + rnd.nextInt(4);
+            double mu = 0.1 + 0.9 * rnd.nextDouble();
+            double[] p = new double[3 * n], d = new double[3 * n];
+            int[] links = new int[n];
+            randomContacts(rnd, frames, n, p, d, links);
+            double[] cones = cones(d, n, mu);
+            double[] tau = {0, -0.5 + 2 * rnd.nextDouble(), -0.5 + 2 * rnd.nextDouble()};
+            cf.solveWithFriction(frames, 1, tau, n, p, d, links, cones, M);
+            double[] star = leastSquaresTorque(frames, tau, n, p, links, cones, cf);
+            if (star == null) continue;
+            double t2 = 0, t3 = 0;
+            for (int i = 0; i < n; i++) { t2 += cf.jointTorque(i, 1); t3 += cf.jointTorque(i, 2); }
+            assertEquals(star[1], t2, 1e-6, "trial " + trial + ": least-squares torque on k2");
+            assertEquals(star[2], t3, 1e-6, "trial " + trial + ": least-squares torque on k3");
+            assertEquals(Math.hypot(tau[1] - t2, tau[2] - t3), cf.residual(), 1e-12, "trial " + trial);
+            if (Math.hypot(tau[1] - star[1], tau[2] - star[2]) > 1e-3) infeasible++;
+            double[] ref = quadraticProgram(frames, star, n, p, links, cones, cf);
+            if (ref == null) continue;
+            double scale = 1e-5 * (1 + norm(ref));
+            double[] f = new double[3];
+            for (int i = 0; i < n; i++) {
+                cf.forceVector(i, f, 0);
+                for (int c = 0; c < 3; c++) assertEquals(ref[3 * i + c], f[c], scale, "trial " + trial + " contact " + i + " component " + c);
+            }
+            compared++;
+        }
+        assertTrue(compared > 250, "compared " + compared);
+        assertTrue(infeasible > 100, "torques no cone forces carry: " + infeasible);
+    }
+
+    /** Contacts on links 2 and 3 near the link's frame, pushing roughly along its closing side. */
+    private static void randomContacts(Random rnd, double[] frames, int n, double[] p, double[] d, int[] links) {
+        for (int i = 0; i < n; i++) {
+            links[i] = 2 + rnd.nextInt(2);
+            int fr = 12 * links[i];
+            double s = -(0.01 + 0.04 * rnd.nextDouble());
+            double off = 0.008 * (rnd.nextDouble() - 0.5);
+            for (int c = 0; c < 3; c++) {
+                p[3 * i + c] = frames[fr + 4 * c + 3] + s * frames[fr + 4 * c] + off * frames[fr + 4 * c + 1];
+                d[3 * i + c] = frames[fr + 4 * c + 1] + 0.6 * rnd.nextGaussian() * (c == 0 ? 1 : 0.5);
+            }
+            double l = Math.sqrt(d[3 * i] * d[3 * i] + d[3 * i + 1] * d[3 * i + 1] + d[3 * i + 2] * d[3 * i + 2]);
+            for (int c = 0; c < 3; c++) d[3 * i + c] /= l;
+        }
+    }
+
+    /**
+     * The reference least-squares torque: minimise |A λ − τ|² over λ ≥ 0 (A: the cone edges'
+     * torques on joints 2 and 3, undetermined contacts left out as the solver does) by ojAlgo;
+     * returns {0, τ*2, τ*3} = A λ (unique, the projection onto a convex cone), null if ojAlgo does
+     * not report an optimum.
+     */
+    private static double[] leastSquaresTorque(double[] frames, double[] tau, int n, double[] p, int[] links, double[] cones, ContactForces cf) {
+        ExpressionsBasedModel model = new ExpressionsBasedModel();
+        Variable[] lam = new Variable[n * M];
+        for (int v = 0; v < n * M; v++) lam[v] = model.addVariable("l" + v).lower(0);
+        double[][] a = new double[3][n * M];
+        for (int i = 0; i < n; i++) {
+            for (int e = 0; e < M; e++) {
+                if (cf.undetermined(i)) { lam[i * M + e].upper(0); continue; }
+                for (int jm = 1; jm < links[i]; jm++) a[jm][i * M + e] = torqueDir(frames, jm, p, i, cones, 3 * M * i + 3 * e);
+            }
+        }
+        Expression obj = model.addExpression("objective").weight(1);
+        for (int u = 0; u < n * M; u++) {
+            double lin = 0;
+            for (int jm = 1; jm < 3; jm++) lin += a[jm][u] * tau[jm];
+            obj.set(lam[u], -2 * lin);
+            for (int v = 0; v < n * M; v++) {
+                double q = a[1][u] * a[1][v] + a[2][u] * a[2][v];
+                if (q != 0) obj.set(lam[u], lam[v], q);
+            }
+        }
+        Optimisation.Result r = model.minimise();
+        if (!r.getState().isOptimal()) return null;
+        double[] star = new double[3];
+        for (int u = 0; u < n * M; u++) {
+            double w = lam[u].getValue().doubleValue();
+            for (int jm = 1; jm < 3; jm++) star[jm] += a[jm][u] * w;
+        }
+        return star;
+    }
+
     /** t_m · e for joint m (0-based) at contact i: (z × (p − o)) · e. */
     private static double torqueDir(double[] frames, int jm, double[] p, int i, double[] e, int eo) {
         int f = 12 * jm;
