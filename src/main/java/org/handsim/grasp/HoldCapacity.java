@@ -2,10 +2,8 @@ package org.handsim.grasp;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.ojalgo.optimisation.Expression;
-import org.ojalgo.optimisation.ExpressionsBasedModel;
 import org.ojalgo.optimisation.Optimisation;
-import org.ojalgo.optimisation.Variable;
+import org.ojalgo.optimisation.linear.LinearSolver;
 
 /**
  * How much load a grasp holds (issue 12, DESIGN.md decision 6): for a disturbance force F·d on
@@ -15,9 +13,11 @@ import org.ojalgo.optimisation.Variable;
  * while every joint's torque stays within what that joint can resist,
  * <pre>  −L_j ≤ Σ_{i loads j} (z_j × (p_i − o_j)) · f_i ≤ L_j,</pre>
  * (eq 9 with the force's full direction: the torque joint j must supply for the finger to apply
- * f_i), and F ≤ F_cap. A linear program, solved by ojAlgo's simplex ({@link ExpressionsBasedModel};
- * Murray, Li, Sastry, <i>A Mathematical Introduction to Robotic Manipulation</i>, §5.3–5.5, for
- * contact models and internal forces).
+ * f_i), and F ≤ F_cap. A linear program, solved by ojAlgo's revised (phased dual/primal) simplex
+ * through its double-valued {@link LinearSolver.Builder} — the solver {@code ExpressionsBasedModel}
+ * uses, without that model's BigDecimal coefficients and presolve, which cost 6× the solve here
+ * (docs/BENCHMARKS.md, "The hold LP"); Murray, Li, Sastry, <i>A Mathematical Introduction to
+ * Robotic Manipulation</i>, §5.3–5.5, for contact models and internal forces.
  *
  * <p><b>Outcomes</b> ({@link Result#outcome()}), never NaN or infinity:
  * <ul>
@@ -142,29 +142,33 @@ public final class HoldCapacity {
         int n = contacts.size(), nj = joints.size(), m = edges;
         if (n == 0) return new Result(0, Outcome.NO_CONTACTS, new double[0], new double[nj]);
         if (coneEdges == null) coefficients();
-        // a new model per direction: ojAlgo's presolve changes a model it has solved, so one
-        // model re-solved with the load's coefficients changed gives wrong answers (tried)
-        ExpressionsBasedModel model = new ExpressionsBasedModel();
-        Variable load = model.addVariable("F").lower(0).upper(capN).weight(1);
-        Variable[] lambda = new Variable[n * m];
-        for (int v = 0; v < n * m; v++) lambda[v] = model.addVariable("l" + v).lower(0);
+        // x = (F, λ): minimise −F; the balance rows as equalities, each used joint's range as two
+        // inequalities (τ ≤ L, −τ ≤ L), 0 ≤ F ≤ F_cap, λ ≥ 0 (the builder's default bound)
+        int nv = 1 + n * m;
+        double[] row = new double[nv];
+        row[0] = -1;
+        LinearSolver.Builder lp = LinearSolver.newBuilder(row);
         for (int r = 0; r < 6; r++) {
-            Expression row = model.addExpression("balance" + r).level(0);
-            if (r < 3) row.set(load, direction[r] / dl);
-            for (int v = 0; v < n * m; v++) if (balance[r][v] != 0) row.set(lambda[v], balance[r][v]);
+            row[0] = r < 3 ? direction[r] / dl : 0;
+            System.arraycopy(balance[r], 0, row, 1, n * m);
+            lp.equality(0, row);
         }
+        row[0] = 0;
         for (int j = 0; j < nj; j++) {
             if (!jointUsed[j]) continue;
             double lim = joints.get(j)[6];
-            Expression row = model.addExpression("joint" + j).lower(-lim).upper(lim);
-            for (int v = 0; v < n * m; v++) if (torquePerEdge[j][v] != 0) row.set(lambda[v], torquePerEdge[j][v]);
+            System.arraycopy(torquePerEdge[j], 0, row, 1, n * m);
+            lp.inequality(lim, row);
+            for (int v = 1; v < nv; v++) row[v] = -row[v];
+            lp.inequality(lim, row);
         }
-        Optimisation.Result r = model.maximise();
+        lp.range(0, 0, capN);
+        Optimisation.Result r = lp.build().solve();
         if (!r.getState().isOptimal()) return new Result(0, Outcome.SOLVER_FAILED, new double[3 * n], new double[nj]);
-        double f = Math.max(0, Math.min(capN, load.getValue().doubleValue()));
+        double f = Math.max(0, Math.min(capN, r.doubleValue(0)));
         double[] forces = new double[3 * n];
         double[] w = new double[n * m];
-        for (int v = 0; v < n * m; v++) w[v] = Math.max(0, lambda[v].getValue().doubleValue());
+        for (int v = 0; v < n * m; v++) w[v] = Math.max(0, r.doubleValue(1 + v));
         for (int i = 0; i < n; i++) {
             for (int k = 0; k < m; k++) {
                 int o = 3 * m * i + 3 * k;
