@@ -70,6 +70,17 @@ public final class CoherentQuery {
         return out.intersecting();
     }
 
+    /**
+     * Puts this query in the state of a new one (no near pairs, last poses or placement hints,
+     * counters 0), keeping its arrays: for reuse on other trees by a new owner.
+     */
+    public void recycle() {
+        reset();
+        near.forgetHints();
+        walks = 0;
+        reused = 0;
+    }
+
     /** @return how many calls walked the trees (gathered near pairs) */
     public long walks() { return walks; }
 

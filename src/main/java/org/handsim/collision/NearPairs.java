@@ -70,6 +70,11 @@ public final class NearPairs {
         nodeTests = 0;
     }
 
+    /** Drops the placement hints (−1, as a new set has them). */
+    void forgetHints() {
+        Arrays.fill(facetHints, -1);
+    }
+
     void add(int a, int b, double separation) {
         if (count == triA.length) grow();
         triA[count] = a;

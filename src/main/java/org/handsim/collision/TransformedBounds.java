@@ -40,6 +40,11 @@ final class TransformedBounds {
     /** Length of a facet hint array ({@link #prepare(Kdop, double[], int[])}): one per direction, k ≤ 26. */
     static final int FACET_HINTS = 13;
 
+    /** Forgets the facets of earlier calls (0s: the state of a new instance). */
+    void forgetHints() {
+        java.util.Arrays.fill(lastFacet, 0);
+    }
+
     /**
      * Prepares the decomposition for placing B's k-DOPs ({@code kdop}) by the row-major
      * rigid transform {@code m12} (B's frame → A's frame).

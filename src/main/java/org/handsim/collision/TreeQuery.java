@@ -66,6 +66,17 @@ public final class TreeQuery {
     private int[] vertStamp = new int[0];
     private int stamp;
 
+    /**
+     * Puts this query in the state of a new one — the default placement, no facet hints — keeping
+     * its scratch arrays (their stamps stay valid: they only grow); returns this. For reuse by a
+     * new owner (SceneGeometry's takeover of a retired instance's scratch).
+     */
+    public TreeQuery recycle() {
+        placement = DEFAULT_PLACEMENT;
+        tb.forgetHints();
+        return this;
+    }
+
     /** Sets the placement; returns this. */
     public TreeQuery placement(Placement p) {
         if (p == null) throw new IllegalArgumentException("placement must not be null");

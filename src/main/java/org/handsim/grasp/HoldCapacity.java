@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.ojalgo.optimisation.Optimisation;
 import org.ojalgo.optimisation.linear.LinearSolver;
+import org.ojalgo.structure.Mutate2D;
 
 /**
  * How much load a grasp holds (issue 12, DESIGN.md decision 6): for a disturbance force F·d on
@@ -144,23 +145,28 @@ public final class HoldCapacity {
         if (coneEdges == null) coefficients();
         // x = (F, λ): minimise −F; the balance rows as equalities, each used joint's range as two
         // inequalities (τ ≤ L, −τ ≤ L), 0 ≤ F ≤ F_cap, λ ≥ 0 (the builder's default bound)
-        int nv = 1 + n * m;
-        double[] row = new double[nv];
-        row[0] = -1;
-        LinearSolver.Builder lp = LinearSolver.newBuilder(row);
+        int nv = 1 + n * m, used = 0;
+        for (int j = 0; j < nj; j++) if (jointUsed[j]) used++;
+        double[] objective = new double[nv];
+        objective[0] = -1;
+        LinearSolver.Builder lp = LinearSolver.newBuilder(objective);
+        Mutate2D eq = lp.equalities(new double[6]);
         for (int r = 0; r < 6; r++) {
-            row[0] = r < 3 ? direction[r] / dl : 0;
-            System.arraycopy(balance[r], 0, row, 1, n * m);
-            lp.equality(0, row);
+            if (r < 3 && direction[r] != 0) eq.set(r, 0, direction[r] / dl);
+            for (int v = 0; v < n * m; v++) if (balance[r][v] != 0) eq.set(r, 1 + v, balance[r][v]);
         }
-        row[0] = 0;
-        for (int j = 0; j < nj; j++) {
+        double[] limits = new double[2 * used];
+        int q = 0;
+        for (int j = 0; j < nj; j++) if (jointUsed[j]) { limits[q] = limits[q + 1] = joints.get(j)[6]; q += 2; }
+        Mutate2D in = used > 0 ? lp.inequalities(limits) : null;   // (ojAlgo 57.1 refuses an empty block)
+        q = 0;
+        for (int j = 0; j < nj && used > 0; j++) {
             if (!jointUsed[j]) continue;
-            double lim = joints.get(j)[6];
-            System.arraycopy(torquePerEdge[j], 0, row, 1, n * m);
-            lp.inequality(lim, row);
-            for (int v = 1; v < nv; v++) row[v] = -row[v];
-            lp.inequality(lim, row);
+            for (int v = 0; v < n * m; v++) {
+                double t = torquePerEdge[j][v];
+                if (t != 0) { in.set(q, 1 + v, t); in.set(q + 1, 1 + v, -t); }
+            }
+            q += 2;
         }
         lp.range(0, 0, capN);
         Optimisation.Result r = lp.build().solve();

@@ -9,6 +9,7 @@ import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandClearance;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Scenario;
+import org.handsim.sim.SceneGeometry;
 import org.handsim.sim.Simulation;
 import org.handsim.util.JsonWriter;
 
@@ -34,6 +35,8 @@ public final class TrialRunner {
     private final HandClearance clearance;
     private final double[] startCounts = new double[3];
     private final IntConsumer fault;
+    /** The last trial's collision: the next trial's takes over its query scratch (no allocation). */
+    private SceneGeometry geometry;
 
     /**
      * @throws org.handsim.sim.ScenarioException if the template's object cannot be loaded
@@ -76,7 +79,9 @@ public final class TrialRunner {
         Autograsp.Approach ap = Autograsp.approach(clearance, p.approach(), p.roll(), p.spreadCounts(), startCounts, p.standoff());
         String text = scenarioJson(p, ap.position(), ap.rotation(), spec.name() + "-trial" + p.index(), false, null);
         Scenario s = Scenario.parse(templateFile, text);
-        HandModel m = Simulation.model(s, false);
+        SceneGeometry sg = s.object() == null ? null : new SceneGeometry(s.object(), SceneGeometry.DEFAULT_K, geometry);
+        if (sg != null) geometry = sg;
+        HandModel m = Simulation.model(s, sg);
         while (m.running() && !allStalled(m)) m.step();
         GraspAssessment g = GraspAssessment.of(m, spec.mu(), spec.edges());
         int contacts = 0;

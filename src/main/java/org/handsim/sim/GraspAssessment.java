@@ -18,7 +18,8 @@ import org.handsim.util.Decimal;
  * holds in each of the six world directions.
  *
  * @param timeS    simulated time of the evaluation, s
- * @param quality  force closure, ε and volume of the L1 grasp wrench space ({@link WrenchSpace#quality})
+ * @param quality  force closure, ε and volume of the L1 grasp wrench space ({@link WrenchSpace#qualityWithoutFacets}:
+ *                 its facet count is −1, not computed)
  * @param holdN    the largest disturbance force through the object's centroid the grasp holds,
  *                 newtons, in the order of {@link #DIRECTIONS}: +x, −x, +y, −y, +z, −z (world);
  *                 at most the hand's rated load ({@link HandDescription#handRatingN()}, 58.84 N),
@@ -114,7 +115,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         double[] cr = in.centroidAndRadius();
         if (cr == null) cr = fromContacts(points, n);
         double[] c = {cr[0], cr[1], cr[2]};
-        GraspQuality q = WrenchSpace.quality(GraspWrenches.of(n, points, normals, mu, edges, c, cr[3]), n * edges, n);
+        GraspQuality q = WrenchSpace.qualityWithoutFacets(GraspWrenches.of(n, points, normals, mu, edges, c, cr[3]), n * edges, n);
         double[] hold = hold(in, contacts, mu, edges, c, cr[3]).holdSix();
         double min = hold[0];
         for (double h : hold) min = Math.min(min, h);

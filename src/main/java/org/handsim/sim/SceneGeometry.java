@@ -53,17 +53,19 @@ public final class SceneGeometry implements LinkContacts {
     private final TriangleMesh[] linkMeshes = new TriangleMesh[3];
     private final KdopTree[] linkTrees = new KdopTree[3];
     private final double[] worldFromObject = new double[12];
-    private final TreeQuery query = new TreeQuery();
+    private final TreeQuery query;
     private final double[][] linkSpheres = new double[3][];
     private final double[] objectCentreWorld;
     private final double objectRadius;
-    private final CollisionResult result = new CollisionResult();
-    private final ContactPatches patches = new ContactPatches();
+    private final CollisionResult result;
+    private final ContactPatches patches;
     private final double tolerance;
     private final double[] linkFromWorld = new double[12], pose = new double[12], c = new double[3], n = new double[3];
     // temporal coherence: per finger and link (index 3·(finger−1) + link−1)
     private boolean coherent = true;
-    private final CoherentQuery[] coherentQueries = new CoherentQuery[9];
+    private final CoherentQuery[] coherentQueries;
+    /** Set when another instance took over this one's scratch: it answers no more queries. */
+    private boolean retired;
     private final long[] counters = new long[Counter.values().length];
 
     /** What the collision back end did (see {@link #counter}; in {@code summary.json}'s counters). */
@@ -84,6 +86,23 @@ public final class SceneGeometry implements LinkContacts {
      * @throws ScenarioException naming the file, line and column if a model cannot be loaded
      */
     public SceneGeometry(Scenario.ObjectPlacement object, int k) {
+        this(object, k, null);
+    }
+
+    /**
+     * As {@link #SceneGeometry(Scenario.ObjectPlacement, int)}, taking over the query scratch of
+     * {@code retired} (null: new scratch) — its tree query, coherent queries, contact patches
+     * and result arrays, grown to the sizes its queries needed — put back in the state of new
+     * scratch (no near pairs, no placement hints, counters 0), so the queries give what new
+     * scratch gives, to the last bit; only the allocations are saved. For a caller that makes
+     * model after model on one thread (the planner: one model per trial, where the growing of
+     * that scratch allocated about 1 MB a mug trial). {@code retired} answers no more queries
+     * (they throw {@link IllegalStateException}).
+     *
+     * @throws ScenarioException naming the file, line and column if a model cannot be loaded
+     * @throws IllegalStateException if {@code retired} was already taken over
+     */
+    public SceneGeometry(Scenario.ObjectPlacement object, int k, SceneGeometry retired) {
         Shape obj = shape(object.file(), object.divisions(), object.meshScale(), k);
         objectMesh = obj.mesh;
         objectTree = obj.tree;
@@ -100,10 +119,26 @@ public final class SceneGeometry implements LinkContacts {
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
-        for (int i = 0; i < coherentQueries.length; i++) coherentQueries[i] = new CoherentQuery();
         double[] cw = object.worldFromObject().apply(obj.centroid());
         centroidAndRadius = new double[] {cw[0], cw[1], cw[2], obj.centroidReach()};
         thickness = obj.thickness();
+        // the scratch last: a model that cannot be loaded leaves the retired instance as it was
+        if (retired == null) {
+            query = new TreeQuery();
+            result = new CollisionResult();
+            patches = new ContactPatches();
+            coherentQueries = new CoherentQuery[9];
+            for (int i = 0; i < coherentQueries.length; i++) coherentQueries[i] = new CoherentQuery();
+        } else {
+            if (retired.retired) throw new IllegalStateException("this scene geometry's scratch was already taken over");
+            retired.retired = true;
+            query = retired.query.recycle();
+            result = retired.result;
+            result.clear();
+            patches = retired.patches;
+            coherentQueries = retired.coherentQueries;
+            for (CoherentQuery c : coherentQueries) c.recycle();
+        }
     }
 
     /**
@@ -325,6 +360,7 @@ public final class SceneGeometry implements LinkContacts {
 
     /** The tree query of link j at {@code w} into {@link #result}; false if it found nothing. */
     private boolean query(int finger, int link, double[] w, boolean firstOnly) {
+        if (retired) throw new IllegalStateException("this scene geometry's scratch was taken over by another (SceneGeometry(object, k, retired))");
         if (apart(link, w)) {
             result.clear();
             counters[Counter.SPHERE_APART.ordinal()]++;

@@ -21,6 +21,15 @@ public final class Simulation {
         return new HandModel(scenario, contacts, HandDynamics.barrettHand()::inverseDynamics, recorder);
     }
 
+    /**
+     * A model of the scenario without a trace whose object collision is {@code contacts} (null:
+     * no object) — e.g. a {@link SceneGeometry} that took over a retired one's query scratch
+     * (the planner, one model per trial).
+     */
+    public static HandModel model(Scenario scenario, LinkContacts contacts) {
+        return new HandModel(scenario, contacts, HandDynamics.barrettHand()::inverseDynamics, false);
+    }
+
     /** As {@link #model(Scenario, boolean)} with k-DOPs of the given k (6, 14, 18, 26). */
     public static HandModel model(Scenario scenario, boolean record, int k) {
         LinkContacts contacts = scenario.object() == null ? null : new SceneGeometry(scenario.object(), k);

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.handsim.math.RigidTransform;
@@ -82,6 +83,43 @@ class SceneGeometryTest {
         long walks = on.counter(SceneGeometry.Counter.TREE_WALKS), reused = on.counter(SceneGeometry.Counter.COHERENT_QUERIES);
         assertEquals(2L * queries, off.counter(SceneGeometry.Counter.TREE_WALKS) + off.counter(SceneGeometry.Counter.SPHERE_APART));
         assertTrue(walks * 5 < reused, walks + " walks, " + reused + " answered from near pairs");
+    }
+
+    /**
+     * Scratch taken over from a retired instance changes no number: the mug grasp run on new
+     * scratch, and again on scratch that first served the paper's cube experiment and then a
+     * mug grasp (grown, its near pairs and hints left from those runs), records the same trace
+     * bit for bit and the same collision counters; the retired instance refuses queries.
+     */
+    @Test
+    void scratchTakenOverFromARetiredInstanceChangesNoNumber() {
+        Scenario mug = Scenario.load(Home.scenarios().resolve("mug-grasp.json"));
+        Scenario cube = Scenario.load(Home.paperScenario());
+        SceneGeometry fresh = new SceneGeometry(mug.object(), SceneGeometry.DEFAULT_K);
+        HandModel a = new HandModel(mug, fresh, org.handsim.dynamics.HandDynamics.barrettHand()::inverseDynamics, true);
+        a.run(null);
+        SceneGeometry first = new SceneGeometry(cube.object(), SceneGeometry.DEFAULT_K);
+        new HandModel(cube, first, org.handsim.dynamics.HandDynamics.barrettHand()::inverseDynamics, false).run(null);
+        SceneGeometry second = new SceneGeometry(mug.object(), SceneGeometry.DEFAULT_K, first);
+        new HandModel(mug, second, org.handsim.dynamics.HandDynamics.barrettHand()::inverseDynamics, false).run(null);
+        SceneGeometry reused = new SceneGeometry(mug.object(), SceneGeometry.DEFAULT_K, second);
+        HandModel b = new HandModel(mug, reused, org.handsim.dynamics.HandDynamics.barrettHand()::inverseDynamics, true);
+        b.run(null);
+        Recorder ra = a.recorder(), rb = b.recorder();
+        assertEquals(ra.rows(), rb.rows());
+        for (int row = 0; row < ra.rows(); row++) {
+            for (int k = 1; k <= 3; k++) {
+                for (int c = Recorder.Q; c <= Recorder.TAU3; c++) {
+                    assertEquals(ra.get(k, c, row), rb.get(k, c, row), "finger " + k + " column " + c + " row " + row);
+                }
+                assertEquals(ra.force(k, row), rb.force(k, row), "force, finger " + k + " row " + row);
+            }
+        }
+        assertEquals(fresh.counters(), reused.counters());
+        assertTrue(fresh.counter(SceneGeometry.Counter.TREE_WALKS) > 0);
+        assertThrows(IllegalStateException.class, () -> first.touches(1, 2, linkAt(0.03, 0, 0.04)));
+        assertThrows(IllegalStateException.class, () -> second.collide(1, 2, linkAt(0.03, 0, 0.04), new ContactSet()));
+        assertThrows(IllegalStateException.class, () -> new SceneGeometry(mug.object(), SceneGeometry.DEFAULT_K, first));
     }
 
     @Test
