@@ -84,6 +84,11 @@ public final class ConvexHull {
     private int capacity;
     private int highWater;
     private int[] verts, nbr;
+    /**
+     * For facet f's neighbour g = nbr[f·d + i]: the slot of f among g's neighbours
+     * (nbr[g·d + nbrSlot[f·d + i]] == f), kept beside nbr so that crossing a ridge needs no search.
+     */
+    private int[] nbrSlot;
     private double[] normal, offset, furthestDist;
     private int[] outHead, furthest, gen, mark;
     private boolean[] alive;
@@ -188,7 +193,7 @@ public final class ConvexHull {
             for (int k = 0; k < d; k++) {
                 onSurface[verts[fo + k]] = true;
                 int g = nbr[fo + k];
-                if (g > f && distance(verts[g * d + slotOfNeighbour(g, f)], f) > slack) return true;
+                if (g > f && distance(verts[g * d + nbrSlot[fo + k]], f) > slack) return true;
             }
         }
         for (int i = 0; i < n; i++) {
@@ -423,7 +428,7 @@ public final class ConvexHull {
             for (int i = 0; i < d; i++) {
                 int g = nbr[f * d + i];
                 if (g < f) continue;
-                int x = farVertex(g, f);
+                int x = verts[g * d + nbrSlot[f * d + i]];
                 if (Math.abs(distance(x, f)) > mt) continue;
                 int a = find(f), b = find(g);
                 if (a != b) { unionParent[a] = b; groups--; }
@@ -454,6 +459,7 @@ public final class ConvexHull {
                 int back = -1;
                 for (int j = 0; j < d; j++) if (nbr[g * d + j] == f) back = j;
                 if (back < 0) return "facet " + f + " -> " + g + " not mutual";
+                if (nbrSlot[f * d + i] != back) return "facet " + f + " slot " + i + ": kept slot " + nbrSlot[f * d + i] + " in " + g + ", not " + back;
                 for (int k = 0; k < d; k++) {
                     if (k == i) continue;
                     int v = verts[f * d + k];
@@ -529,6 +535,7 @@ public final class ConvexHull {
                 verts[f * d + slot] = simplex[k];
                 // the neighbour opposite simplex vertex k is the facet that leaves out k: facet index k
                 nbr[f * d + slot] = k;
+                nbrSlot[f * d + slot] = f < k ? f : f - 1;   // facet k holds simplex vertex f at that slot
                 slot++;
             }
             hyperplane(f, -1);
@@ -672,8 +679,11 @@ public final class ConvexHull {
                 int nf = newFacet();
                 for (int k = 0; k < d; k++) { verts[nf * d + k] = verts[f * d + k]; nbr[nf * d + k] = -1; }
                 verts[nf * d + i] = p;
+                int back = nbrSlot[f * d + i];
                 nbr[nf * d + i] = g;
-                nbr[g * d + slotOfNeighbour(g, f)] = nf;
+                nbrSlot[nf * d + i] = back;
+                nbr[g * d + back] = nf;
+                nbrSlot[g * d + back] = i;
                 mark[nf] = newMark;
                 orientation[nf] = orientation[f];
                 if (!rotatedHyperplane(nf, f, g, p)) hyperplane(nf, f);
@@ -687,8 +697,9 @@ public final class ConvexHull {
         // 3. link the new facets to each other across their ridges through p
         if (newCount > 0 && linkByHash(p) && coneIsSound(Math.max(Math.abs(t), tau))) return true;
         for (int q = 0; q < newCount; q++) {       // undo
-            int nf = newFacets[q], g = nbr[nf * d + origin[2 * q + 1]];
-            nbr[g * d + slotOfNeighbour(g, nf)] = origin[2 * q];
+            int nf = newFacets[q], i = origin[2 * q + 1], g = nbr[nf * d + i], back = nbrSlot[nf * d + i];
+            nbr[g * d + back] = origin[2 * q];
+            nbrSlot[g * d + back] = i;
             freeFacet(nf);
         }
         newCount = 0;
@@ -712,7 +723,7 @@ public final class ConvexHull {
             int nf = coneQueue[head++], no = nf * d;
             for (int k = 0; k < d; k++) {
                 int g = nbr[no + k];
-                if (distance(verts[g * d + slotOfNeighbour(g, nf)], nf) > slack) return false;
+                if (distance(verts[g * d + nbrSlot[no + k]], nf) > slack) return false;
                 if (verts[no + k] != newVertex && coneMark[g] != stamp && isNew(g)) {
                     coneMark[g] = stamp;
                     coneQueue[reached++] = g;
@@ -777,7 +788,9 @@ public final class ConvexHull {
                         if (of < 0) return false;                       // a third facet on this ridge
                         int os = tableSlot[h];
                         nbr[no + k] = of;
+                        nbrSlot[no + k] = os;
                         nbr[of * d + os] = nf;
+                        nbrSlot[of * d + os] = k;
                         tableFacet[h] = -1;
                         break;
                     }
@@ -1054,6 +1067,7 @@ public final class ConvexHull {
         if (cap <= capacity) return;
         verts = grow(verts, cap * d);
         nbr = grow(nbr, cap * d);
+        nbrSlot = grow(nbrSlot, cap * d);
         normal = growD(normal, cap * d);
         offset = growD(offset, cap);
         furthestDist = growD(furthestDist, cap);
@@ -1087,21 +1101,10 @@ public final class ConvexHull {
         work[workCount++] = f;
     }
 
-    private int slotOfNeighbour(int f, int g) {
-        int fo = f * d;
-        for (int i = 0; i < d; i++) if (nbr[fo + i] == g) return i;
-        throw new IllegalStateException("facets " + f + " and " + g + " are not neighbours (a bug)");
-    }
-
     private int slotOfVertex(int f, int v) {
         int fo = f * d;
         for (int i = 0; i < d; i++) if (verts[fo + i] == v) return i;
         throw new IllegalStateException("vertex " + v + " not in facet " + f + " (a bug)");
-    }
-
-    /** The vertex of g that is not in its neighbour f. */
-    private int farVertex(int g, int f) {
-        return verts[g * d + slotOfNeighbour(g, f)];
     }
 
     private int find(int f) {
