@@ -555,6 +555,34 @@ public final class TreeQuery {
         }
     }
 
+    /**
+     * Places B node nb's children (left nb + 1, right cb) and, when they were not placed yet,
+     * tightens nb's own placed bounds to the merge of theirs where that is tighter: a k-DOP
+     * mapped by {@link TransformedBounds} is looser the bigger the node, so the merge of the
+     * two mapped halves is usually inside the mapped whole. Both are bounds of nb's placed
+     * vertices, so the walk still finds every pair, in the same order (it only drops node pairs
+     * it would have descended in vain); it tests about a fifth fewer node pairs.
+     */
+    private void placeChildren(KdopTree b, int nb, int cb) {
+        int l = nb + 1;
+        if (nodeStamp[cb] == stamp && nodeStamp[l] == stamp) return;
+        int k = b.k();
+        if (b.child[l] >= 0 && b.child[cb] >= 0 && nodeStamp[l] != stamp && nodeStamp[cb] != stamp) {
+            nodeStamp[l] = stamp;
+            nodeStamp[cb] = stamp;
+            tb.apply2(b.bounds, l * k, cb * k, bb, l * k, cb * k);
+        } else {
+            placeNode(b, l);
+            placeNode(b, cb);
+        }
+        double[] x = bb;
+        int o = nb * k, lo = l * k, r = cb * k;
+        for (int j = 0; j < k; j += 2) {
+            x[o + j] = Math.max(x[o + j], Math.min(x[lo + j], x[r + j]));
+            x[o + j + 1] = Math.min(x[o + j + 1], Math.max(x[lo + j + 1], x[r + j + 1]));
+        }
+    }
+
     private void placeVertex(double[] src, int off) {
         int v = off / 3;
         if (vertStamp[v] != stamp) {
@@ -602,16 +630,35 @@ public final class TreeQuery {
                 int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
                 for (int i = fa; i < ea; i++) {
                     int ta = orderA[i];
+                    if (degA[ta]) {
+                        degSkipped += eb - fb;
+                        continue;
+                    }
+                    int oa = 3 * ta, a0 = 3 * trisA[oa], a1 = 3 * trisA[oa + 1], a2 = 3 * trisA[oa + 2];
+                    double ax = va[a0], ay = va[a0 + 1], az = va[a0 + 2];
                     for (int j = fb; j < eb; j++) {
                         int tbi = orderB[j];
-                        if (degA[ta] || degB[tbi]) {
+                        if (degB[tbi]) {
                             degSkipped++;
                             continue;
                         }
-                        if (placeNormals) placeNormal(b, tbi);
                         triTests++;
-                        int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
-                            vb, 3 * trisB[3 * tbi], 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
+                        // the first stage of the exact test, here so that most disjoint pairs are
+                        // dropped without being loaded: B's vertices against A's plane (filtered:
+                        // NaN where the sign is not certain, and then the intersector decides),
+                        // then A's against B's
+                        int ob = 3 * tbi, b0 = 3 * trisB[ob], b1 = 3 * trisB[ob + 1], b2 = 3 * trisB[ob + 2];
+                        double bx = vb[b0], by = vb[b0 + 1], bz = vb[b0 + 2];
+                        double e0 = Predicates.orient3dFiltered(nA, nAbsA, oa, ax, ay, az, bx, by, bz);
+                        double e1 = Predicates.orient3dFiltered(nA, nAbsA, oa, ax, ay, az, vb[b1], vb[b1 + 1], vb[b1 + 2]);
+                        double e2 = Predicates.orient3dFiltered(nA, nAbsA, oa, ax, ay, az, vb[b2], vb[b2 + 1], vb[b2 + 2]);
+                        if ((e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0)) continue;
+                        if (placeNormals) placeNormal(b, tbi);
+                        double f0 = Predicates.orient3dFiltered(nB, nAbsB, ob, bx, by, bz, ax, ay, az);
+                        double f1 = Predicates.orient3dFiltered(nB, nAbsB, ob, bx, by, bz, va[a1], va[a1 + 1], va[a1 + 2]);
+                        double f2 = Predicates.orient3dFiltered(nB, nAbsB, ob, bx, by, bz, va[a2], va[a2 + 1], va[a2 + 2]);
+                        if ((f0 > 0 && f1 > 0 && f2 > 0) || (f0 < 0 && f1 < 0 && f2 < 0)) continue;
+                        int r = tt.intersect(va, a0, a1, a2, nA, nAbsA, oa, vb, b0, b1, b2, nB, nAbsB, ob, f0, f1, f2, e0, e1, e2);
                         if (r != TriangleIntersector.DISJOINT) {
                             out.add(ta, tbi, tt, r);
                             if (stopAtFirst) {
@@ -639,10 +686,7 @@ public final class TreeQuery {
                 }
             } else {
                 int oa = na * k;
-                if (lz) {
-                    placeNode(b, cb);
-                    placeNode(b, nb + 1);
-                }
+                if (lz) placeChildren(b, nb, cb);
                 if (Kdop.overlap(ba, oa, bbl, cb * k, k)) {
                     stk[sp++] = na; stk[sp++] = cb;
                 }
