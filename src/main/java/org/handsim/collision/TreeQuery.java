@@ -529,6 +529,7 @@ public final class TreeQuery {
     private boolean lazy, normalsPlaced;
     private double[] bb, vb, nB, nAbsB;
     private int[] triStamp = new int[0];
+    private final int[] leafVerts = new int[12];    // a leaf's distinct vertex offsets (the first 12; more are added again)
     private double[] placedN = new double[0], placedNAbs = new double[0];
 
     /** Makes B node nb's bounds available in A's frame (lazy placement), at bb[nb·k]. */
@@ -542,10 +543,16 @@ public final class TreeQuery {
             Kdop kd = b.kdop();
             kd.setEmpty(bb, o);
             double[] src = b.vertices();
+            int[] seen = leafVerts;
+            int n = 0;
             for (int j = ~c, e = j + b.size[nb]; j < e; j++) {
                 int t = 3 * b.order[j];
+                vertices:
                 for (int q = 0; q < 3; q++) {
                     int p = 3 * b.tris[t + q];
+                    // a vertex shared by the leaf's triangles is added once (adding it again changes nothing)
+                    for (int s = 0; s < n; s++) if (seen[s] == p) continue vertices;
+                    if (n < seen.length) seen[n++] = p;
                     placeVertex(src, p);
                     kd.addPoint(bb, o, vb[p], vb[p + 1], vb[p + 2]);
                 }

@@ -238,7 +238,8 @@ public final class TriangleIntersector {
     /** orient3d(a, b, c, x) with a, b, c, x vertex indices: T1 vertices 0..2, T2 vertices 3..5. */
     private double orient(int a, int b, int c, int x) {
         double[] pa = a < 3 ? v1 : v2, pb = b < 3 ? v1 : v2, pc = c < 3 ? v1 : v2, px = x < 3 ? v1 : v2;
-        int oa = 3 * (a % 3), ob = 3 * (b % 3), oc = 3 * (c % 3), ox = 3 * (x % 3);
+        int oa = a < 3 ? 3 * a : 3 * a - 9, ob = b < 3 ? 3 * b : 3 * b - 9;
+        int oc = c < 3 ? 3 * c : 3 * c - 9, ox = x < 3 ? 3 * x : 3 * x - 9;
         return pred.orient3d(pa[oa], pa[oa + 1], pa[oa + 2], pb[ob], pb[ob + 1], pb[ob + 2],
             pc[oc], pc[oc + 1], pc[oc + 2], px[ox], px[ox + 1], px[ox + 2]);
     }
