@@ -643,6 +643,7 @@ public final class TreeQuery {
                     }
                     int oa = 3 * ta, a0 = 3 * trisA[oa], a1 = 3 * trisA[oa + 1], a2 = 3 * trisA[oa + 2];
                     double ax = va[a0], ay = va[a0 + 1], az = va[a0 + 2];
+                    double nx = nA[oa], ny = nA[oa + 1], nz = nA[oa + 2], mx = nAbsA[oa], my = nAbsA[oa + 1], mz = nAbsA[oa + 2];
                     for (int j = fb; j < eb; j++) {
                         int tbi = orderB[j];
                         if (degB[tbi]) {
@@ -656,14 +657,15 @@ public final class TreeQuery {
                         // then A's against B's
                         int ob = 3 * tbi, b0 = 3 * trisB[ob], b1 = 3 * trisB[ob + 1], b2 = 3 * trisB[ob + 2];
                         double bx = vb[b0], by = vb[b0 + 1], bz = vb[b0 + 2];
-                        double e0 = Predicates.orient3dFiltered(nA, nAbsA, oa, ax, ay, az, bx, by, bz);
-                        double e1 = Predicates.orient3dFiltered(nA, nAbsA, oa, ax, ay, az, vb[b1], vb[b1 + 1], vb[b1 + 2]);
-                        double e2 = Predicates.orient3dFiltered(nA, nAbsA, oa, ax, ay, az, vb[b2], vb[b2 + 1], vb[b2 + 2]);
+                        double e0 = Predicates.orient3dFiltered(nx, ny, nz, mx, my, mz, ax, ay, az, bx, by, bz);
+                        double e1 = Predicates.orient3dFiltered(nx, ny, nz, mx, my, mz, ax, ay, az, vb[b1], vb[b1 + 1], vb[b1 + 2]);
+                        double e2 = Predicates.orient3dFiltered(nx, ny, nz, mx, my, mz, ax, ay, az, vb[b2], vb[b2 + 1], vb[b2 + 2]);
                         if ((e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0)) continue;
                         if (placeNormals) placeNormal(b, tbi);
-                        double f0 = Predicates.orient3dFiltered(nB, nAbsB, ob, bx, by, bz, ax, ay, az);
-                        double f1 = Predicates.orient3dFiltered(nB, nAbsB, ob, bx, by, bz, va[a1], va[a1 + 1], va[a1 + 2]);
-                        double f2 = Predicates.orient3dFiltered(nB, nAbsB, ob, bx, by, bz, va[a2], va[a2 + 1], va[a2 + 2]);
+                        double qx = nB[ob], qy = nB[ob + 1], qz = nB[ob + 2], px = nAbsB[ob], py = nAbsB[ob + 1], pz = nAbsB[ob + 2];
+                        double f0 = Predicates.orient3dFiltered(qx, qy, qz, px, py, pz, bx, by, bz, ax, ay, az);
+                        double f1 = Predicates.orient3dFiltered(qx, qy, qz, px, py, pz, bx, by, bz, va[a1], va[a1 + 1], va[a1 + 2]);
+                        double f2 = Predicates.orient3dFiltered(qx, qy, qz, px, py, pz, bx, by, bz, va[a2], va[a2 + 1], va[a2 + 2]);
                         if ((f0 > 0 && f1 > 0 && f2 > 0) || (f0 < 0 && f1 < 0 && f2 < 0)) continue;
                         int r = tt.intersect(va, a0, a1, a2, nA, nAbsA, oa, vb, b0, b1, b2, nB, nAbsB, ob, f0, f1, f2, e0, e1, e2);
                         if (r != TriangleIntersector.DISJOINT) {
