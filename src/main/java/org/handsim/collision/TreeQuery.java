@@ -12,7 +12,11 @@ import org.handsim.math.RigidTransform;
  * disjoint, drop the pair; if both are leaves, test their triangle pairs
  * ({@link TriangleIntersector}); otherwise replace the pair by the two pairs made with the
  * children of the node with more triangles. The walk only calls {@link Kdop#overlap} with k
- * as a number of slots and the triangle test: it knows nothing of the direction set.
+ * as a number of slots and the triangle test: it knows nothing of the direction set. For a
+ * leaf pair the first stage of the exact triangle test (each triangle's vertices against the
+ * other's plane, filtered) runs in the walk, with the triangle's normal in locals, and is
+ * passed on to {@link TriangleIntersector}: the disjoint pairs it settles (half of them on the
+ * rotated sphere overlap) are never loaded into the intersector.
  *
  * <p><b>Placement of B</b> (DESIGN.md decision 4). Tree A is used as it is; B's tree is stored
  * in B's own frame and must be seen in A's frame. Two ways, both measured
@@ -25,7 +29,10 @@ import org.handsim.math.RigidTransform;
  *       ({@link TransformedBounds}; leaves are fitted exactly to their placed vertices); transform
  *       only the B vertices the walk touches. Internal bounds are looser than refitted ones (a
  *       k-DOP of a rotated k-DOP), so the walk tests more node pairs, but it never pays for the
- *       parts of B far from A. Measured (docs/BENCHMARKS.md, rotated sphere overlap, k = 18):
+ *       parts of B far from A. When the walk places a node's two children it also tightens
+ *       the node's placed bounds to the merge of theirs (a mapped k-DOP is looser the bigger
+ *       the node): fewer node pairs, the same pairs found in the same order.
+ *       Measured (docs/BENCHMARKS.md, rotated sphere overlap, k = 18):
  *       about equal at 320 triangles, 1.5× faster at 1 280, 3.7× at 5 120, 7× at 20 480;
  *       40–160× on the near misses (a refit is O(n) even when nothing is close); at hand scale
  *       (140-triangle finger links against the sphere and the mug) within ±30 % either way,
