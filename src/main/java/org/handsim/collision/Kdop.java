@@ -175,10 +175,57 @@ public final class Kdop {
      * separating one.
      */
     public static boolean overlap(double[] a, int ao, double[] c, int co, int k) {
-        for (int j = 0; j < k; j += 2) {
-            if (a[ao + j] > c[co + j + 1] || c[co + j] > a[ao + j + 1]) return false;
+        // unrolled per k: about a fifth faster than the loop in the tree walk (docs/BENCHMARKS.md, collision)
+        switch (k) {
+            case 18: return overlap18(a, ao, c, co);
+            case 26: return overlap26(a, ao, c, co);
+            case 14: return overlap14(a, ao, c, co);
+            default: return overlap6(a, ao, c, co);
         }
-        return true;
+    }
+
+    private static boolean overlap6(double[] a, int ao, double[] c, int co) {
+        return !(a[ao] > c[co + 1] || c[co] > a[ao + 1])
+            && !(a[ao + 2] > c[co + 3] || c[co + 2] > a[ao + 3])
+            && !(a[ao + 4] > c[co + 5] || c[co + 4] > a[ao + 5]);
+    }
+
+    private static boolean overlap14(double[] a, int ao, double[] c, int co) {
+        return !(a[ao] > c[co + 1] || c[co] > a[ao + 1])
+            && !(a[ao + 2] > c[co + 3] || c[co + 2] > a[ao + 3])
+            && !(a[ao + 4] > c[co + 5] || c[co + 4] > a[ao + 5])
+            && !(a[ao + 6] > c[co + 7] || c[co + 6] > a[ao + 7])
+            && !(a[ao + 8] > c[co + 9] || c[co + 8] > a[ao + 9])
+            && !(a[ao + 10] > c[co + 11] || c[co + 10] > a[ao + 11])
+            && !(a[ao + 12] > c[co + 13] || c[co + 12] > a[ao + 13]);
+    }
+
+    private static boolean overlap18(double[] a, int ao, double[] c, int co) {
+        return !(a[ao] > c[co + 1] || c[co] > a[ao + 1])
+            && !(a[ao + 2] > c[co + 3] || c[co + 2] > a[ao + 3])
+            && !(a[ao + 4] > c[co + 5] || c[co + 4] > a[ao + 5])
+            && !(a[ao + 6] > c[co + 7] || c[co + 6] > a[ao + 7])
+            && !(a[ao + 8] > c[co + 9] || c[co + 8] > a[ao + 9])
+            && !(a[ao + 10] > c[co + 11] || c[co + 10] > a[ao + 11])
+            && !(a[ao + 12] > c[co + 13] || c[co + 12] > a[ao + 13])
+            && !(a[ao + 14] > c[co + 15] || c[co + 14] > a[ao + 15])
+            && !(a[ao + 16] > c[co + 17] || c[co + 16] > a[ao + 17]);
+    }
+
+    private static boolean overlap26(double[] a, int ao, double[] c, int co) {
+        return !(a[ao] > c[co + 1] || c[co] > a[ao + 1])
+            && !(a[ao + 2] > c[co + 3] || c[co + 2] > a[ao + 3])
+            && !(a[ao + 4] > c[co + 5] || c[co + 4] > a[ao + 5])
+            && !(a[ao + 6] > c[co + 7] || c[co + 6] > a[ao + 7])
+            && !(a[ao + 8] > c[co + 9] || c[co + 8] > a[ao + 9])
+            && !(a[ao + 10] > c[co + 11] || c[co + 10] > a[ao + 11])
+            && !(a[ao + 12] > c[co + 13] || c[co + 12] > a[ao + 13])
+            && !(a[ao + 14] > c[co + 15] || c[co + 14] > a[ao + 15])
+            && !(a[ao + 16] > c[co + 17] || c[co + 16] > a[ao + 17])
+            && !(a[ao + 18] > c[co + 19] || c[co + 18] > a[ao + 19])
+            && !(a[ao + 20] > c[co + 21] || c[co + 20] > a[ao + 21])
+            && !(a[ao + 22] > c[co + 23] || c[co + 22] > a[ao + 23])
+            && !(a[ao + 24] > c[co + 25] || c[co + 24] > a[ao + 25]);
     }
 
     /**

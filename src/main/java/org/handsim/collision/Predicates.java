@@ -94,6 +94,20 @@ public final class Predicates {
     }
 
     /**
+     * {@link #orient3dFiltered(double[], double[], int, double, double, double, double, double, double)}
+     * with the normal (nx, ny, nz) and its permanent terms (mx, my, mz) passed as values: the
+     * same arithmetic in the same order, so the same result.
+     */
+    public static double orient3dFiltered(double nx, double ny, double nz, double mx, double my, double mz,
+                                          double ax, double ay, double az, double dx, double dy, double dz) {
+        double ux = dx - ax, uy = dy - ay, uz = dz - az;
+        double det = ux * nx + uy * ny + uz * nz;
+        double perm = Math.abs(ux) * mx + Math.abs(uy) * my + Math.abs(uz) * mz;
+        double bound = O3D_BOUND * perm;
+        return (det > bound || -det > bound) ? det : Double.NaN;
+    }
+
+    /**
      * Writes the floating-point normal {@code (b−a) × (c−a)} to {@code n[o..o+2]} and its
      * permanent terms ({@code |u_y w_z| + |u_z w_y|}, ...) to {@code nAbs[o..o+2]}, for
      * {@link #orient3dFiltered}.

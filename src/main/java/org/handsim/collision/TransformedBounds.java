@@ -107,6 +107,36 @@ final class TransformedBounds {
     }
 
     /**
+     * {@link #apply} for two k-DOPs at once ({@code src[s1..]} to {@code dst[d1..]} and
+     * {@code src[s2..]} to {@code dst[d2..]}), bit-identical to two calls: the tree walk places
+     * both children of a node together, and the decomposition's slots and weights are then
+     * read once for the two.
+     */
+    void apply2(double[] src, int s1, int s2, double[] dst, int d1, int d2) {
+        double rho1 = Math.max(Math.max(Math.max(-src[s1], src[s1 + 1]), Math.max(-src[s1 + 2], src[s1 + 3])),
+            Math.max(-src[s1 + 4], src[s1 + 5]));
+        double rho2 = Math.max(Math.max(Math.max(-src[s2], src[s2 + 1]), Math.max(-src[s2 + 2], src[s2 + 3])),
+            Math.max(-src[s2 + 4], src[s2 + 5]));
+        rho1 = Math.max(rho1, 0);
+        rho2 = Math.max(rho2, 0);
+        final double[] cf = coef, dti = dt, mp = marginP, mt = marginT;
+        final int[] hiS = maxSlot, loS = minSlot;
+        for (int i = 0, c = 0; i < m; i++, c += 3) {
+            double c0 = cf[c], c1 = cf[c + 1], c2 = cf[c + 2], t = dti[i], mpi = mp[i], mti = mt[i];
+            int h0 = hiS[c], h1 = hiS[c + 1], h2 = hiS[c + 2], l0 = loS[c], l1 = loS[c + 1], l2 = loS[c + 2];
+            double hi1 = t + c0 * src[s1 + h0] + c1 * src[s1 + h1] + c2 * src[s1 + h2];
+            double lo1 = t + c0 * src[s1 + l0] + c1 * src[s1 + l1] + c2 * src[s1 + l2];
+            double hi2 = t + c0 * src[s2 + h0] + c1 * src[s2 + h1] + c2 * src[s2 + h2];
+            double lo2 = t + c0 * src[s2 + l0] + c1 * src[s2 + l1] + c2 * src[s2 + l2];
+            double mg1 = mpi * rho1 + mti, mg2 = mpi * rho2 + mti;
+            dst[d1 + 2 * i] = lo1 - mg1;
+            dst[d1 + 2 * i + 1] = hi1 + mg1;
+            dst[d2 + 2 * i] = lo2 - mg2;
+            dst[d2 + 2 * i + 1] = hi2 + mg2;
+        }
+    }
+
+    /**
      * The facets of the convex hull of the signed unit directions ±eⱼ/|eⱼ| of one direction
      * set, each with the inverse of the 3×3 matrix of its (unnormalised, signed) directions.
      * Built once per k by trying every triple (at most 26·25·24/6 = 2 600).

@@ -12,7 +12,11 @@ import org.handsim.math.RigidTransform;
  * disjoint, drop the pair; if both are leaves, test their triangle pairs
  * ({@link TriangleIntersector}); otherwise replace the pair by the two pairs made with the
  * children of the node with more triangles. The walk only calls {@link Kdop#overlap} with k
- * as a number of slots and the triangle test: it knows nothing of the direction set.
+ * as a number of slots and the triangle test: it knows nothing of the direction set. For a
+ * leaf pair the first stage of the exact triangle test (each triangle's vertices against the
+ * other's plane, filtered) runs in the walk, with the triangle's normal in locals, and is
+ * passed on to {@link TriangleIntersector}: the disjoint pairs it settles (half of them on the
+ * rotated sphere overlap) are never loaded into the intersector.
  *
  * <p><b>Placement of B</b> (DESIGN.md decision 4). Tree A is used as it is; B's tree is stored
  * in B's own frame and must be seen in A's frame. Two ways, both measured
@@ -25,7 +29,10 @@ import org.handsim.math.RigidTransform;
  *       ({@link TransformedBounds}; leaves are fitted exactly to their placed vertices); transform
  *       only the B vertices the walk touches. Internal bounds are looser than refitted ones (a
  *       k-DOP of a rotated k-DOP), so the walk tests more node pairs, but it never pays for the
- *       parts of B far from A. Measured (docs/BENCHMARKS.md, rotated sphere overlap, k = 18):
+ *       parts of B far from A. When the walk places a node's two children it also tightens
+ *       the node's placed bounds to the merge of theirs (a mapped k-DOP is looser the bigger
+ *       the node): fewer node pairs, the same pairs found in the same order.
+ *       Measured (docs/BENCHMARKS.md, rotated sphere overlap, k = 18):
  *       about equal at 320 triangles, 1.5× faster at 1 280, 3.7× at 5 120, 7× at 20 480;
  *       40–160× on the near misses (a refit is O(n) even when nothing is close); at hand scale
  *       (140-triangle finger links against the sphere and the mug) within ±30 % either way,
@@ -540,6 +547,7 @@ public final class TreeQuery {
     private boolean lazy, normalsPlaced;
     private double[] bb, vb, nB, nAbsB;
     private int[] triStamp = new int[0];
+    private final int[] leafVerts = new int[12];    // a leaf's distinct vertex offsets (the first 12; more are added again)
     private double[] placedN = new double[0], placedNAbs = new double[0];
 
     /** Makes B node nb's bounds available in A's frame (lazy placement), at bb[nb·k]. */
@@ -553,16 +561,50 @@ public final class TreeQuery {
             Kdop kd = b.kdop();
             kd.setEmpty(bb, o);
             double[] src = b.vertices();
+            int[] seen = leafVerts;
+            int n = 0;
             for (int j = ~c, e = j + b.size[nb]; j < e; j++) {
                 int t = 3 * b.order[j];
+                vertices:
                 for (int q = 0; q < 3; q++) {
                     int p = 3 * b.tris[t + q];
+                    // a vertex shared by the leaf's triangles is added once (adding it again changes nothing)
+                    for (int s = 0; s < n; s++) if (seen[s] == p) continue vertices;
+                    if (n < seen.length) seen[n++] = p;
                     placeVertex(src, p);
                     kd.addPoint(bb, o, vb[p], vb[p + 1], vb[p + 2]);
                 }
             }
         } else {
             tb.apply(b.bounds, o, bb, o);
+        }
+    }
+
+    /**
+     * Places B node nb's children (left nb + 1, right cb) and, when they were not placed yet,
+     * tightens nb's own placed bounds to the merge of theirs where that is tighter: a k-DOP
+     * mapped by {@link TransformedBounds} is looser the bigger the node, so the merge of the
+     * two mapped halves is usually inside the mapped whole. Both are bounds of nb's placed
+     * vertices, so the walk still finds every pair, in the same order (it only drops node pairs
+     * it would have descended in vain); it tests about a fifth fewer node pairs.
+     */
+    private void placeChildren(KdopTree b, int nb, int cb) {
+        int l = nb + 1;
+        if (nodeStamp[cb] == stamp && nodeStamp[l] == stamp) return;
+        int k = b.k();
+        if (b.child[l] >= 0 && b.child[cb] >= 0 && nodeStamp[l] != stamp && nodeStamp[cb] != stamp) {
+            nodeStamp[l] = stamp;
+            nodeStamp[cb] = stamp;
+            tb.apply2(b.bounds, l * k, cb * k, bb, l * k, cb * k);
+        } else {
+            placeNode(b, l);
+            placeNode(b, cb);
+        }
+        double[] x = bb;
+        int o = nb * k, lo = l * k, r = cb * k;
+        for (int j = 0; j < k; j += 2) {
+            x[o + j] = Math.max(x[o + j], Math.min(x[lo + j], x[r + j]));
+            x[o + j + 1] = Math.min(x[o + j + 1], Math.max(x[lo + j + 1], x[r + j + 1]));
         }
     }
 
@@ -613,16 +655,37 @@ public final class TreeQuery {
                 int fa = ~ca, ea = fa + sizeA[na], fb = ~cb, eb = fb + sizeB[nb];
                 for (int i = fa; i < ea; i++) {
                     int ta = orderA[i];
+                    if (degA[ta]) {
+                        degSkipped += eb - fb;
+                        continue;
+                    }
+                    int oa = 3 * ta, a0 = 3 * trisA[oa], a1 = 3 * trisA[oa + 1], a2 = 3 * trisA[oa + 2];
+                    double ax = va[a0], ay = va[a0 + 1], az = va[a0 + 2];
+                    double nx = nA[oa], ny = nA[oa + 1], nz = nA[oa + 2], mx = nAbsA[oa], my = nAbsA[oa + 1], mz = nAbsA[oa + 2];
                     for (int j = fb; j < eb; j++) {
                         int tbi = orderB[j];
-                        if (degA[ta] || degB[tbi]) {
+                        if (degB[tbi]) {
                             degSkipped++;
                             continue;
                         }
-                        if (placeNormals) placeNormal(b, tbi);
                         triTests++;
-                        int r = tt.intersect(va, 3 * trisA[3 * ta], 3 * trisA[3 * ta + 1], 3 * trisA[3 * ta + 2], nA, nAbsA, 3 * ta,
-                            vb, 3 * trisB[3 * tbi], 3 * trisB[3 * tbi + 1], 3 * trisB[3 * tbi + 2], nB, nAbsB, 3 * tbi);
+                        // the first stage of the exact test, here so that most disjoint pairs are
+                        // dropped without being loaded: B's vertices against A's plane (filtered:
+                        // NaN where the sign is not certain, and then the intersector decides),
+                        // then A's against B's
+                        int ob = 3 * tbi, b0 = 3 * trisB[ob], b1 = 3 * trisB[ob + 1], b2 = 3 * trisB[ob + 2];
+                        double bx = vb[b0], by = vb[b0 + 1], bz = vb[b0 + 2];
+                        double e0 = Predicates.orient3dFiltered(nx, ny, nz, mx, my, mz, ax, ay, az, bx, by, bz);
+                        double e1 = Predicates.orient3dFiltered(nx, ny, nz, mx, my, mz, ax, ay, az, vb[b1], vb[b1 + 1], vb[b1 + 2]);
+                        double e2 = Predicates.orient3dFiltered(nx, ny, nz, mx, my, mz, ax, ay, az, vb[b2], vb[b2 + 1], vb[b2 + 2]);
+                        if ((e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0)) continue;
+                        if (placeNormals) placeNormal(b, tbi);
+                        double qx = nB[ob], qy = nB[ob + 1], qz = nB[ob + 2], px = nAbsB[ob], py = nAbsB[ob + 1], pz = nAbsB[ob + 2];
+                        double f0 = Predicates.orient3dFiltered(qx, qy, qz, px, py, pz, bx, by, bz, ax, ay, az);
+                        double f1 = Predicates.orient3dFiltered(qx, qy, qz, px, py, pz, bx, by, bz, va[a1], va[a1 + 1], va[a1 + 2]);
+                        double f2 = Predicates.orient3dFiltered(qx, qy, qz, px, py, pz, bx, by, bz, va[a2], va[a2 + 1], va[a2 + 2]);
+                        if ((f0 > 0 && f1 > 0 && f2 > 0) || (f0 < 0 && f1 < 0 && f2 < 0)) continue;
+                        int r = tt.intersect(va, a0, a1, a2, nA, nAbsA, oa, vb, b0, b1, b2, nB, nAbsB, ob, f0, f1, f2, e0, e1, e2);
                         if (r != TriangleIntersector.DISJOINT) {
                             out.add(ta, tbi, tt, r);
                             if (stopAtFirst) {
@@ -650,10 +713,7 @@ public final class TreeQuery {
                 }
             } else {
                 int oa = na * k;
-                if (lz) {
-                    placeNode(b, cb);
-                    placeNode(b, nb + 1);
-                }
+                if (lz) placeChildren(b, nb, cb);
                 if (Kdop.overlap(ba, oa, bbl, cb * k, k)) {
                     stk[sp++] = na; stk[sp++] = cb;
                 }

@@ -114,6 +114,34 @@ public final class TriangleIntersector {
         return decide();
     }
 
+    /**
+     * As {@link #intersect(double[], int, int, int, double[], double[], int, double[], int, int, int, double[], double[], int)}
+     * with the six plane sides already evaluated by the caller with
+     * {@link Predicates#orient3dFiltered} on exactly the arguments {@link #decide} would use:
+     * {@code f}ᵢ = T1's vertex i against T2's plane ({@code nB} at oB, T2's vertex 0),
+     * {@code e}ᵢ = T2's vertex i against T1's plane ({@code nA} at oA, T1's vertex 0); NaN where
+     * the filter could not certify the sign (the exact stage is then run here). The tree walk
+     * evaluates them first to drop most disjoint pairs without loading them; the answer and the
+     * segments are bit-identical to the other entry's.
+     */
+    int intersect(double[] va, int a0, int a1, int a2, double[] nA, double[] nAbsA, int oA,
+                  double[] vb, int b0, int b1, int b2, double[] nB, double[] nAbsB, int oB,
+                  double f0, double f1, double f2, double e0, double e1, double e2) {
+        load(va, a0, a1, a2, vb, b0, b1, b2);
+        nrm[0] = nA[oA]; nrm[1] = nA[oA + 1]; nrm[2] = nA[oA + 2];
+        nAbs[0] = nAbsA[oA]; nAbs[1] = nAbsA[oA + 1]; nAbs[2] = nAbsA[oA + 2];
+        nrm[3] = nB[oB]; nrm[4] = nB[oB + 1]; nrm[5] = nB[oB + 2];
+        nAbs[3] = nAbsB[oB]; nAbs[4] = nAbsB[oB + 1]; nAbs[5] = nAbsB[oB + 2];
+        d1[0] = f0 == f0 ? f0 : side2(0);
+        d1[1] = f1 == f1 ? f1 : side2(1);
+        d1[2] = f2 == f2 ? f2 : side2(2);
+        if ((d1[0] > 0 && d1[1] > 0 && d1[2] > 0) || (d1[0] < 0 && d1[1] < 0 && d1[2] < 0)) return DISJOINT;
+        d2[0] = e0 == e0 ? e0 : side1(0);
+        d2[1] = e1 == e1 ? e1 : side1(1);
+        d2[2] = e2 == e2 ? e2 : side1(2);
+        return decideFromSides();
+    }
+
     private void load(double[] va, int a0, int a1, int a2, double[] vb, int b0, int b1, int b2) {
         segCount = 0;
         area = 0;
@@ -132,6 +160,11 @@ public final class TriangleIntersector {
         if ((d1[0] > 0 && d1[1] > 0 && d1[2] > 0) || (d1[0] < 0 && d1[1] < 0 && d1[2] < 0)) return DISJOINT;
         // T2's vertices against T1's plane
         for (int i = 0; i < 3; i++) d2[i] = side1(i);
+        return decideFromSides();
+    }
+
+    /** {@link #decide} once d1 and d2 hold the exact sides and d1 did not separate. */
+    private int decideFromSides() {
         if ((d2[0] > 0 && d2[1] > 0 && d2[2] > 0) || (d2[0] < 0 && d2[1] < 0 && d2[2] < 0)) return DISJOINT;
 
         double dp1 = d1[0], dq1 = d1[1], dr1 = d1[2];
@@ -205,7 +238,8 @@ public final class TriangleIntersector {
     /** orient3d(a, b, c, x) with a, b, c, x vertex indices: T1 vertices 0..2, T2 vertices 3..5. */
     private double orient(int a, int b, int c, int x) {
         double[] pa = a < 3 ? v1 : v2, pb = b < 3 ? v1 : v2, pc = c < 3 ? v1 : v2, px = x < 3 ? v1 : v2;
-        int oa = 3 * (a % 3), ob = 3 * (b % 3), oc = 3 * (c % 3), ox = 3 * (x % 3);
+        int oa = a < 3 ? 3 * a : 3 * a - 9, ob = b < 3 ? 3 * b : 3 * b - 9;
+        int oc = c < 3 ? 3 * c : 3 * c - 9, ox = x < 3 ? 3 * x : 3 * x - 9;
         return pred.orient3d(pa[oa], pa[oa + 1], pa[oa + 2], pb[ob], pb[ob + 1], pb[ob + 2],
             pc[oc], pc[oc + 1], pc[oc + 2], px[ox], px[ox + 1], px[ox + 2]);
     }
