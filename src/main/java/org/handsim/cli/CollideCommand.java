@@ -40,8 +40,9 @@ import org.handsim.sim.ScenarioException;
         "bounding box, unit normal out of B (from B's triangles), area estimate;",
         "A's frame, metres. build_ms: both trees; query_us_median: the tree query",
         "including B's placement, once the JIT has compiled it: warm-up of at least",
-        "0.5 s and 10 000 queries, then the median of --repeat timed batches of about",
-        "1 ms each (util.SteadyTiming, the scheme of gradle bench).",
+        "0.5 s and 10 000 queries, then until the JIT has been idle for 0.25 s (at",
+        "most 5 s), then the median of --repeat timed batches of about 1 ms each",
+        "(util.SteadyTiming, the scheme of gradle bench).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;

@@ -1,5 +1,7 @@
 package org.handsim.util;
 
+import java.lang.management.CompilationMXBean;
+import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.function.DoubleSupplier;
 
@@ -21,6 +23,11 @@ public final class SteadyTiming {
     public static final double WARMUP_SECONDS = 0.5;
     /** Minimum warm-up calls. */
     public static final long WARMUP_CALLS = 10_000;
+    /**
+     * After the minimum warm-up, it goes on until the JIT's total compilation time
+     * ({@link CompilationMXBean}) has not grown for this long, seconds.
+     */
+    public static final double JIT_QUIET_SECONDS = 0.25;
     /** Warm-up never runs longer than this, seconds (an operation of 1 ms needs 10 s for 10 000 calls). */
     public static final double WARMUP_CAP_SECONDS = 5.0;
     /**
@@ -60,6 +67,21 @@ public final class SteadyTiming {
             calls++;
             now = System.nanoTime();
         } while ((now < minEnd || calls < WARMUP_CALLS) && now < cap);
+        CompilationMXBean jit = ManagementFactory.getCompilationMXBean();
+        if (jit != null && jit.isCompilationTimeMonitoringSupported()) {
+            long quiet = (long) (JIT_QUIET_SECONDS * 1e9);
+            long compiled = jit.getTotalCompilationTime(), since = now;
+            while (now - since < quiet && now < cap) {
+                acc += op.getAsDouble();
+                calls++;
+                now = System.nanoTime();
+                long c = jit.getTotalCompilationTime();
+                if (c != compiled) {
+                    compiled = c;
+                    since = now;
+                }
+            }
+        }
         double warmSeconds = (now - start) / 1e9;
         double perCall = warmSeconds / calls;
         long batch = Math.max(1, (long) (BATCH_SECONDS / Math.max(perCall, 1e-9)));

@@ -14,6 +14,10 @@ class SteadyTimingTest {
         SteadyTiming.Result r = SteadyTiming.median(() -> ++calls[0], 7);
         assertTrue(r.warmupCalls() >= SteadyTiming.WARMUP_CALLS, "at least 10 000 warm-up calls: " + r.warmupCalls());
         assertTrue(r.warmupSeconds() >= SteadyTiming.WARMUP_SECONDS, "at least 0.5 s of warm-up: " + r.warmupSeconds());
+        if (java.lang.management.ManagementFactory.getCompilationMXBean().isCompilationTimeMonitoringSupported()) {
+            assertTrue(r.warmupSeconds() >= SteadyTiming.WARMUP_SECONDS + SteadyTiming.JIT_QUIET_SECONDS,
+                "then at least 0.25 s with the JIT idle: " + r.warmupSeconds());
+        }
         assertEquals(7, r.samples());
         assertEquals(r.warmupCalls() + r.timedCalls(), calls[0], "every call is warm-up or timed");
         assertTrue(r.timedCalls() % 7 == 0 && r.timedCalls() >= 7, "equal batches: " + r.timedCalls());
