@@ -30,6 +30,9 @@ import org.handsim.grasp.WrenchSpace;
  * command is printed. Anchor (issue 12): qhull 1.6 / 8 / 31 ms; goals: whole quality ≤ qhull,
  * ε and force closure ≤ qhull / 20. Noise on shared cores: {@link #ROUNDS} rounds alternate our
  * measurements and qhull's; each figure is its best round's median, and the load average is printed.
+ * Set 0 of each size is also written as contacts ({@code build/bench/grasp-NxM-set0.csv}, the
+ * input of {@code handsim quality}) and timed alone, so {@code tools/quality-vs-bench} can set the
+ * command's {@code time_us_median} beside the bench's figure (issue 15: honest timings).
  */
 final class GraspBench implements BenchMain.Suite {
     static final int[] CONTACTS = {3, 6, 12};
@@ -47,8 +50,17 @@ final class GraspBench implements BenchMain.Suite {
         List<String> files = new ArrayList<>();
         Map<Integer, double[][]> setsBySize = new LinkedHashMap<>();
         for (int n : CONTACTS) {
-            double[][] sets = sets(n, new Random(1000 + n));
+            double[][] contacts = new double[SETS][];
+            double[][] sets = sets(n, new Random(1000 + n), contacts);
             setsBySize.put(n, sets);
+            StringBuilder cs = new StringBuilder("x,y,z,nx,ny,nz\n");
+            for (int i = 0; i < n; i++) {
+                for (int c = 0; c < 6; c++) {
+                    cs.append(c == 0 ? "" : ",").append(c < 3 ? contacts[0][3 * i + c] : contacts[0][3 * n + 3 * i + c - 3]);
+                }
+                cs.append('\n');
+            }
+            Files.writeString(dir.resolve("grasp-" + n + "x" + EDGES + "-set0.csv"), cs.toString());
             for (double[] w : sets) {
                 GraspQuality q = WrenchSpace.quality(w, n * EDGES, n), e = WrenchSpace.epsilon(w, n * EDGES, n);
                 if (q.forceClosure() != e.forceClosure() || Math.abs(q.epsilon() - e.epsilon()) > 1e-12 * Math.max(1, q.epsilon())) {
@@ -71,7 +83,7 @@ final class GraspBench implements BenchMain.Suite {
         List<String> cmd = new ArrayList<>(List.of(python == null ? "python3" : python, root.resolve("tools/grasp/qhull_bench.py").toString()));
         cmd.addAll(files);
         if (python == null) System.out.println("no python3 with scipy found: time qhull on the same wrenches with\n  " + String.join(" ", cmd));
-        Map<Integer, Double> whole = new LinkedHashMap<>(), eps = new LinkedHashMap<>();
+        Map<Integer, Double> whole = new LinkedHashMap<>(), eps = new LinkedHashMap<>(), set0 = new LinkedHashMap<>();
         Map<String, Double> qj = new LinkedHashMap<>(), qx = new LinkedHashMap<>();
         int checked = 0;
         for (int round = 1; round <= ROUNDS; round++) {
@@ -82,6 +94,10 @@ final class GraspBench implements BenchMain.Suite {
                 best(whole, n, Bench.measure(String.format(Locale.ROOT, "whole quality (hull, eps, volume, facets), %d x %d", n, EDGES), () -> {
                     double[] w = sets[k[0]++ % SETS];
                     GraspQuality q = WrenchSpace.quality(w, n * EDGES, n);
+                    return q.volume() + q.facets();
+                }, 1000, 11, 50).medianMs());
+                best(set0, n, Bench.measure(String.format(Locale.ROOT, "whole quality, set 0 alone, %d x %d", n, EDGES), () -> {
+                    GraspQuality q = WrenchSpace.quality(sets[0], n * EDGES, n);
                     return q.volume() + q.facets();
                 }, 1000, 11, 50).medianMs());
                 best(eps, n, Bench.measure(String.format(Locale.ROOT, "eps + force closure only, %d x %d", n, EDGES), () -> {
@@ -113,6 +129,9 @@ final class GraspBench implements BenchMain.Suite {
             }
             p.waitFor();
         }
+        System.out.println("\nset 0 alone, best of " + ROUNDS + " rounds (tools/quality-vs-bench runs handsim quality on build/bench/grasp-NxM-set0.csv"
+            + " with --radius " + Math.sqrt(RADIUS * RADIUS + HALF_HEIGHT * HALF_HEIGHT) + "):");
+        for (int n : CONTACTS) System.out.printf(Locale.ROOT, "| %d x %d | set 0 alone | %.2f us |%n", n, EDGES, set0.get(n) * 1000);
         if (python == null) return;
         System.out.println(checked + " set evaluations: epsilon and volume equal qhull's (Qt Qx) to 1e-9");
         System.out.println("\nbest of " + ROUNDS + " rounds (load average now " + loadAverage() + "):");
@@ -143,7 +162,7 @@ final class GraspBench implements BenchMain.Suite {
      * SETS seeded contact sets of n contacts round the cylinder, as wrenches; only sets in force
      * closure are kept (a grasp worth rating holds; without closure the ε path stops early).
      */
-    static double[][] sets(int n, Random rnd) {
+    static double[][] sets(int n, Random rnd, double[][] contacts) {
         double[][] out = new double[SETS][];
         double[] c = {0, 0, 0};
         double r = Math.sqrt(RADIUS * RADIUS + HALF_HEIGHT * HALF_HEIGHT);
@@ -161,7 +180,13 @@ final class GraspBench implements BenchMain.Suite {
                 nrm[3 * i + 2] = 0.2 * rnd.nextGaussian();
             }
             double[] w = GraspWrenches.of(n, pts, nrm, MU, EDGES, c, r);
-            if (WrenchSpace.quality(w, n * EDGES, n).forceClosure()) out[s++] = w;
+            if (WrenchSpace.quality(w, n * EDGES, n).forceClosure()) {
+                double[] pn = new double[6 * n];
+                System.arraycopy(pts, 0, pn, 0, 3 * n);
+                System.arraycopy(nrm, 0, pn, 3 * n, 3 * n);
+                contacts[s] = pn;
+                out[s++] = w;
+            }
         }
         return out;
     }
