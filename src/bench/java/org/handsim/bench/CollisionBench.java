@@ -22,8 +22,9 @@ import org.handsim.vrml.VrmlLoader;
  * Suite "collision": k-DOP tree build and query times against triangle count, for every k and
  * both placements of the moving mesh, and the all-pairs loop, on the meshes and poses of
  * {@code ../shared/bench-meshes/scenarios.csv}; the rotated overlap compared with FCL's 24-DOP
- * search (FCL built on this machine, trees prebuilt in one frame, search only:
- * {@link #FCL_ROT_US}; 56 / 122 / 238 / 486 pairs there and 20 / 32 / 56 / 116 in
+ * search, FCL measured in the same run by {@code build/fcl/fclbench} ({@code tools/fcl/build}; trees
+ * prebuilt in one frame, search only; {@link #FCL_ROT_US} only when it is not built, and the
+ * table says so; 56 / 122 / 238 / 486 pairs there and 20 / 32 / 56 / 116 in
  * sphere_box_shallow; how it was measured: docs/BENCHMARKS.md, collision), and B moving along a
  * path of small steps through that overlap (full and coherent query per step). Our query times
  * always include placing B (on-demand transform or full refit), FCL's do not. Trees are built with the defaults (SAH split, leaves of two triangles)
@@ -35,12 +36,16 @@ final class CollisionBench implements BenchMain.Suite {
     static final int[] FCL_ROT_PAIRS = {56, 122, 238, 486};
     static final int[] FCL_BOX_PAIRS = {20, 32, 56, 116};
     /**
-     * FCL's 24-DOP search on sphere_overlap_rot, µs, for 320 / 1 280 / 5 120 / 20 480 triangles:
-     * measured on the project machine on 2026-11-24 (FCL master e5efcc41, Release build,
-     * median of the three runs taken alternately with this suite; docs/BENCHMARKS.md). The
-     * earlier anchor, from another CPU, was 51 / 118 / 288 / 669.
+     * FCL's 24-DOP search on sphere_overlap_rot, µs, for 320 / 1 280 / 5 120 / 20 480 triangles,
+     * as measured on the project machine on 2026-11-24 (FCL master e5efcc41, Release build;
+     * docs/BENCHMARKS.md): the tables' fallback when {@code build/fcl/fclbench} is not built, named
+     * as such in them — a ratio against FCL is otherwise always measured in the same run.
      */
     static final double[] FCL_ROT_US = {28.0, 64.1, 129.8, 274.1};
+    /** FCL's times of this run (or {@link #FCL_ROT_US}), and where they come from. */
+    private double[] fclUs = FCL_ROT_US.clone();
+    private String fclSource = "FCL not measured in this run (build it: tools/fcl/build, FCL_SRC=... for a Release build of FCL master):"
+        + " the stored figures of 2026-11-24, FCL master Release on the project machine";
     private static final long WARMUP_MS = 300, SAMPLE_MS = 30;
     private static final int SAMPLES = 11;
 
@@ -161,7 +166,7 @@ final class CollisionBench implements BenchMain.Suite {
      * 20 measurements are taken round-robin {@value #FCL_ROUNDS} times (so that a burst of load
      * from other sessions hits all of them alike) and each reports its quietest median.
      */
-    private String fclTable() {
+    private String fclTable() throws Exception {
         RigidTransform pose = RigidTransform.fromPose(1.5, 0.0, 0.0, 0.18708286933869706, 0.3741657386773941, 0.5612486080160912);
         String[] files = {"icosphere_s2.wrl", "icosphere_s3.wrl", "icosphere_s4.wrl", "icosphere_s5.wrl"};
         int nk = Kdop.SUPPORTED_K.length;
@@ -183,28 +188,82 @@ final class CollisionBench implements BenchMain.Suite {
         }
         double[] best = new double[ops.size()];
         java.util.Arrays.fill(best, Double.POSITIVE_INFINITY);
+        Path fcl = Path.of(System.getProperty("handsim.root", ".")).resolve("build/fcl/fclbench");
+        List<String> fclFiles = Files.isExecutable(fcl) ? fclInputs(files, pose) : List.of();
+        double[] fclBest = new double[files.length];
+        java.util.Arrays.fill(fclBest, Double.POSITIVE_INFINITY);
         for (int round = 0; round < FCL_ROUNDS; round++) {
             for (int i = 0; i < ops.size(); i++) {
                 best[i] = Math.min(best[i], Bench.measure(names.get(i) + " round " + (round + 1), ops.get(i), 150, 7, 20).medianUs());
             }
+            if (!fclFiles.isEmpty()) runFcl(fcl, fclFiles, pairs, fclBest, round);
         }
-        StringBuilder t = new StringBuilder("| triangles | pairs (FCL) | FCL 24-DOP |");
+        if (!fclFiles.isEmpty()) {
+            fclUs = fclBest;
+            fclSource = "FCL measured in this run, alternately with ours (build/fcl/fclbench: "
+                + Files.readString(fcl.resolveSibling("fclbench.label")).strip() + ")";
+        }
+        StringBuilder t = new StringBuilder(fclSource + "\n\n| triangles | pairs (FCL) | FCL 24-DOP |");
         for (int k : Kdop.SUPPORTED_K) t.append(" k=").append(k).append(" |");
         t.append(" k=18 refit | best / FCL | k=18 / FCL | k=18 refit / FCL |\n|---:|---:|---:|")
             .append("---:|".repeat(nk + 4)).append('\n');
         for (int l = 0; l < files.length; l++) {
             double bestK = Double.POSITIVE_INFINITY;
             t.append(String.format(Locale.ROOT, "| %d | %d (%d) | %.1f µs |", meshes.get(files[l]).triangleCount(), pairs[l],
-                FCL_ROT_PAIRS[l], FCL_ROT_US[l]));
+                FCL_ROT_PAIRS[l], fclUs[l]));
             for (int ki = 0; ki <= nk; ki++) {
                 double u = best[l * (nk + 1) + ki];
                 if (ki < nk) bestK = Math.min(bestK, u);
                 t.append(String.format(Locale.ROOT, " %.1f µs |", u));
             }
-            t.append(String.format(Locale.ROOT, " %.2f | %.2f | %.2f |%n", bestK / FCL_ROT_US[l], best[l * (nk + 1) + 2] / FCL_ROT_US[l],
-                best[l * (nk + 1) + nk] / FCL_ROT_US[l]));
+            t.append(String.format(Locale.ROOT, " %.2f | %.2f | %.2f |%n", bestK / fclUs[l], best[l * (nk + 1) + 2] / fclUs[l],
+                best[l * (nk + 1) + nk] / fclUs[l]));
         }
         return t.toString();
+    }
+
+    /**
+     * Writes fclbench's inputs, build/bench/fcl-NAME.txt: "nv nt", A's vertices, B's vertices
+     * placed by {@code pose} with {@link KdopTree#transformPoints} (the formula of our own
+     * placement, so both libraries see bit-identical coordinates), the triangles.
+     */
+    private List<String> fclInputs(String[] files, RigidTransform pose) throws java.io.IOException {
+        Path dir = Path.of(System.getProperty("handsim.root", ".")).resolve("build/bench");
+        Files.createDirectories(dir);
+        double[] m12 = new double[12];
+        pose.copyTo(m12, 0);
+        List<String> out = new ArrayList<>();
+        for (String f : files) {
+            TriangleMesh m = meshes.get(f);
+            double[] v = m.vertices(), placed = new double[v.length];
+            KdopTree.transformPoints(m12, v, placed, m.vertexCount());
+            StringBuilder sb = new StringBuilder().append(m.vertexCount()).append(' ').append(m.triangleCount()).append('\n');
+            for (double[] src : new double[][] {v, placed}) {
+                for (int i = 0; i < v.length; i += 3) sb.append(src[i]).append(' ').append(src[i + 1]).append(' ').append(src[i + 2]).append('\n');
+            }
+            int[] tri = m.triangles();
+            for (int i = 0; i < tri.length; i += 3) sb.append(tri[i]).append(' ').append(tri[i + 1]).append(' ').append(tri[i + 2]).append('\n');
+            Path p = dir.resolve("fcl-" + f.replace(".wrl", ".txt"));
+            Files.writeString(p, sb);
+            out.add(p.toString());
+        }
+        return out;
+    }
+
+    /** One round of fclbench on the files (as our rounds: 150 ms warm-up, 7 batches of 20 ms); keeps each file's quietest median. */
+    private static void runFcl(Path fcl, List<String> files, int[] pairs, double[] best, int round) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of(fcl.toString(), "20", "7", "150"));
+        cmd.addAll(files);
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        String[] lines = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).split("\n");
+        if (p.waitFor() != 0 || lines.length < files.size()) throw new IllegalStateException("fclbench failed: " + String.join(" / ", lines));
+        for (int l = 0; l < files.size(); l++) {
+            String[] f = lines[l].split(" ");   // fcl FILE TRIANGLES PAIRS median_us=T sink=..
+            if (Integer.parseInt(f[3]) != pairs[l]) throw new IllegalStateException("FCL finds " + f[3] + " pairs, we " + pairs[l] + ": " + lines[l]);
+            double us = Double.parseDouble(f[4].substring("median_us=".length()));
+            System.out.printf(Locale.ROOT, "fcl-compare %s FCL 24-DOP round %d   median %.2f us%n", f[2], round + 1, us);
+            best[l] = Math.min(best[l], us);
+        }
     }
 
     /** Steps of the moving-B path. */
@@ -281,7 +340,7 @@ final class CollisionBench implements BenchMain.Suite {
             + PATH_STEPS + " steps | FCL 24-DOP (static search) | coherent / FCL |\n|---:|---:|---:|---:|---:|---:|---:|\n");
         for (int l = 0; l < files.length; l++) {
             t.append(String.format(Locale.ROOT, "| %d | %d–%d | %.1f µs | %.1f µs | %d | %.1f µs | %.2f |%n", meshes.get(files[l]).triangleCount(),
-                minPairs[l], maxPairs[l], best[2 * l], best[2 * l + 1], walks[l], FCL_ROT_US[l], best[2 * l + 1] / FCL_ROT_US[l]));
+                minPairs[l], maxPairs[l], best[2 * l], best[2 * l + 1], walks[l], fclUs[l], best[2 * l + 1] / fclUs[l]));
         }
         return t.toString();
     }
