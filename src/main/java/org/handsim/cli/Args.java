@@ -44,6 +44,14 @@ final class Args {
         return k;
     }
 
+    /** Exit 2 naming the value unless {@code --friction} ≥ 0 and 1 ≤ {@code --edges} ≤ 1024 (null: not given). */
+    static void frictionAndEdges(Double friction, Integer edges) {
+        if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
+            throw CliError.usage("handsim: --friction must be a number >= 0, got " + friction);
+        }
+        if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
+    }
+
     /** Formats a number for CSV output ({@link Decimal}: shortest round trip, integers plain); refuses non-finite values. */
     static String csv(double d) {
         if (!Double.isFinite(d)) throw new IllegalStateException("refusing to write non-finite value " + d);

@@ -15,6 +15,7 @@ import org.handsim.sim.Scenario;
 import org.handsim.sim.Simulation;
 import org.handsim.sim.SimulationException;
 import org.handsim.util.AtomicFile;
+import org.handsim.util.Decimal;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -108,18 +109,10 @@ public final class GraspCommand implements Callable<Integer> {
      * one is out of range), for every command that takes them.
      */
     static Scenario withFriction(Scenario s, Double friction, Integer edges) {
-        checkFriction(friction, edges);
+        Args.frictionAndEdges(friction, edges);
         if (friction != null) s = s.withFriction(friction);
         if (edges != null) s = s.withConeEdges(edges);
         return s;
-    }
-
-    /** Exit 2 naming the value unless {@code --friction} ≥ 0 and 1 ≤ {@code --edges} ≤ 1024 (null: not given). */
-    static void checkFriction(Double friction, Integer edges) {
-        if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
-            throw CliError.usage("handsim: --friction must be a number >= 0, got " + friction);
-        }
-        if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
     }
 
     private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
@@ -132,7 +125,8 @@ public final class GraspCommand implements Callable<Integer> {
             w.write(CHART_HEADER);
             w.write('\n');
             for (GraspAssessment s : samples) {
-                w.write(s.timeS() + "," + s.quality().forceClosure() + "," + s.quality().epsilon() + "," + s.quality().volume() + "," + s.holdMinN() + "\n");
+                w.write(Args.csv(s.timeS()) + "," + s.quality().forceClosure() + "," + Args.csv(s.quality().epsilon()) + ","
+                    + Args.csv(s.quality().volume()) + "," + Decimal.orEmpty(s.holdMinN()) + "\n");
             }
             f.commit();
         }

@@ -85,9 +85,7 @@ public final class PlanCommand implements Callable<Integer> {
         if (threads != null && threads < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + threads);
         if (!engine.equals("local") && !engine.equals("spark")) throw CliError.usage("handsim: --engine must be local or spark, got '" + engine + "'");
         if (master != null && !engine.equals("spark")) throw CliError.usage("handsim: --master needs --engine spark");
-        if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
-            throw CliError.usage("handsim: --friction must be a finite number >= 0, got " + friction);
-        }
+        Args.frictionAndEdges(friction, null);
         Scenario.Units unit = units.equals("auto") ? null : Scenario.Units.of(units);
         if (unit == null && !units.equals("auto")) throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + units + "'");
         TrialEngine eng;

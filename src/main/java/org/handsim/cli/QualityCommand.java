@@ -93,9 +93,8 @@ public final class QualityCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         double mu = Args.numbers("--friction", frictionText, 1)[0];
-        if (mu < 0) throw CliError.usage("handsim: --friction must be >= 0, got " + frictionText);
         int m = integer("--edges", edgesText);
-        if (m < 1 || m > 1024) throw CliError.usage("handsim: --edges must be in 1..1024, got " + edgesText);
+        Args.frictionAndEdges(mu, m);
         double[] c = Args.numbers("--center", centerText, 3);
         double r = Args.numbers("--radius", radiusText, 1)[0];
         if (!(r > 0)) throw CliError.usage("handsim: --radius must be > 0, got " + radiusText);

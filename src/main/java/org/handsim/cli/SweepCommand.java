@@ -35,7 +35,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "  run,scenario,status,sim_time_s,steps,wall_time_s,",
         "  final_state1,breakaway1_s,breakaway_force1_N,max_force1_N,",
         "  final_state2,breakaway2_s,breakaway_force2_N,max_force2_N,",
-        "  final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error",
+        "  final_state3,breakaway3_s,breakaway_force3_N,max_force3_N,error,",
+        "  force_closure,epsilon,volume,hold_min_N",
         "A run that fails is a row with status 'failed' and its error; the others",
         "go on (exit 1 if any failed)."})
 public final class SweepCommand implements Callable<Integer> {
@@ -77,7 +78,7 @@ public final class SweepCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
-        GraspCommand.checkFriction(friction, edges);
+        Args.frictionAndEdges(friction, edges);
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
         if (!engine.equals("local")) return SweepJob.runOnEngine(this, sweep, n, engine, master);
@@ -132,7 +133,7 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     static String runOne(Sweep.Run run, Double friction, Integer edges) {
-        String label = csvText(run.label());
+        String label = SafeText.csvCell(run.label());
         String scenarioName = "";
         try {
             Scenario s = GraspCommand.withFriction(run.scenario().get(), friction, edges);
@@ -142,7 +143,7 @@ public final class SweepCommand implements Callable<Integer> {
             m.run(null);
             double wall = (System.nanoTime() - t) / 1e9;
             StringBuilder sb = new StringBuilder();
-            sb.append(label).append(',').append(csvText(scenarioName)).append(",ok,").append(Decimal.format(m.time())).append(',')
+            sb.append(label).append(',').append(SafeText.csvCell(scenarioName)).append(",ok,").append(Decimal.format(m.time())).append(',')
                 .append(m.stepIndex()).append(',').append(Decimal.format(wall));
             for (int k = 1; k <= 3; k++) {
                 sb.append(',').append(m.state(k)).append(',').append(Decimal.orEmpty(m.breakawayTime(k))).append(',')
@@ -154,15 +155,7 @@ public final class SweepCommand implements Callable<Integer> {
             return sb.toString();
         } catch (RuntimeException e) {   // ScenarioException, SimulationException, a bad object file ...: this row fails, the others go on
             String why = e instanceof ScenarioException || e instanceof SimulationException ? e.getMessage() : e.toString();
-            return label + "," + csvText(scenarioName) + ",failed,,,,,,,,,,,,,,,," + csvText(SafeText.line(why)) + ",,,,";
+            return label + "," + SafeText.csvCell(scenarioName) + ",failed,,,,,,,,,,,,,,,," + SafeText.csvCell(why) + ",,,,";
         }
-    }
-
-    /** Quotes a text field for CSV when it holds a comma, quote or newline. */
-    static String csvText(String s) {
-        if (s == null) return "";
-        s = SafeText.line(s);   // one physical line per row
-        if (s.indexOf(',') < 0 && s.indexOf('"') < 0) return s;
-        return "\"" + s.replace("\"", "\"\"") + "\"";
     }
 }

@@ -99,7 +99,6 @@ public record PlanSpec(String name, String target, String templateJson, String t
         if (units != null && (units != Scenario.Units.M || obj.containsKey("units"))) obj.put("units", units.id());
         double friction = mu != null ? mu : obj.get("friction") instanceof Number ? ((Number) obj.get("friction")).doubleValue()
             : FrictionCone.DEFAULT_MU;
-        if (!(friction >= 0) || !Double.isFinite(friction)) throw new IllegalArgumentException("--friction must be a finite number >= 0, got " + friction);
         obj.put("friction", friction);
         String text = JsonWriter.write(t);
         Scenario.parse(abs, text);   // the template must be a valid scenario as it will be run

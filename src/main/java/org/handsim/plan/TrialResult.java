@@ -1,7 +1,8 @@
 package org.handsim.plan;
 
 import java.io.Serializable;
-import org.handsim.util.JsonWriter;
+import org.handsim.util.Decimal;
+import org.handsim.util.SafeText;
 
 /**
  * One row of {@code plan.csv} (the contract, README): the trial's parameters, where the hand
@@ -28,32 +29,21 @@ public record TrialResult(int index, boolean ok, double[] approach, double roll,
             null, 0, wallS, e, null, null);
     }
 
-    /** The CSV row (no line end). Numbers in JsonWriter's form (shortest round trip, integers as integers). */
+    /** The CSV row (no line end). Numbers in util.Decimal's form (shortest round trip, integers as integers). */
     public String csvRow() {
         StringBuilder sb = new StringBuilder(256);
         sb.append(index).append(',').append(ok ? "ok" : "failed");
-        for (double v : approach) sb.append(',').append(num(v));
-        sb.append(',').append(num(roll)).append(',').append(spreadCounts).append(',').append(num(standoff));
+        for (double v : approach) sb.append(',').append(Decimal.orEmpty(v));
+        sb.append(',').append(Decimal.orEmpty(roll)).append(',').append(spreadCounts).append(',').append(Decimal.orEmpty(standoff));
         if (ok) {
-            sb.append(',').append(contacts).append(',').append(forceClosure).append(',').append(num(epsilon))
-                .append(',').append(num(volume)).append(',').append(num(holdMinN));
+            sb.append(',').append(contacts).append(',').append(forceClosure).append(',').append(Decimal.orEmpty(epsilon))
+                .append(',').append(Decimal.orEmpty(volume)).append(',').append(Decimal.orEmpty(holdMinN));
             for (String s : finalStates) sb.append(',').append(s);
-            sb.append(',').append(num(simTimeS));
+            sb.append(',').append(Decimal.orEmpty(simTimeS));
         } else {
             sb.append(",,,,,,,,,");
         }
-        sb.append(',').append(num(wallS)).append(',').append(csvText(error));
+        sb.append(',').append(Decimal.orEmpty(wallS)).append(',').append(SafeText.csvCell(error));
         return sb.toString();
-    }
-
-    static String num(double v) {
-        return Double.isNaN(v) ? "" : JsonWriter.write(v);
-    }
-
-    /** Quotes a text field for CSV when it holds a comma, quote or line break. */
-    static String csvText(String s) {
-        if (s == null || s.isEmpty()) return "";
-        if (s.indexOf(',') < 0 && s.indexOf('"') < 0 && s.indexOf('\n') < 0 && s.indexOf('\r') < 0) return s;
-        return "\"" + s.replace("\"", "\"\"").replace('\n', ' ').replace('\r', ' ') + "\"";
     }
 }

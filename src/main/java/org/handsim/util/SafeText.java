@@ -49,6 +49,17 @@ public final class SafeText {
         return sb.toString();
     }
 
+    /**
+     * A text cell of a CSV table: {@link #line} (one physical line per row, control characters
+     * escaped), quoted when it holds a comma or a double quote; null is the empty cell.
+     */
+    public static String csvCell(String s) {
+        if (s == null) return "";
+        s = line(s);
+        if (s.indexOf(',') < 0 && s.indexOf('"') < 0) return s;
+        return "\"" + s.replace("\"", "\"\"") + "\"";
+    }
+
     /** One line for a message: {@link #escape} of the whole text (a multi-line text becomes one line). */
     public static String line(String message) {
         return escape(message);

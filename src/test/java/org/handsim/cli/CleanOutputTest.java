@@ -84,6 +84,15 @@ public class CleanOutputTest {
         assertEquals(2, bad.code(), bad.err());
     }
 
+    /** The table headers the help of sweep and plan quote are the headers the commands write (laid out over lines). */
+    @Test
+    void helpQuotesTheTableHeadersTheCommandsWrite() {
+        String sweep = CliTesting.run("sweep", "--help").out().replaceAll("\\s+", "");
+        assertTrue(sweep.contains(SweepCommand.HEADER), "sweep --help quotes summary.csv's header " + SweepCommand.HEADER);
+        String plan = CliTesting.run("plan", "--help").out().replaceAll("\\s+", "");
+        assertTrue(plan.contains(org.handsim.plan.TrialResult.HEADER), "plan --help quotes plan.csv's header " + org.handsim.plan.TrialResult.HEADER);
+    }
+
     /**
      * Help lays out tokens whole: every line fits 80 columns; the synopsis breaks only between
      * options (each [..] group opens and closes on one line); a line of a JSON template never

@@ -90,9 +90,9 @@ class QualityCommandTest {
         Path f = temp(CUBE);
         try {
             String[][] cases = {
-                {"--friction", "-0.1", "--friction must be >= 0"},
+                {"--friction", "-0.1", "--friction must be a number >= 0, got -0.1"},
                 {"--friction", "nan", "'nan' is not a number"},
-                {"--edges", "0", "--edges must be in 1..1024"},
+                {"--edges", "0", "--edges must be between 1 and 1024"},
                 {"--edges", "2.5", "is not an integer"},
                 {"--radius", "0", "--radius must be > 0"},
                 {"--center", "1,2", "--center needs 3 comma-separated numbers"},
