@@ -70,9 +70,10 @@ public final class MeshCommand implements Callable<Integer> {
 
     /**
      * Whether the mesh changes with --divisions: the file loaded again at other divisions gives
-     * other triangles (only Sphere, Cylinder and Cone depend on them).
+     * other triangles (only VRML's Sphere, Cylinder and Cone depend on them).
      */
     private boolean dependsOnDivisions(MeshFiles.Loaded r) {
+        if (r.format() != MeshFiles.Format.VRML) return false;
         int other = divisions == 3 ? 4 : 3;
         TriangleMesh a = r.mesh(), b;
         try {
@@ -80,7 +81,7 @@ public final class MeshCommand implements Callable<Integer> {
         } catch (RuntimeException e) {
             return true;   // cannot tell: say nothing
         }
-        return a.triangleCount() != b.triangleCount() || !java.util.Arrays.equals(a.vertices(), b.vertices());
+        return !a.sameTrianglesAs(b);
     }
 
     @Override

@@ -95,6 +95,11 @@ public final class TriangleMesh {
     /** Internal area array (m² per triangle); do not modify. */
     public double[] areas() { return areas; }
 
+    /** Whether {@code other} has the same vertices (bit for bit) and triangles: the same mesh, whatever made it. */
+    public boolean sameTrianglesAs(TriangleMesh other) {
+        return java.util.Arrays.equals(vertices, other.vertices) && java.util.Arrays.equals(triangles, other.triangles);
+    }
+
     /** @return the number of zero-area triangles */
     public int degenerateCount() {
         int c = 0;

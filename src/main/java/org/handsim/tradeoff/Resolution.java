@@ -145,7 +145,7 @@ public final class Resolution {
         int coarsest = table.get(0).divisions(), finest = table.get(table.size() - 1).divisions();
         TriangleMesh fine = SceneGeometry.mesh(file, finest, scale), coarse = SceneGeometry.mesh(file, coarsest, scale);
         double size = SceneGeometry.boundingSphere(fine)[3];
-        if (fine.triangleCount() == coarse.triangleCount() && Arrays.equals(fine.vertices(), coarse.vertices())) {
+        if (fine.sameTrianglesAs(coarse)) {
             return new Choice(true, fine.triangleCount(), size, true, -1, Double.NaN);
         }
         return choose(table, size, tolerance, d -> SceneGeometry.mesh(file, d, scale).triangleCount());
