@@ -1,15 +1,6 @@
 package org.handsim.cli;
 
-import java.io.PrintWriter;
-import java.io.Writer;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Locale;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.Callable;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
@@ -18,7 +9,6 @@ import org.handsim.sim.ScenarioException;
 import org.handsim.sim.Simulation;
 import org.handsim.sim.SimulationException;
 import org.handsim.sim.Sweep;
-import org.handsim.util.AtomicFile;
 import org.handsim.util.Decimal;
 import org.handsim.util.SafeText;
 import picocli.CommandLine.Command;
@@ -71,7 +61,6 @@ public final class SweepCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter err = spec.commandLine().getErr();
         Sweep sweep;
         try {
             sweep = Sweep.load(file);
@@ -81,55 +70,8 @@ public final class SweepCommand implements Callable<Integer> {
         Args.frictionAndEdges(friction, edges);
         int n = threads != null ? threads : sweep.threads();
         if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
-        if (!engine.equals("local")) return SweepJob.runOnEngine(this, sweep, n, engine, master);
-        if (master != null) throw CliError.usage("handsim: --master needs --engine spark");
-        List<Sweep.Run> runs = sweep.runs();
-        ExecutorService pool = Executors.newFixedThreadPool(n, r -> {
-            Thread t = new Thread(r, "sweep-worker");
-            t.setDaemon(true);
-            return t;
-        });
-        AtomicInteger done = new AtomicInteger();
-        long t0 = System.nanoTime();
-        Path dir = out != null ? out : Path.of("out", sweep.name());
-        int failed = 0;
-        // the table streams: rows are written in the file's order as soon as they and all rows
-        // before them are done; at most 2 × threads runs are submitted ahead, so memory does not
-        // grow with the number of runs
-        int ahead = 2 * n;
-        java.util.ArrayDeque<Future<String>> inFlight = new java.util.ArrayDeque<>();
-        try (AtomicFile f = new AtomicFile(dir.resolve("summary.csv"))) {
-            Writer w = f.writer();
-            w.write(HEADER);
-            w.write('\n');
-            int next = 0;
-            while (next < runs.size() || !inFlight.isEmpty()) {
-                while (next < runs.size() && inFlight.size() < ahead) {
-                    Sweep.Run run = runs.get(next++);
-                    inFlight.add(pool.submit(() -> {
-                        String row = runOne(run, friction, edges);
-                        int d = done.incrementAndGet();
-                        synchronized (err) {
-                            err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", d, runs.size(), SafeText.line(run.label()),
-                                (System.nanoTime() - t0) / 1e9));
-                            err.flush();
-                        }
-                        return row;
-                    }));
-                }
-                String row = inFlight.poll().get();
-                if (row.contains(",failed,")) failed++;
-                w.write(row);
-                w.write('\n');
-            }
-            f.commit();
-        } finally {
-            pool.shutdownNow();
-        }
-        double wall = (System.nanoTime() - t0) / 1e9;
-        spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %d threads in %.2f s; wrote %s",
-            sweep.name(), runs.size(), failed, n, wall, dir.resolve("summary.csv")));
-        return failed == 0 ? 0 : 1;
+        if (master != null && engine.equals("local")) throw CliError.usage("handsim: --master needs --engine spark");
+        return SweepJob.run(this, sweep, n);
     }
 
     static String runOne(Sweep.Run run, Double friction, Integer edges) {

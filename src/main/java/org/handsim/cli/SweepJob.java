@@ -8,11 +8,13 @@ import org.handsim.plan.IndexedJob;
 import org.handsim.plan.TrialEngine;
 import org.handsim.sim.Sweep;
 import org.handsim.util.AtomicFile;
+import org.handsim.util.SafeText;
 
 /**
- * The runs of a sweep file as an {@link IndexedJob} ({@code handsim sweep --engine spark}): run
- * i of the file gives its {@code summary.csv} row, exactly as the local sweep writes it. The
- * job carries the sweep file's path; each worker loads the file once.
+ * The runs of a sweep file as an {@link IndexedJob}, run by any engine ({@code handsim sweep
+ * --engine local|spark}): run i of the file gives its {@code summary.csv} row. The job carries
+ * the sweep file's path; a worker that did not get the loaded file (a Spark executor) loads it
+ * once.
  */
 final class SweepJob implements IndexedJob<String> {
     private static final long serialVersionUID = 1L;
@@ -21,9 +23,10 @@ final class SweepJob implements IndexedJob<String> {
     private final Integer edges;
     private transient volatile Sweep sweep;
 
-    /** @param friction, edges the command's overrides (null: each scenario's) */
-    SweepJob(Path file, Double friction, Integer edges) {
+    /** @param sweep the loaded file; friction, edges the command's overrides (null: each scenario's) */
+    SweepJob(Path file, Sweep sweep, Double friction, Integer edges) {
         this.file = file.toAbsolutePath().normalize().toString();
+        this.sweep = sweep;
         this.friction = friction;
         this.edges = edges;
     }
@@ -40,8 +43,9 @@ final class SweepJob implements IndexedJob<String> {
         return SweepCommand.runOne(s.runs().get(index), friction, edges);
     }
 
-    /** {@code handsim sweep} on an engine other than the local threads: the same table. */
-    static int runOnEngine(SweepCommand c, Sweep sweep, int threads, String engine, String master) throws Exception {
+    /** {@code handsim sweep} on the command's engine: the table streamed in the file's order, progress on standard error. */
+    static int run(SweepCommand c, Sweep sweep, int threads) throws Exception {
+        String engine = c.engine;
         TrialEngine eng;
         try {
             eng = Engines.find(engine);
@@ -50,7 +54,7 @@ final class SweepJob implements IndexedJob<String> {
         }
         int runs = sweep.runs().size();
         Path dir = c.out != null ? c.out : Path.of("out", sweep.name());
-        String url = master != null ? master : c.threads != null ? "local[" + threads + "]" : "local[*]";
+        String url = c.master != null ? c.master : c.threads != null ? "local[" + threads + "]" : "local[*]";
         long t0 = System.nanoTime();
         int[] failed = {0}, done = {0};
         java.io.PrintWriter err = c.spec.commandLine().getErr();
@@ -59,7 +63,7 @@ final class SweepJob implements IndexedJob<String> {
             w.write(SweepCommand.HEADER);
             w.write('\n');
             try {
-                eng.run(new SweepJob(c.file, c.friction, c.edges), runs, new TrialEngine.Settings(threads, url, "handsim sweep " + sweep.name()), row -> {
+                eng.run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, new TrialEngine.Settings(threads, url, "handsim sweep " + sweep.name()), row -> {
                     try {
                         if (row.contains(",failed,")) failed[0]++;
                         w.write(row);
@@ -67,7 +71,7 @@ final class SweepJob implements IndexedJob<String> {
                     } catch (java.io.IOException e) {
                         throw new java.io.UncheckedIOException(e);
                     }
-                    err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", ++done[0], runs, sweep.runs().get(done[0] - 1).label(),
+                    err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", ++done[0], runs, SafeText.line(sweep.runs().get(done[0] - 1).label()),
                         (System.nanoTime() - t0) / 1e9));
                     err.flush();
                 });
@@ -79,8 +83,9 @@ final class SweepJob implements IndexedJob<String> {
             f.commit();
         }
         double wall = (System.nanoTime() - t0) / 1e9;
+        String on = engine.equals("local") ? threads + " threads" : url;
         c.spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %s in %.2f s; wrote %s",
-            sweep.name(), runs, failed[0], url, wall, dir.resolve("summary.csv")));
+            sweep.name(), runs, failed[0], on, wall, dir.resolve("summary.csv")));
         return failed[0] == 0 ? 0 : 1;
     }
 }
