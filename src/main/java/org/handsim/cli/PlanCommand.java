@@ -9,11 +9,9 @@ import org.handsim.chart.ChartExport;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.plan.DirectionMap;
-import org.handsim.plan.Engines;
 import org.handsim.plan.PlanJob;
 import org.handsim.plan.PlanOutput;
 import org.handsim.plan.PlanSpec;
-import org.handsim.plan.TrialEngine;
 import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
 import org.handsim.sim.Scenario;
@@ -82,18 +80,10 @@ public final class PlanCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
         if (trials < 1) throw CliError.usage("handsim: --trials must be >= 1, got " + trials);
-        if (threads != null && threads < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + threads);
-        if (!engine.equals("local") && !engine.equals("spark")) throw CliError.usage("handsim: --engine must be local or spark, got '" + engine + "'");
-        if (master != null && !engine.equals("spark")) throw CliError.usage("handsim: --master needs --engine spark");
+        EngineChoice eng = EngineChoice.of(engine, master, threads, Runtime.getRuntime().availableProcessors());
         Args.frictionAndEdges(friction, null);
         Scenario.Units unit = units.equals("auto") ? null : Scenario.Units.of(units);
         if (unit == null && !units.equals("auto")) throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + units + "'");
-        TrialEngine eng;
-        try {
-            eng = Engines.find(engine);
-        } catch (IllegalArgumentException e) {
-            throw CliError.usage("handsim: " + e.getMessage());
-        }
         PlanSpec planSpec;
         TrialRunner runner;
         try {
@@ -102,8 +92,6 @@ public final class PlanCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
         }
-        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        String url = master != null ? master : threads != null ? "local[" + threads + "]" : "local[*]";
         Path dir = out != null ? out : Path.of("out", "plan-" + planSpec.name());
         if (unit == null && !target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json")) {
             err.println("handsim plan: " + target.getFileName() + ": units " + planSpec.units().id() + " by its size (--units to choose)");
@@ -114,9 +102,9 @@ public final class PlanCommand implements Callable<Integer> {
         PlanOutput output = new PlanOutput(dir, runner, rows -> bar.accept(rows / (double) trials));
         try (output) {
             try {
-                eng.run(new PlanJob(planSpec), trials, new TrialEngine.Settings(n, url, "handsim plan " + planSpec.name()), output);
+                eng.engine().run(new PlanJob(planSpec), trials, eng.settings("handsim plan " + planSpec.name()), output);
             } catch (Exception e) {
-                throw new CliError(1, "handsim: plan " + planSpec.name() + ": the " + engine + " engine failed: " + oneLine(e));
+                throw eng.failed("plan " + planSpec.name(), e);
             }
             double wall = (System.nanoTime() - t0) / 1e9;
             summary = output.finish(wall, engine);
@@ -127,7 +115,7 @@ public final class PlanCommand implements Callable<Integer> {
                 + " %.2f s wall, %.1f trials/s (%s engine, %s)",
             planSpec.name(), trials, output.failed(), output.forceClosure(), fmt(best == null ? 0 : best.epsilon()),
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
-            engine, engine.equals("spark") ? url : n + " thread" + (n == 1 ? "" : "s")));
+            engine, eng.where()));
         stdout.println("wrote " + dir + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
             + ".json, epsilon-histogram.png/.svg, epsilon-directions.png/.svg}");
         return output.failed() == trials ? 1 : 0;
@@ -146,13 +134,5 @@ public final class PlanCommand implements Callable<Integer> {
 
     private static String fmt(double v) {
         return String.format(Locale.ROOT, "%.4g", v);
-    }
-
-    static String oneLine(Throwable e) {
-        Throwable root = e;
-        while (root.getCause() != null && root.getCause() != root) root = root.getCause();
-        String m = root.getMessage() != null ? root.getMessage() : root.toString();
-        int nl = m.indexOf('\n');
-        return nl >= 0 ? m.substring(0, nl) : m;
     }
 }

@@ -68,10 +68,7 @@ public final class SweepCommand implements Callable<Integer> {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
         Args.frictionAndEdges(friction, edges);
-        int n = threads != null ? threads : sweep.threads();
-        if (n < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + n);
-        if (master != null && engine.equals("local")) throw CliError.usage("handsim: --master needs --engine spark");
-        return SweepJob.run(this, sweep, n);
+        return SweepJob.run(this, sweep, sweep.threads());
     }
 
     static String runOne(Sweep.Run run, Double friction, Integer edges) {

@@ -3,9 +3,7 @@ package org.handsim.cli;
 import java.io.Writer;
 import java.nio.file.Path;
 import java.util.Locale;
-import org.handsim.plan.Engines;
 import org.handsim.plan.IndexedJob;
-import org.handsim.plan.TrialEngine;
 import org.handsim.sim.Sweep;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.SafeText;
@@ -44,17 +42,10 @@ final class SweepJob implements IndexedJob<String> {
     }
 
     /** {@code handsim sweep} on the command's engine: the table streamed in the file's order, progress on standard error. */
-    static int run(SweepCommand c, Sweep sweep, int threads) throws Exception {
-        String engine = c.engine;
-        TrialEngine eng;
-        try {
-            eng = Engines.find(engine);
-        } catch (IllegalArgumentException e) {
-            throw CliError.usage("handsim: " + e.getMessage());
-        }
+    static int run(SweepCommand c, Sweep sweep, int defaultThreads) throws Exception {
+        EngineChoice eng = EngineChoice.of(c.engine, c.master, c.threads, defaultThreads);
         int runs = sweep.runs().size();
         Path dir = c.out != null ? c.out : Path.of("out", sweep.name());
-        String url = c.master != null ? c.master : c.threads != null ? "local[" + threads + "]" : "local[*]";
         long t0 = System.nanoTime();
         int[] failed = {0}, done = {0};
         java.io.PrintWriter err = c.spec.commandLine().getErr();
@@ -63,7 +54,7 @@ final class SweepJob implements IndexedJob<String> {
             w.write(SweepCommand.HEADER);
             w.write('\n');
             try {
-                eng.run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, new TrialEngine.Settings(threads, url, "handsim sweep " + sweep.name()), row -> {
+                eng.engine().run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, eng.settings("handsim sweep " + sweep.name()), row -> {
                     try {
                         if (row.contains(",failed,")) failed[0]++;
                         w.write(row);
@@ -78,14 +69,13 @@ final class SweepJob implements IndexedJob<String> {
             } catch (java.io.UncheckedIOException e) {
                 throw e.getCause();
             } catch (Exception e) {
-                throw new CliError(1, "handsim: sweep " + sweep.name() + ": the " + engine + " engine failed: " + PlanCommand.oneLine(e));
+                throw eng.failed("sweep " + sweep.name(), e);
             }
             f.commit();
         }
         double wall = (System.nanoTime() - t0) / 1e9;
-        String on = engine.equals("local") ? threads + " threads" : url;
         c.spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %s in %.2f s; wrote %s",
-            sweep.name(), runs, failed[0], on, wall, dir.resolve("summary.csv")));
+            sweep.name(), runs, failed[0], eng.where(), wall, dir.resolve("summary.csv")));
         return failed[0] == 0 ? 0 : 1;
     }
 }
