@@ -1,9 +1,12 @@
 package org.handsim.mesh;
 
+import org.handsim.util.SafeText;
+
 /**
  * A mesh file (OBJ, STL) that cannot be read. The message starts with where the problem is:
  * {@code FILE:LINE:COL: message} for text (OBJ, ASCII STL), {@code FILE: byte N: message} for
- * binary STL, so a user can go straight to it.
+ * binary STL, so a user can go straight to it. File name and message are made one safe line
+ * ({@link SafeText#line}: control characters, C1 included, escaped), as the VRML loader's.
  */
 public final class MeshFileException extends RuntimeException {
     private static final long serialVersionUID = 1L;
@@ -18,11 +21,11 @@ public final class MeshFileException extends RuntimeException {
 
     /** {@code FILE:LINE:COL: message} (line and column 1-based). */
     static MeshFileException at(String file, int line, int column, String message) {
-        return new MeshFileException(file + ":" + line + ":" + column + ": " + message);
+        return new MeshFileException(SafeText.line(file + ":" + line + ":" + column + ": " + message));
     }
 
     /** {@code FILE: byte N: message} (N 0-based, from the start of the file). */
     static MeshFileException atByte(String file, long offset, String message) {
-        return new MeshFileException(file + ": byte " + offset + ": " + message);
+        return new MeshFileException(SafeText.line(file + ": byte " + offset + ": " + message));
     }
 }

@@ -1,5 +1,6 @@
 package org.handsim.mesh;
 
+import org.handsim.util.SafeText;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
@@ -127,7 +128,7 @@ public final class ObjReader {
                     throw MeshFileException.at(name, lineNo, spans.get(0)[0] + 1, "'" + kw
                         + "': free-form curves and surfaces are not supported: export the model as triangles or polygons");
                 }
-                throw MeshFileException.at(name, lineNo, spans.get(0)[0] + 1, "unknown statement '" + shorten(kw) + "' (known: "
+                throw MeshFileException.at(name, lineNo, spans.get(0)[0] + 1, "unknown statement '" + SafeText.quote(kw) + "' (known: "
                     + String.join(", ", KNOWN) + ")");
             }
             switch (key) {
@@ -166,7 +167,7 @@ public final class ObjReader {
                         String ref = line.substring(s[0], s[1]);
                         String[] parts = ref.split("/", -1);
                         if (parts.length > 3 || parts[0].isEmpty()) {
-                            throw MeshFileException.at(name, lineNo, s[0] + 1, "'" + shorten(ref) + "' is not a vertex reference (v, v/t, v//n or v/t/n)");
+                            throw MeshFileException.at(name, lineNo, s[0] + 1, "'" + SafeText.quote(ref) + "' is not a vertex reference (v, v/t, v//n or v/t/n)");
                         }
                         int[] counts = {nv, nvt, nvn};
                         String[] what = {"vertex", "texture coordinate", "normal"};
@@ -238,7 +239,7 @@ public final class ObjReader {
         String s = line.substring(span[0], span[1]);
         if (!DECIMAL.matcher(s).matches()) {
             boolean nonFinite = s.toLowerCase(Locale.ROOT).matches("[-+]?(nan|inf|infinity)");
-            throw MeshFileException.at(name, lineNo, span[0] + 1, what + " '" + shorten(s) + "' is not " + (nonFinite ? "a finite number" : "a number"));
+            throw MeshFileException.at(name, lineNo, span[0] + 1, what + " '" + SafeText.quote(s) + "' is not " + (nonFinite ? "a finite number" : "a number"));
         }
         if (!(Math.abs(Double.parseDouble(s)) <= Float.MAX_VALUE)) {
             throw MeshFileException.at(name, lineNo, span[0] + 1, what + " " + s + " is beyond the range of a float (Java3D stores coordinates as float)");
@@ -251,7 +252,7 @@ public final class ObjReader {
         try {
             i = Integer.parseInt(s);
         } catch (NumberFormatException e) {
-            throw MeshFileException.at(name, lineNo, col, what + " index '" + shorten(s) + "' is not an integer");
+            throw MeshFileException.at(name, lineNo, col, what + " index '" + SafeText.quote(s) + "' is not an integer");
         }
         if (i == 0) throw MeshFileException.at(name, lineNo, col, what + " index 0: OBJ indices start at 1 (negative ones count back)");
         int abs = i > 0 ? i : count + 1 + i;
@@ -261,9 +262,5 @@ public final class ObjReader {
                 + (count == 1 ? what : plural) + " defined so far");
         }
         return abs;
-    }
-
-    private static String shorten(String s) {
-        return s.length() > 40 ? s.substring(0, 40) + "…" : s;
     }
 }

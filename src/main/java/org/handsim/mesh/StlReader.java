@@ -1,5 +1,6 @@
 package org.handsim.mesh;
 
+import org.handsim.util.SafeText;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -196,7 +197,7 @@ public final class StlReader {
 
         private void expect(String word) {
             if (tok == null) throw MeshFileException.at(name, line, pos - lineStart + 1, "the file ends where '" + word + "' was expected");
-            if (!tok.equalsIgnoreCase(word)) throw error("expected '" + word + "', found '" + shorten(tok) + "'");
+            if (!tok.equalsIgnoreCase(word)) throw error("expected '" + word + "', found '" + SafeText.quote(tok) + "'");
         }
 
         private double number(String what) {
@@ -205,7 +206,7 @@ public final class StlReader {
             try {
                 return Double.parseDouble(tok);
             } catch (NumberFormatException e) {
-                throw error(what + " '" + shorten(tok) + "' is not a number");
+                throw error(what + " '" + SafeText.quote(tok) + "' is not a number");
             }
         }
 
@@ -240,10 +241,6 @@ public final class StlReader {
             tok = text.substring(s, pos);
             tokLine = line;
             tokCol = s - lineStart + 1;
-        }
-
-        private static String shorten(String s) {
-            return s.length() > 40 ? s.substring(0, 40) + "…" : s;
         }
     }
 

@@ -180,6 +180,13 @@ class StlReaderTest {
         return message(text.getBytes(StandardCharsets.US_ASCII));
     }
 
+    /** A C1 control byte (NEL, 0x85, read as ISO-8859-1) inside a bad token is escaped: the message stays one line. */
+    @Test
+    void aControlByteInABadTokenIsEscaped() {
+        byte[] text = ascii(TETRA).replaceFirst("vertex 0.0 1.0", "vertex 0.0 x\u00851.0").getBytes(StandardCharsets.ISO_8859_1);
+        assertEquals("t.stl:5:18: vertex coordinate 'x\\u00851.0' is not a number", message(text));
+    }
+
     @Test
     void asciiErrorsNameLineAndColumn() {
         String good = ascii(TETRA);
