@@ -135,9 +135,6 @@ public final class ConvexHull {
         ensureFacets(256);
     }
 
-    /** The dimension d. */
-    public int dimension() { return d; }
-
     // ------------------------------------------------------------------ public entry points
 
     /**
@@ -156,7 +153,6 @@ public final class ConvexHull {
         for (double j = JOGGLE_FIRST; j <= JOGGLE_LAST; j *= 10) {
             double amount = j * scale;
             for (int i = 0; i < count * d; i++) joggled[i] = points[i] + amount * (2 * rnd.nextDouble() - 1);
-            joggles++;
             if (!buildOnce(joggled, count)) return false;
             if (!suspicious && !droppedPointOutside() || supportsEveryPoint()) return true;
         }
@@ -210,8 +206,6 @@ public final class ConvexHull {
     private static final long JOGGLE_SEED = 20261124L;
     private double[] joggled = new double[0];
     private boolean suspicious;
-    /** Rebuilds on joggled points since this instance was made (diagnostics). */
-    long joggles;
 
     private boolean buildOnce(double[] points, int count) {
         if (!start(points, count, true)) return false;
@@ -295,9 +289,6 @@ public final class ConvexHull {
 
     /** τ of the last call: a point counts as above a facet only when farther than this. */
     public double tolerance() { return tau; }
-
-    /** The largest absolute coordinate S of the last call's points. */
-    public double scale() { return scale; }
 
     /** Simplicial facets of the last {@link #build} (0 when lower-dimensional). */
     public int simplicialFacetCount() { return full ? aliveCount : 0; }
@@ -471,9 +462,6 @@ public final class ConvexHull {
         }
         return null;
     }
-
-    /** State of point i after the last call: 0 inside, 1 pending, 2 vertex (tests). */
-    int pointState(int i) { return pointState[i]; }
 
     /** Facets the last call created, the initial simplex's included (the work done). */
     public int createdFacetCount() { return created; }
@@ -1099,12 +1087,6 @@ public final class ConvexHull {
     private void pushWork(int f) {
         if (workCount == work.length) work = Arrays.copyOf(work, 2 * workCount);
         work[workCount++] = f;
-    }
-
-    private int slotOfVertex(int f, int v) {
-        int fo = f * d;
-        for (int i = 0; i < d; i++) if (verts[fo + i] == v) return i;
-        throw new IllegalStateException("vertex " + v + " not in facet " + f + " (a bug)");
     }
 
     private int find(int f) {

@@ -68,7 +68,7 @@ public final class GuiLauncher {
         long deadline = System.currentTimeMillis() + FIRST_FRAME_TIMEOUT_MS;
         while (w.view().framesRendered() == 0 && System.currentTimeMillis() < deadline) Thread.sleep(5);
         // JOGL is initialised now: a lost X server should end the program, not abort the JVM
-        X11Exit.restoreIoErrorHandler();
+        if (!X11Exit.restoreIoErrorHandler()) err.println("handsim gui: " + X11Exit.lastProblem());
         if (w.view().framesRendered() == 0) {
             err.println("handsim gui: no frame was rendered within " + FIRST_FRAME_TIMEOUT_MS / 1000 + " s (OpenGL not working?)");
             if (o.scripted()) {
@@ -90,7 +90,7 @@ public final class GuiLauncher {
                 }
             }
             w.awaitClosed();
-            X11Exit.closeDisplays();
+            closeDisplays(err);
             return 0;
         }
         int code = 0;
@@ -121,8 +121,13 @@ public final class GuiLauncher {
         out.println("gui: " + (code == 0 ? "done" : "failed (exit code " + code + ")") + ", " + uncaught.size() + " uncaught exceptions");
         out.flush();
         dispose(w);
-        X11Exit.closeDisplays();
+        closeDisplays(err);
         return code;
+    }
+
+    /** {@link X11Exit#closeDisplays}, saying on {@code err} why when it cannot. */
+    private static void closeDisplays(PrintWriter err) {
+        if (X11Exit.closeDisplays() < 0) err.println("handsim gui: " + X11Exit.lastProblem());
     }
 
     private static void dispose(HandSimWindow w) {

@@ -95,8 +95,6 @@ import org.handsim.util.JsonWriter;
  * Every method of this class runs on the event dispatch thread unless it says otherwise.
  */
 public final class HandSimWindow {
-    /** Milliseconds between view updates (~40 Hz). */
-    public static final int TICK_MS = HandSimPanel.TICK_MS;
     /** While the simulation plays the charts are redrawn every this many ticks (~8 Hz). */
     static final int CHART_TICKS = 5;
     /** The four buttons of the paper, in order. */
@@ -390,10 +388,6 @@ public final class HandSimWindow {
         kinematics.previewChanged();
     }
 
-    /** See {@link HandSimPanel#loadObjectMesh}. */
-    CompletableFuture<MeshSource.Model> loadObjectMesh(Path file, int divisions) {
-        return sim.loadObjectMesh(file, divisions);
-    }
 
     /** Plays from where the model is (drops a Kinematics preview). */
     public void play() { sim.setSpeed(speedFactor()); sim.play(); }

@@ -280,8 +280,4 @@ public final class ObjectsPanel {
         file.setText(p.file().getFileName() + " (" + MeshFiles.Format.of(p.file()).label() + ")");
     }
 
-    /** The axis-angle vector of a placement's rotation, rad ({@link RigidTransform#rotationVector()}). */
-    static double[] rotationVector(RigidTransform t) {
-        return t.rotationVector();
-    }
 }

@@ -56,11 +56,16 @@ public final class SteadyTiming {
      * @param samples number of timed batches (≥ 1)
      */
     public static Result median(DoubleSupplier op, int samples) {
+        return median(op, samples, WARMUP_CAP_SECONDS);
+    }
+
+    /** {@link #median(DoubleSupplier, int)} with the warm-up capped at {@code capSeconds} (tests). */
+    static Result median(DoubleSupplier op, int samples, double capSeconds) {
         if (samples < 1) throw new IllegalArgumentException("samples must be >= 1, got " + samples);
         double acc = 0;
         long calls = 0;
         long start = System.nanoTime();
-        long minEnd = start + (long) (WARMUP_SECONDS * 1e9), cap = start + (long) (WARMUP_CAP_SECONDS * 1e9);
+        long minEnd = start + (long) (WARMUP_SECONDS * 1e9), cap = start + (long) (capSeconds * 1e9);
         long now;
         do {
             acc += op.getAsDouble();

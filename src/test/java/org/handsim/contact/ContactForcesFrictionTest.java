@@ -234,7 +234,6 @@ class ContactForcesFrictionTest {
         assertTrue(cf.force(0) > 1, "a force: " + cf.force(0));
         double[] star = {0, cf.jointTorque(0, 1), cf.jointTorque(0, 2)};
         double[] r = {0, tau[1] - star[1], tau[2] - star[2]};
-        assertEquals(Math.hypot(r[1], r[2]), cf.residual(), 1e-12);
         assertTrue(cf.residual() < frictionless.residual() - 0.01, cf.residual() + " vs frictionless " + frictionless.residual());
         assertEquals(0, r[1] * star[1] + r[2] * star[2], 1e-12, "r · τ* = 0");
         for (int e = 0; e < M; e++) {
@@ -276,7 +275,6 @@ class ContactForcesFrictionTest {
             for (int i = 0; i < n; i++) { t2 += cf.jointTorque(i, 1); t3 += cf.jointTorque(i, 2); }
             assertEquals(star[1], t2, 1e-6, "trial " + trial + ": least-squares torque on k2");
             assertEquals(star[2], t3, 1e-6, "trial " + trial + ": least-squares torque on k3");
-            assertEquals(Math.hypot(tau[1] - t2, tau[2] - t3), cf.residual(), 1e-12, "trial " + trial);
             if (Math.hypot(tau[1] - star[1], tau[2] - star[2]) > 1e-3) infeasible++;
             double[] ref = quadraticProgram(frames, star, n, p, links, cones, cf);
             if (ref == null) continue;

@@ -137,7 +137,7 @@ class ConvexHullTest {
             }
             if (!h.build(p, n)) continue;
             double tau = h.tolerance();
-            double[][] planes = HullAccess.planes(h);
+            double[][] planes = h.facetPlanes();
             for (double[] pl : planes) {
                 for (int i = 0; i < n; i++) {
                     double s = -pl[6];
@@ -173,7 +173,7 @@ class ConvexHullTest {
             if (!exact.build(lattice, n)) continue;
             assertTrue(h.build(p, n), "trial " + trial);
             assertEquals(null, h.checkTopology(), "trial " + trial);
-            for (double[] pl : HullAccess.planes(h)) {
+            for (double[] pl : h.facetPlanes()) {
                 for (int i = 0; i < n; i++) {
                     double s = -pl[6];
                     for (int c = 0; c < 6; c++) s += pl[c] * p[6 * i + c];

@@ -29,7 +29,6 @@ class HoldCapacityReferenceTest {
     void theBuilderLpAgreesWithTheExpressionsModelOnSeededGrasps() {
         Random rnd = new Random(2026);
         int held = 0, capped = 0, zero = 0;
-        double worst = 0;
         for (int g = 0; g < 1200; g++) {
             double mu = g % 10 == 0 ? 0 : rnd.nextDouble();
             int n = 2 + rnd.nextInt(5), m = g % 7 == 0 ? 4 : 8;
@@ -58,13 +57,11 @@ class HoldCapacityReferenceTest {
                 double got = hc.hold(d).forceN();
                 double tol = 1e-9 * Math.max(1, expected);
                 assertEquals(expected, got, tol, "grasp " + g + " direction " + java.util.Arrays.toString(d));
-                worst = Math.max(worst, Math.abs(expected - got) / Math.max(1, expected));
                 if (expected >= cap * (1 - 1e-9)) capped++; else if (expected > 1e-9) held++; else zero++;
             }
         }
         // every kind of answer is exercised
         assertTrue(held > 800 && capped > 1000 && zero > 1000, "held " + held + ", capped " + capped + ", zero " + zero);
-        assertTrue(worst < 1e-9, "worst " + worst);
     }
 
     /** The LP of HoldCapacity's Javadoc as an {@link ExpressionsBasedModel}, from the raw grasp. */

@@ -75,18 +75,4 @@ class MeshSourceTest {
             Files.delete(dir);
         }
     }
-
-    @Test
-    void rotationVectorInvertsRodrigues() {
-        double h = Math.PI / Math.sqrt(2), c = Math.PI / Math.sqrt(3);
-        // half turns about axes with a zero or negative component: the signs come from the off-diagonal terms
-        double[][] cases = {{0, 0, 0}, {0.3, -0.2, 0.9}, {Math.PI / 2, 0, 0}, {0, 0, Math.PI}, {-2.0, 1.0, 0.5},
-            {0, h, -h}, {h, 0, -h}, {-h, h, 0}, {c, -c, c}, {-c, -c, c}, {0, -Math.PI, 0}};
-        for (double[] r : cases) {
-            RigidTransform t = RigidTransform.fromPose(0.1, 0.2, 0.3, r[0], r[1], r[2]);
-            double[] back = ObjectsPanel.rotationVector(t);
-            RigidTransform u = RigidTransform.fromPose(0.1, 0.2, 0.3, back[0], back[1], back[2]);
-            assertArrayEquals(t.toArray(), u.toArray(), 1e-9, java.util.Arrays.toString(r));
-        }
-    }
 }
