@@ -86,11 +86,7 @@ public final class Predicates {
      */
     public static double orient3dFiltered(double[] n, double[] nAbs, int o,
                                           double ax, double ay, double az, double dx, double dy, double dz) {
-        double ux = dx - ax, uy = dy - ay, uz = dz - az;
-        double det = ux * n[o] + uy * n[o + 1] + uz * n[o + 2];
-        double perm = Math.abs(ux) * nAbs[o] + Math.abs(uy) * nAbs[o + 1] + Math.abs(uz) * nAbs[o + 2];
-        double bound = O3D_BOUND * perm;
-        return (det > bound || -det > bound) ? det : Double.NaN;
+        return orient3dFiltered(n[o], n[o + 1], n[o + 2], nAbs[o], nAbs[o + 1], nAbs[o + 2], ax, ay, az, dx, dy, dz);
     }
 
     /**

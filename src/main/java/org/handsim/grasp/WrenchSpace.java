@@ -43,12 +43,7 @@ public final class WrenchSpace {
      * @throws IllegalArgumentException for too few values or a non-finite value
      */
     public static GraspQuality quality(double[] wrenches, int count, int contacts) {
-        check(wrenches, count, contacts);
-        ConvexHull hull = HULL.get();
-        if (!hull.build(wrenches, count)) return GraspQuality.none(contacts, count);
-        double b = hull.minOffset();
-        boolean closure = b > hull.tolerance();
-        return new GraspQuality(contacts, count, closure, closure ? b : 0, hull.volume(), hull.facetCount());
+        return whole(wrenches, count, contacts, true);
     }
 
     /**
@@ -60,12 +55,17 @@ public final class WrenchSpace {
      * @throws IllegalArgumentException for too few values or a non-finite value
      */
     public static GraspQuality qualityWithoutFacets(double[] wrenches, int count, int contacts) {
+        return whole(wrenches, count, contacts, false);
+    }
+
+    /** The whole hull's quality; the merged facet count when {@code facets}, else −1. */
+    private static GraspQuality whole(double[] wrenches, int count, int contacts, boolean facets) {
         check(wrenches, count, contacts);
         ConvexHull hull = HULL.get();
         if (!hull.build(wrenches, count)) return GraspQuality.none(contacts, count);
         double b = hull.minOffset();
         boolean closure = b > hull.tolerance();
-        return new GraspQuality(contacts, count, closure, closure ? b : 0, hull.volume(), -1);
+        return new GraspQuality(contacts, count, closure, closure ? b : 0, hull.volume(), facets ? hull.facetCount() : -1);
     }
 
     /**
