@@ -182,13 +182,18 @@ public final class RigidTransform {
      * −Rᵀt) as {@link #inverse()}). Allocation-free; out must not alias a, b or scratch.
      */
     public static void inverseTimes(double[] a, double[] b, double[] scratch, double[] out) {
+        inverseTimes(a, 0, b, 0, scratch, out, 0);
+    }
+
+    /** {@link #inverseTimes(double[], double[], double[], double[])} with A, B and out at offsets. */
+    public static void inverseTimes(double[] a, int ao, double[] b, int bo, double[] scratch, double[] out, int oo) {
         for (int r = 0; r < 3; r++) {
-            for (int c = 0; c < 3; c++) scratch[4 * r + c] = a[4 * c + r];
+            for (int c = 0; c < 3; c++) scratch[4 * r + c] = a[ao + 4 * c + r];
         }
         for (int r = 0; r < 3; r++) {
-            scratch[4 * r + 3] = -(scratch[4 * r] * a[3] + scratch[4 * r + 1] * a[7] + scratch[4 * r + 2] * a[11]);
+            scratch[4 * r + 3] = -(scratch[4 * r] * a[ao + 3] + scratch[4 * r + 1] * a[ao + 7] + scratch[4 * r + 2] * a[ao + 11]);
         }
-        multiply(scratch, 0, b, 0, out, 0);
+        multiply(scratch, 0, b, bo, out, oo);
     }
 
     /** @return this · other (apply {@code other} first, then this). */

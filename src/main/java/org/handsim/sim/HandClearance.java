@@ -118,13 +118,7 @@ public final class HandClearance {
         double reach = s[3] + objectSphere[3];
         if (x * x + y * y + z * z > reach * reach) return false;
         // part ← object = (world ← part)⁻¹ · (world ← object), as SceneGeometry places the object in a link's frame
-        for (int r = 0; r < 3; r++) {
-            for (int c = 0; c < 3; c++) partFromWorld[4 * r + c] = w[o + 4 * c + r];
-        }
-        for (int r = 0; r < 3; r++) {
-            partFromWorld[4 * r + 3] = -(partFromWorld[4 * r] * w[o + 3] + partFromWorld[4 * r + 1] * w[o + 7] + partFromWorld[4 * r + 2] * w[o + 11]);
-        }
-        RigidTransform.multiply(partFromWorld, 0, worldFromObject, 0, partFromObject, 0);
+        RigidTransform.inverseTimes(w, o, worldFromObject, 0, partFromWorld, partFromObject, 0);
         return query.intersects(trees[p], objectTree, partFromObject, 0, result);
     }
 
