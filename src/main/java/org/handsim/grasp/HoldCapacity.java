@@ -76,7 +76,7 @@ public final class HoldCapacity {
     private final List<double[]> contacts = new ArrayList<>();    // {px, py, pz, nx, ny, nz}
     private final List<int[]> loads = new ArrayList<>();          // the joints each contact loads
     // the LP's coefficients, made at the first hold() after the last change (null: to be made)
-    private double[] coneEdges;
+    private double[] wrenches;
     private double[][] balance, torquePerEdge;
     private boolean[] jointUsed;
 
@@ -111,7 +111,7 @@ public final class HoldCapacity {
         double l = Math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
         if (!(l > 0) || !finite(axis) || !finite(origin)) throw new IllegalArgumentException("joint axis and origin must be finite, the axis non-zero");
         joints.add(new double[] {axis[0] / l, axis[1] / l, axis[2] / l, origin[0], origin[1], origin[2], limitNm});
-        coneEdges = null;
+        wrenches = null;
         return joints.size() - 1;
     }
 
@@ -126,7 +126,7 @@ public final class HoldCapacity {
         }
         contacts.add(new double[] {point[0], point[1], point[2], normal[0], normal[1], normal[2]});
         loads.add(jointIndices.clone());
-        coneEdges = null;
+        wrenches = null;
     }
 
     /** @return the number of contacts added */
@@ -148,7 +148,7 @@ public final class HoldCapacity {
         if (!(dl > 0) || !finite(direction)) throw new IllegalArgumentException("load direction must be a finite non-zero vector");
         int n = contacts.size(), nj = joints.size(), m = edges;
         if (n == 0) return new Result(0, Outcome.NO_CONTACTS, new double[0], new double[nj]);
-        if (coneEdges == null) coefficients();
+        if (wrenches == null) coefficients();
         // x = (F, λ): minimise −F; the balance rows as equalities, each used joint's range as two
         // inequalities (τ ≤ L, −τ ≤ L), 0 ≤ F ≤ F_cap, λ ≥ 0 (the builder's default bound)
         int nv = 1 + n * m, used = 0;
@@ -183,8 +183,8 @@ public final class HoldCapacity {
         for (int v = 0; v < n * m; v++) w[v] = Math.max(0, r.doubleValue(1 + v));
         for (int i = 0; i < n; i++) {
             for (int k = 0; k < m; k++) {
-                int o = 3 * m * i + 3 * k;
-                for (int c = 0; c < 3; c++) forces[3 * i + c] += w[i * m + k] * coneEdges[o + c];
+                int o = 6 * (i * m + k);
+                for (int c = 0; c < 3; c++) forces[3 * i + c] += w[i * m + k] * wrenches[o + c];
             }
         }
         double[] torques = new double[nj];
@@ -194,30 +194,23 @@ public final class HoldCapacity {
     }
 
     /**
-     * The LP's coefficients, which do not depend on the load's direction: the cone edges, the
-     * balance rows (force; torque about c divided by R) and each joint's torque per edge weight.
+     * The LP's coefficients, which do not depend on the load's direction: the balance rows, the
+     * edge wrenches of {@link GraspWrenches#of} (force; torque about c divided by R), and each
+     * joint's torque per edge weight.
      */
     private void coefficients() {
         int n = contacts.size(), nj = joints.size(), m = edges;
-        double[] e = new double[3 * m * n];
+        double[] points = new double[3 * n], normals = new double[3 * n];
         for (int i = 0; i < n; i++) {
             double[] c = contacts.get(i);
-            FrictionCone.edges(c[3], c[4], c[5], mu, m, e, 3 * m * i);
+            System.arraycopy(c, 0, points, 3 * i, 3);
+            System.arraycopy(c, 3, normals, 3 * i, 3);
         }
+        // the edge wrenches of the grasp wrench space: (f, (p − c) × f / R) per cone edge
+        double[] w = GraspWrenches.of(n, points, normals, mu, m, center, radius);
         balance = new double[6][n * m];
-        for (int i = 0; i < n; i++) {
-            double[] c = contacts.get(i);
-            double rx = c[0] - center[0], ry = c[1] - center[1], rz = c[2] - center[2];
-            for (int k = 0; k < m; k++) {
-                int o = 3 * m * i + 3 * k, v = i * m + k;
-                double fx = e[o], fy = e[o + 1], fz = e[o + 2];
-                balance[0][v] = fx;
-                balance[1][v] = fy;
-                balance[2][v] = fz;
-                balance[3][v] = (ry * fz - rz * fy) / radius;
-                balance[4][v] = (rz * fx - rx * fz) / radius;
-                balance[5][v] = (rx * fy - ry * fx) / radius;
-            }
+        for (int v = 0; v < n * m; v++) {
+            for (int r = 0; r < 6; r++) balance[r][v] = w[6 * v + r];
         }
         torquePerEdge = new double[nj][n * m];
         jointUsed = new boolean[nj];
@@ -229,13 +222,13 @@ public final class HoldCapacity {
                 double rx = c[0] - jt[3], ry = c[1] - jt[4], rz = c[2] - jt[5];
                 double tx = jt[1] * rz - jt[2] * ry, ty = jt[2] * rx - jt[0] * rz, tz = jt[0] * ry - jt[1] * rx;
                 for (int k = 0; k < m; k++) {
-                    int o = 3 * m * i + 3 * k;
-                    torquePerEdge[j][i * m + k] = tx * e[o] + ty * e[o + 1] + tz * e[o + 2];
+                    int o = 6 * (i * m + k);
+                    torquePerEdge[j][i * m + k] = tx * w[o] + ty * w[o + 1] + tz * w[o + 2];
                     jointUsed[j] |= torquePerEdge[j][i * m + k] != 0;
                 }
             }
         }
-        coneEdges = e;
+        wrenches = w;
     }
 
     private static boolean contains(int[] a, int x) {
