@@ -161,10 +161,12 @@ public final class ContactForces {
                     double zx = frames[f + 2], zy = frames[f + 6], zz = frames[f + 10];
                     double rx = px - frames[f + 3], ry = py - frames[f + 7], rz = pz - frames[f + 11];
                     tvec[o] = zy * rz - zz * ry; tvec[o + 1] = zz * rx - zx * rz; tvec[o + 2] = zx * ry - zy * rx;
+                    // the moment arm of the normal (arm(): the same products in the same order)
+                    arms[3 * i + jm] = tvec[o] * dirs[3 * i] + tvec[o + 1] * dirs[3 * i + 1] + tvec[o + 2] * dirs[3 * i + 2];
                 } else {
                     tvec[o] = 0; tvec[o + 1] = 0; tvec[o + 2] = 0;
+                    arms[3 * i + jm] = 0;
                 }
-                arms[3 * i + jm] = loads ? arm(frames, jm, points, dirs, i) : 0;
             }
             // undetermined: no edge of the cone has a moment arm (torque per newton of normal force)
             double bestArm2 = 0;
