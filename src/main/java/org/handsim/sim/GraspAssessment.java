@@ -92,9 +92,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
      * @param edges edges of the linearised friction cones (≥ 1)
      */
     public static GraspAssessment of(HandModel model, double mu, int edges) {
-        FrictionCone.checkMu(mu);
-        FrictionCone.checkEdges(edges);
-        return of(Input.of(model), mu, edges);
+        return of(Input.of(model), mu, edges);   // which checks mu and edges
     }
 
     /**
