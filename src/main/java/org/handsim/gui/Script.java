@@ -254,8 +254,10 @@ public final class Script {
                 return List.of(rest.toLowerCase(Locale.ROOT));
             case SHOW: {
                 String[] p = rest.toLowerCase(Locale.ROOT).split("\\s+");
-                if (p.length != 2 || !Arrays.asList("hand", "object", "contacts", "normals", "cones").contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
-                    throw error(src, n, "show needs hand|object|contacts|normals|cones and on|off, got '" + rest + "'");
+                List<String> parts = new java.util.ArrayList<>();
+                for (SceneView.Part part : SceneView.Part.values()) parts.add(part.name().toLowerCase(Locale.ROOT));
+                if (p.length != 2 || !parts.contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
+                    throw error(src, n, "show needs " + String.join("|", parts) + " and on|off, got '" + rest + "'");
                 }
                 return List.of(p[0], p[1]);
             }
