@@ -269,20 +269,13 @@ public final class SceneView {
      * face-on, with fingers 1 and 2 beside it.
      */
     public void lookAt(RigidTransform worldFromPalm) {
-        double[] c = worldFromPalm.apply(new double[] {0, 0.01, 0.10});
-        double[] eye = worldFromPalm.apply(new double[] {0.42, 0.16, 0.22});
-        // world (x, y, z) -> vworld (x, z, -y)
-        Point3d center = new Point3d(c[0], c[2], -c[1]);
-        Point3d eyeV = new Point3d(eye[0], eye[2], -eye[1]);
-        Transform3D t = new Transform3D();
-        t.lookAt(eyeV, center, new Vector3d(0, 1, 0));
-        t.invert();
         view3d.setFrontClipDistance(0.005);
         view3d.setBackClipDistance(20);
-        orbit.setRotationCenter(center);
-        orbit.setHomeTransform(t);
-        orbit.goHome();
+        place(worldFromPalm.apply(HOME_EYE_IN_PALM), worldFromPalm.apply(HOME_AT_IN_PALM), new double[] {0, 0, 1});
     }
+
+    /** The home view in the palm frame, m: the eye, and the point it looks at. */
+    private static final double[] HOME_EYE_IN_PALM = {0.42, 0.16, 0.22}, HOME_AT_IN_PALM = {0, 0.01, 0.10};
 
     /** Shows a pose: palm, links, contacts and markers. Event dispatch thread only. */
     public void show(Pose p) {
@@ -517,7 +510,7 @@ public final class SceneView {
             case SIDE: dir = wp.axis(1); up = wp.axis(2); break;
             default: {
                 // the home view's direction
-                double[] eye = wp.apply(new double[] {0.42, 0.16, 0.22}), at = wp.apply(new double[] {0, 0.01, 0.10});
+                double[] eye = wp.apply(HOME_EYE_IN_PALM), at = wp.apply(HOME_AT_IN_PALM);
                 dir = new double[] {eye[0] - at[0], eye[1] - at[1], eye[2] - at[2]};
                 up = wp.axis(2);
             }
