@@ -154,19 +154,7 @@ class ContactForcesFrictionTest {
             double mu = 0.1 + 0.9 * rnd.nextDouble();
             double[] p = new double[3 * n], d = new double[3 * n];
             int[] links = new int[n];
-            for (int i = 0; i < n; i++) {
-                links[i] = 2 + rnd.nextInt(2);
-                int fr = 12 * links[i];                   // the link's frame {kj}: x along the link, back to the joint
-                double s = -(0.01 + 0.04 * rnd.nextDouble());
-                double off = 0.008 * (rnd.nextDouble() - 0.5);
-                for (int c = 0; c < 3; c++) {
-                    p[3 * i + c] = frames[fr + 4 * c + 3] + s * frames[fr + 4 * c] + off * frames[fr + 4 * c + 1];
-                    // push roughly along the link's y axis (its closing side), tilted at random
-                    d[3 * i + c] = frames[fr + 4 * c + 1] + 0.6 * rnd.nextGaussian() * (c == 0 ? 1 : 0.5);
-                }
-                double l = Math.sqrt(d[3 * i] * d[3 * i] + d[3 * i + 1] * d[3 * i + 1] + d[3 * i + 2] * d[3 * i + 2]);
-                for (int c = 0; c < 3; c++) d[3 * i + c] /= l;
-            }
+            randomContacts(rnd, frames, n, p, d, links);
             double[] cones = cones(d, n, mu);
             double[] tau = new double[3];
             // torques from random forces in the cones: carriable by construction
@@ -290,7 +278,11 @@ class ContactForcesFrictionTest {
         assertTrue(infeasible > 100, "torques no cone forces carry: " + infeasible);
     }
 
-    /** Contacts on links 2 and 3 near the link's frame, pushing roughly along its closing side. */
+    /**
+     * n contacts on links 2 and 3 of the finger at {@code frames}: on the link's closing side
+     * (link frame {kj}: x along the link, back to the joint), pushing roughly along its y axis,
+     * tilted at random.
+     */
     private static void randomContacts(Random rnd, double[] frames, int n, double[] p, double[] d, int[] links) {
         for (int i = 0; i < n; i++) {
             links[i] = 2 + rnd.nextInt(2);
