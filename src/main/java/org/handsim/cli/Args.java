@@ -1,5 +1,9 @@
 package org.handsim.cli;
 
+import java.nio.file.Path;
+import org.handsim.grasp.FrictionCone;
+import org.handsim.hand.InputRanges;
+import org.handsim.util.InputFile;
 import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 
@@ -21,13 +25,35 @@ final class Args {
         double[] out = new double[n];
         for (int i = 0; i < n; i++) {
             try {
-                out[i] = Double.parseDouble(parts[i].trim());
+                out[i] = Decimal.parse(parts[i]);
             } catch (NumberFormatException e) {
                 throw CliError.usage("handsim: " + option + ": '" + SafeText.quote(parts[i]) + "' is not a number");
             }
             if (!Double.isFinite(out[i])) throw CliError.usage("handsim: " + option + ": '" + SafeText.quote(parts[i]) + "' is not finite");
         }
         return out;
+    }
+
+    /**
+     * Exit 3, {@code handsim: FILE: <why>}, unless {@code file} is a readable regular file
+     * ({@link InputFile#problem}: a FIFO, directory or device is refused before it is opened).
+     */
+    static void inputFile(Path file) {
+        String why = InputFile.problem(file);
+        if (why != null) throw new CliError(CliError.LOAD, "handsim: " + file + ": " + why);
+    }
+
+    /**
+     * {@link #numbers(String, String, int)}, each within {@code range} (exit 2 naming the option
+     * and the value: {@code handsim: --qd: 1e+300 is beyond +-1000 rad/s (...)}).
+     */
+    static double[] numbers(String option, String text, int n, InputRanges.Range range) {
+        double[] v = numbers(option, text, n);
+        for (double x : v) {
+            String p = range.problem(x);
+            if (p != null) throw CliError.usage("handsim: " + option + ": " + p);
+        }
+        return v;
     }
 
     /** Checks {@code --frame}: true for {@code palm}, false for {@code base}. */
@@ -44,10 +70,10 @@ final class Args {
         return k;
     }
 
-    /** Exit 2 naming the value unless {@code --friction} ≥ 0 and 1 ≤ {@code --edges} ≤ 1024 (null: not given). */
+    /** Exit 2 naming the value unless 0 ≤ {@code --friction} ≤ 10 and 1 ≤ {@code --edges} ≤ 1024 (null: not given). */
     static void frictionAndEdges(Double friction, Integer edges) {
-        if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
-            throw CliError.usage("handsim: --friction must be a number >= 0, got " + friction);
+        if (friction != null && FrictionCone.muProblem(friction) != null) {
+            throw CliError.usage("handsim: --friction " + FrictionCone.muProblem(friction));
         }
         if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
     }

@@ -2,7 +2,6 @@ package org.handsim.cli;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.CsvInput;
@@ -33,7 +32,7 @@ final class BulkCsv {
                    String inHeader, String addedHeader, Row row) throws IOException {
         if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
         if (others) throw CliError.usage("handsim: --input/--output cannot be combined with " + othersNames);
-        if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
+        Args.inputFile(input);
         int rows = 0;
         int inColumns = inHeader.split(",").length;
         try (CsvInput in = new CsvInput(input, inHeader); AtomicFile af = new AtomicFile(output)) {

@@ -2,7 +2,6 @@ package org.handsim.cli;
 
 import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -69,6 +68,8 @@ public final class CollideCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         double[] p = Args.numbers("--pose-b", poseB, 6);
+        String range = RigidTransform.poseProblem("translation", java.util.Arrays.copyOfRange(p, 0, 3), "rotation", java.util.Arrays.copyOfRange(p, 3, 6));
+        if (range != null) throw CliError.usage("handsim: --pose-b: " + range);
         int k = integer("--k", kText);
         boolean ok = false;
         for (int s : Kdop.SUPPORTED_K) ok |= s == k;
@@ -99,7 +100,7 @@ public final class CollideCommand implements Callable<Integer> {
     static final int VRML_DIVISIONS = 32;
 
     static TriangleMesh loadMesh(Path file) {
-        if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
+        Args.inputFile(file);
         try {
             return MeshFiles.load(file, VRML_DIVISIONS, 1.0).mesh();
         } catch (ScenarioException e) {

@@ -21,7 +21,9 @@ record EngineChoice(String name, TrialEngine engine, int threads, String url) {
      * @param defaultThreads  the threads when --threads is not given
      */
     static EngineChoice of(String name, String master, Integer threadsOption, int defaultThreads) {
-        if (threadsOption != null && threadsOption < 1) throw CliError.usage("handsim: --threads must be >= 1, got " + threadsOption);
+        if (threadsOption != null && (threadsOption < 1 || threadsOption > org.handsim.sim.Sweep.MAX_THREADS)) {
+            throw CliError.usage("handsim: --threads must be in [1, " + org.handsim.sim.Sweep.MAX_THREADS + "], got " + threadsOption);
+        }
         TrialEngine engine;
         try {
             engine = Engines.find(name);

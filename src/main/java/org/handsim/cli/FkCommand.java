@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
+import org.handsim.hand.InputRanges;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -57,7 +58,7 @@ public final class FkCommand implements Callable<Integer> {
         double[] j;
         if ((joints == null) == (counts == null)) throw CliError.usage("handsim: give exactly one of --joints or --counts");
         if (joints != null) {
-            j = Args.numbers("--joints", joints, 3);
+            j = Args.numbers("--joints", joints, 3, InputRanges.JOINT_ANGLE);
         } else {
             String[] p = counts.split(",", -1);
             if (p.length < 1 || p.length > 2) throw CliError.usage("handsim: --counts needs q or q,qSpread, got '" + SafeText.quote(counts) + "'");

@@ -1,15 +1,14 @@
 package org.handsim.cli;
 
 import java.awt.GraphicsEnvironment;
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.handsim.gui.GuiLauncher;
 import org.handsim.gui.Script;
 import org.handsim.sim.Home;
 import org.handsim.sim.Scenario;
+import org.handsim.util.InputFile;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -63,7 +62,7 @@ public final class GuiCommand implements Callable<Integer> {
                 speedFactor = 0.0;
             } else {
                 try {
-                    speedFactor = Double.parseDouble(speed);
+                    speedFactor = org.handsim.util.Decimal.parse(speed);
                 } catch (NumberFormatException e) {
                     speedFactor = Double.NaN;
                 }
@@ -75,12 +74,7 @@ public final class GuiCommand implements Callable<Integer> {
         }
         Script actions = null;
         if (script != null) {
-            String text;
-            try {
-                text = Files.readString(script);
-            } catch (IOException e) {
-                throw new CliError(CliError.LOAD, "handsim: " + script + ": cannot read: " + e.getMessage());
-            }
+            String text = InputFile.readText(script, Script.MAX_BYTES, "the limit of window scripts");
             try {
                 actions = Script.parse(script.toString(), text);
             } catch (Script.ScriptException e) {
@@ -92,7 +86,10 @@ public final class GuiCommand implements Callable<Integer> {
             throw CliError.usage("handsim gui: no display (DISPLAY is not set or Java runs headless): run it under a virtual display with "
                 + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");
         }
-        if (object != null && !Files.isRegularFile(object)) throw new CliError(CliError.LOAD, "handsim: --object " + object + ": no such file");
+        if (object != null) {
+            String why = InputFile.problem(object);
+            if (why != null) throw new CliError(CliError.LOAD, "handsim: --object " + object + ": " + why);
+        }
         Path scriptDir = script != null ? script.toAbsolutePath().getParent() : null;
         return GuiLauncher.run(new GuiLauncher.Options(scenario, actions, scriptDir, screenshot, measureFps, speedFactor, object), out, err);
     }

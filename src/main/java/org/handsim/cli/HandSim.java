@@ -7,6 +7,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.handsim.util.Decimal;
+import org.handsim.util.InputFile;
 import org.handsim.util.SafeText;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -18,7 +20,8 @@ import picocli.CommandLine.Model.CommandSpec;
  *
  * <p><b>Errors.</b> Every failure is one line on standard error (control and line-breaking
  * characters escaped by {@link SafeText}) and an exit code (README): a {@link CliError} with its
- * own code; a picocli usage error, exit 2; anything unexpected — any exception or error,
+ * own code; an input file that is not a readable regular UTF-8 file
+ * ({@link InputFile.InputFileException}), exit 3; a picocli usage error, exit 2; anything unexpected — any exception or error,
  * {@link OutOfMemoryError} and {@link StackOverflowError} included, on any thread the command
  * waited for — exit 1 with one line naming it and the path of a log file under the system's
  * temporary folder ({@code handsim-logs/}) that holds the stack trace. No command prints a
@@ -97,6 +100,16 @@ public final class HandSim implements Runnable {
         CommandLine cl = new CommandLine(new HandSim());
         for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
         cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
+        // numbers as people write them (util.Decimal.parse): '0d', '1f', 'NaN', '0x1p3' are refused
+        CommandLine.ITypeConverter<Double> number = text -> {
+            try {
+                return Decimal.parse(text);
+            } catch (NumberFormatException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
+        };
+        cl.registerConverter(Double.class, number);
+        cl.registerConverter(Double.TYPE, number);
         cl.setUsageHelpWidth(HELP_WIDTH);
         cl.setUsageHelpAutoWidth(false);
         applySynopsis(cl);
@@ -169,6 +182,17 @@ public final class HandSim implements Runnable {
             err.println(SafeText.line(t.getMessage()));
             err.flush();
             return ((CliError) t).exitCode();
+        }
+        if (t instanceof org.handsim.util.JsonWriter.NonFiniteException) {   // an input beyond what the computation represents
+            err.println(SafeText.line("handsim: " + t.getMessage() + ": an input is beyond the range the computation can represent;"
+                + " nothing was written"));
+            err.flush();
+            return CliError.NUMERIC;
+        }
+        if (t instanceof InputFile.InputFileException) {   // an input that is not a readable regular UTF-8 file: exit 3
+            err.println(SafeText.line("handsim: " + t.getMessage()));
+            err.flush();
+            return CliError.LOAD;
         }
         String what;
         if (t instanceof OutOfMemoryError) {

@@ -11,6 +11,7 @@ import org.handsim.dynamics.ChainDynamics;
 import org.handsim.dynamics.HandDynamics;
 import org.handsim.dynamics.LinkChain;
 import org.handsim.hand.HandDescription;
+import org.handsim.hand.InputRanges;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -74,7 +75,8 @@ public final class IdCommand implements Callable<Integer> {
         if (input != null || output != null) return bulk(hand);
         Args.finger(finger);
         double[][] v = {
-            Args.numbers("--q", q, 3), Args.numbers("--qd", qd, 3), Args.numbers("--qdd", qdd, 3), Args.numbers("--gravity", gravity, 3)};
+            Args.numbers("--q", q, 3, InputRanges.JOINT_ANGLE), Args.numbers("--qd", qd, 3, InputRanges.JOINT_SPEED),
+            Args.numbers("--qdd", qdd, 3, InputRanges.JOINT_ACCELERATION), Args.numbers("--gravity", gravity, 3, InputRanges.GRAVITY)};
         String[] names = {"q%d (value %d of --q)", "qd%d (value %d of --qd)", "qdd%d (value %d of --qdd)"};
         ChainDynamics d = hand.finger(finger);
         String bad = fixedJointViolation(finger, d.chain(), v[0], v[1], v[2], names);
@@ -108,6 +110,9 @@ public final class IdCommand implements Callable<Integer> {
                     qddf[j] = in.number(7 + j);
                     g[j] = in.number(10 + j);
                 }
+                String range = firstProblem(InputRanges.JOINT_ANGLE.problem("q", qf), InputRanges.JOINT_SPEED.problem("qd", qdf),
+                    InputRanges.JOINT_ACCELERATION.problem("qdd", qddf), InputRanges.GRAVITY.problem("g", g));
+                if (range != null) throw in.error(range);
                 LinkChain chain = hand.finger(k).chain();
                 String bad = fixedJointViolation(k, chain, qf, qdf, qddf, names);
                 if (bad != null) throw in.error(bad);
@@ -138,6 +143,12 @@ public final class IdCommand implements Callable<Integer> {
                 }
             }
         }
+        return null;
+    }
+
+    /** The first non-null of the problems, or null. */
+    static String firstProblem(String... problems) {
+        for (String p : problems) if (p != null) return p;
         return null;
     }
 

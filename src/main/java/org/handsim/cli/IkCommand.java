@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.kinematics.IkResult;
 import org.handsim.kinematics.InverseKinematics;
+import org.handsim.hand.InputRanges;
 import org.handsim.util.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -50,7 +51,7 @@ public final class IkCommand implements Callable<Integer> {
         boolean palm = Args.palmFrame(frame);
         if (input != null || output != null) return bulk(palm);
         int k = Args.finger(finger);
-        double[] t = Args.numbers("--target", target, 3);
+        double[] t = Args.numbers("--target", target, 3, InputRanges.POSITION);
         InverseKinematics ik = InverseKinematics.of(k);
         IkResult r = palm ? ik.solveInPalm(t) : ik.solve(t);
         Map<String, Object> out = new LinkedHashMap<>();
@@ -69,6 +70,8 @@ public final class IkCommand implements Callable<Integer> {
             IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
+                String range = InputRanges.POSITION.problem("target", t);
+                if (range != null) throw in.error(range);
                 IkResult r = palm ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
                 double[] j = r.joints();
                 sb.append(',').append(r.reachable()).append(',').append(Args.csv(Decimal.clean(j[0]))).append(',').append(Args.csv(Decimal.clean(j[1])))

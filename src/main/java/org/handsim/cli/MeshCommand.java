@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.mesh.MeshLimits;
 import org.handsim.mesh.MeshWelder;
 import org.handsim.mesh.ObjWriter;
 import org.handsim.mesh.StlWriter;
@@ -87,7 +88,8 @@ public final class MeshCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         if (divisions < 3 || divisions > 100_000) throw CliError.usage("handsim mesh: --divisions must be in 3..100000, got " + divisions);
-        if (!(scale > 0) || !Double.isFinite(scale)) throw CliError.usage("handsim mesh: --scale must be a positive finite number, got " + scale);
+        String scaleWhy = MeshLimits.scaleProblem(scale);
+        if (scaleWhy != null) throw CliError.usage("handsim mesh: --scale " + scaleWhy);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         long t0 = System.nanoTime();

@@ -79,7 +79,10 @@ public final class PlanCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
-        if (trials < 1) throw CliError.usage("handsim: --trials must be >= 1, got " + trials);
+        if (trials < 1 || trials > PlanSpec.MAX_TRIALS) {
+            throw CliError.usage("handsim: --trials must be in [1, " + PlanSpec.MAX_TRIALS + "] (a million trials take one to two hours"
+                + " on two cores), got " + trials);
+        }
         EngineChoice eng = EngineChoice.of(engine, master, threads, Runtime.getRuntime().availableProcessors());
         Args.frictionAndEdges(friction, null);
         Scenario.Units unit = units.equals("auto") ? null : Scenario.Units.of(units);

@@ -1,7 +1,6 @@
 package org.handsim.cli;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -100,7 +99,7 @@ public final class QualityCommand implements Callable<Integer> {
         if (!(r > 0)) throw CliError.usage("handsim: --radius must be > 0, got " + radiusText);
         int repeat = integer("--repeat", repeatText);
         if (repeat < 1 || repeat > 1000) throw CliError.usage("handsim: --repeat must be in 1..1000, got " + repeatText);
-        if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
+        Args.inputFile(file);
         Contacts contacts = read(file);
         spec.commandLine().getOut().println(JsonWriter.write(quality(contacts, mu, m, c, r, repeat)));
         return 0;
@@ -128,8 +127,9 @@ public final class QualityCommand implements Callable<Integer> {
                     p[3 * n + k] = in.number(k);
                     nrm[3 * n + k] = in.number(3 + k);
                 }
-                double len = Math.sqrt(nrm[3 * n] * nrm[3 * n] + nrm[3 * n + 1] * nrm[3 * n + 1] + nrm[3 * n + 2] * nrm[3 * n + 2]);
-                if (!(len > 0) || !Double.isFinite(len)) throw in.error("the normal (" + in.text(3) + ", " + in.text(4) + ", " + in.text(5) + ") must be a finite non-zero vector");
+                // the largest component, not the length: (1e-300, 0, 0) is a direction, its square underflows
+                double len = Math.max(Math.abs(nrm[3 * n]), Math.max(Math.abs(nrm[3 * n + 1]), Math.abs(nrm[3 * n + 2])));
+                if (!(len > 0)) throw in.error("the normal (" + in.text(3) + ", " + in.text(4) + ", " + in.text(5) + ") must be a finite non-zero vector");
                 n++;
             }
         } catch (CsvInput.CsvException e) {

@@ -74,7 +74,11 @@ public final class RunCommand implements Callable<Integer> {
         Scenario scenario = loadScenario(file);
         if (dt != null) {
             if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
-            scenario = scenario.withDt(dt);
+            try {
+                scenario = scenario.withDt(dt);
+            } catch (IllegalArgumentException e) {   // too many steps for the scenario's duration
+                throw CliError.usage("handsim: --dt " + org.handsim.util.Decimal.format(dt) + ": " + e.getMessage());
+            }
         }
         scenario = GraspCommand.withFriction(scenario, friction, edges);
         Double toleranceM = tolerance != null ? parseTolerance(tolerance) : null;

@@ -93,7 +93,8 @@ public final class SweepCommand implements Callable<Integer> {
                 .append(Decimal.format(g.quality().volume())).append(',').append(Decimal.format(g.holdMinN()));
             return sb.toString();
         } catch (RuntimeException e) {   // ScenarioException, SimulationException, a bad object file ...: this row fails, the others go on
-            String why = e instanceof ScenarioException || e instanceof SimulationException ? e.getMessage() : e.toString();
+            // the message alone: a row never shows a Java class name (java.lang.NumberFormatException, Json$JsonException)
+            String why = e.getMessage() != null ? e.getMessage() : "internal error (" + e.getClass().getSimpleName() + ")";
             return label + "," + SafeText.csvCell(scenarioName) + ",failed,,,,,,,,,,,,,,,," + SafeText.csvCell(why) + ",,,,";
         }
     }

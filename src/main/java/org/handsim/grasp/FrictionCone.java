@@ -19,6 +19,13 @@ package org.handsim.grasp;
 public final class FrictionCone {
     /** Default Coulomb coefficient of an object, μ = 0.5 (scenario field {@code object.friction}). */
     public static final double DEFAULT_MU = 0.5;
+    /**
+     * Largest Coulomb coefficient accepted, μ = 10 (a cone 84° from its axis). Measured
+     * coefficients stay below about 2 (rubber on rough surfaces); far beyond, the cone's edges
+     * dwarf its normal part and the grasp wrench space degenerates numerically (at μ = 1e308
+     * the edges overflow and every hull is "degenerate").
+     */
+    public static final double MAX_MU = 10;
     /** Default number of cone edges, m = 8. */
     public static final int DEFAULT_EDGES = 8;
 
@@ -35,9 +42,16 @@ public final class FrictionCone {
         checkMu(mu);
         checkEdges(m);
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-        if (!(len > 0) || !Double.isFinite(len)) {
-            throw new IllegalArgumentException("contact normal must be a finite non-zero vector, got ("
-                + nx + ", " + ny + ", " + nz + ")");
+        if (!(len > 1e-150) || !(len < 1e150)) {
+            // tiny or huge (the squares under- or overflow): scale by the largest component first,
+            // so (1e-300, 0, 0) is the unit x axis, not "zero"
+            double s = Math.max(Math.abs(nx), Math.max(Math.abs(ny), Math.abs(nz)));
+            if (!(s > 0) || !Double.isFinite(s)) {
+                throw new IllegalArgumentException("contact normal must be a finite non-zero vector, got ("
+                    + nx + ", " + ny + ", " + nz + ")");
+            }
+            nx /= s; ny /= s; nz /= s;
+            len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         }
         nx /= len; ny /= len; nz /= len;
         // a = e_x if |n_x| < 0.9 else e_y; t1 = n × a / |n × a|
@@ -56,12 +70,18 @@ public final class FrictionCone {
         }
     }
 
-    /** @throws IllegalArgumentException naming the value unless 0 ≤ μ &lt; ∞ */
+    /** @throws IllegalArgumentException naming the value unless 0 ≤ μ ≤ {@link #MAX_MU} */
     public static double checkMu(double mu) {
-        if (!(mu >= 0) || !Double.isFinite(mu)) {
-            throw new IllegalArgumentException("friction coefficient must be a finite number >= 0, got " + mu);
-        }
+        String why = muProblem(mu);
+        if (why != null) throw new IllegalArgumentException("friction coefficient " + why);
         return mu;
+    }
+
+    /** Why μ is not accepted ("must be in [0, 10] ..., got V"), or null for 0 ≤ μ ≤ {@link #MAX_MU}. */
+    public static String muProblem(double mu) {
+        if (mu >= 0 && mu <= MAX_MU) return null;
+        return "must be in [0, 10] (measured coefficients stay below 2; beyond 10 the friction cone is numerically a half-space), got "
+            + (Double.isNaN(mu) ? "NaN" : org.handsim.util.Decimal.format(mu));
     }
 
     /** @throws IllegalArgumentException naming the value unless 1 ≤ m ≤ 1024 */

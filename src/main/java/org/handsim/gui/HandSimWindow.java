@@ -454,6 +454,8 @@ public final class HandSimWindow {
 
     /** Shows a message in the status bar (red for errors). */
     public void status(String message, boolean isError) {
+        statusSerial++;
+        statusError = isError;
         status.setForeground(isError ? Widgets.ERROR : Color.DARK_GRAY);
         status.setText(message);
         status.setToolTipText(message);
@@ -461,6 +463,8 @@ public final class HandSimWindow {
 
     /** Shows a warning in the status bar (orange). */
     public void warning(String message) {
+        statusSerial++;
+        statusError = false;
         status.setForeground(WARNING);
         status.setText("warning: " + message);
         status.setToolTipText(message);
@@ -468,6 +472,16 @@ public final class HandSimWindow {
 
     /** The status bar text. */
     public String statusText() { return status.getText(); }
+
+    // what the script's 'set' checks after typing a value: did the panel refuse it in the status bar?
+    private int statusSerial;
+    private boolean statusError;
+
+    /** Counts the messages shown in the status bar (event dispatch thread). */
+    int statusSerial() { return statusSerial; }
+
+    /** Whether the last status message was an error (event dispatch thread). */
+    boolean statusIsError() { return statusError; }
 
     /** What the run is doing, as the status bar's right end says: running, paused, finished, reset, ... */
     public String runStateText() { return runState.getText(); }

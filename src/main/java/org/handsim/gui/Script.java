@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.handsim.sim.ClutchState;
+import org.handsim.util.SafeText;
 
 /**
  * The action language of {@code handsim gui --script FILE}: one action per line, run in
@@ -65,6 +66,14 @@ import org.handsim.sim.ClutchState;
  * the file and line ({@link ScriptException}; the command exits with code 2); a failing
  * {@code assert-*} or an action that cannot be done exits with code 1.
  *
+ * <p><b>Limits.</b> A script file is UTF-8 (a leading byte-order mark is dropped) of at most
+ * {@link #MAX_BYTES} bytes. Numbers are decimals ({@code util.Decimal.parse}: {@code 0d},
+ * {@code NaN}, {@code 1e400} are refused): {@code wait} takes whole milliseconds up to
+ * {@link #MAX_WAIT_MS} (one hour), {@code measure-fps} seconds in (0, {@link #MAX_FPS_SECONDS}]
+ * as {@code --measure-fps} does, {@code assert-contacts} a count up to {@link #MAX_CONTACTS}.
+ * Text quoted from the script in a message has its control characters escaped and is shortened
+ * ({@code util.SafeText.quote}), so a message is one short line whatever the script holds.
+ *
  * <h2>Example</h2>
  * <pre>
  * press Objects
@@ -106,6 +115,15 @@ public final class Script {
         + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
         + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
         + "numerical guard. Field and button names: the Javadoc of each panel class.";
+
+    /** Largest script file, bytes (a script is a few hundred lines of short actions). */
+    public static final long MAX_BYTES = 1 << 24;
+    /** Longest {@code wait}, milliseconds: an hour. */
+    public static final long MAX_WAIT_MS = 3_600_000;
+    /** Longest {@code measure-fps}, seconds (as {@code handsim gui --measure-fps}). */
+    public static final double MAX_FPS_SECONDS = 3600;
+    /** Largest {@code assert-contacts} count. */
+    public static final int MAX_CONTACTS = 1_000_000;
 
     /** The keys {@code key} can type (the window's shortcuts without a modifier). */
     public static final List<String> KEYS = List.of("SPACE", "RIGHT", "R", "H", "F", "1", "2", "3");
@@ -175,6 +193,7 @@ public final class Script {
      */
     public static Script parse(String source, String text) throws ScriptException {
         List<Action> out = new ArrayList<>();
+        if (text.startsWith("\uFEFF")) text = text.substring(1);   // a byte-order mark, as CSV inputs allow
         String[] lines = text.split("\r?\n", -1);
         for (int i = 0; i < lines.length; i++) {
             String line = lines[i].trim();
@@ -183,7 +202,7 @@ public final class Script {
             String[] head = line.split("\\s+", 2);
             Verb v = Verb.of(head[0].toLowerCase(Locale.ROOT));
             String rest = head.length > 1 ? head[1].trim() : "";
-            if (v == null) throw error(source, n, "unknown action '" + head[0] + "' (known: " + verbs() + ")");
+            if (v == null) throw error(source, n, "unknown action '" + q(head[0]) + "' (known: " + verbs() + ")");
             out.add(new Action(n, line, v, arguments(source, n, v, rest)));
         }
         for (int i = 0; i < out.size(); i++) {
@@ -220,44 +239,50 @@ public final class Script {
             case SPEED:
                 if (!rest.equalsIgnoreCase("max")) {
                     double f = number(src, n, v, rest);
-                    if (!(f > 0)) throw error(src, n, "speed must be > 0 or 'max', got " + rest);
+                    if (!(f > 0)) throw error(src, n, "speed must be > 0 or 'max', got " + q(rest));
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             case WAIT: {
                 double ms = number(src, n, v, rest);
-                if (ms < 0 || ms != Math.rint(ms)) throw error(src, n, "wait needs whole milliseconds >= 0, got " + rest);
+                if (ms < 0 || ms != Math.rint(ms) || ms > MAX_WAIT_MS) {
+                    throw error(src, n, "wait needs whole milliseconds in [0, " + MAX_WAIT_MS + "] (an hour), got " + q(rest));
+                }
+                return List.of(Long.toString((long) ms));
+            }
+            case MEASURE_FPS: {
+                double s = positive(src, n, v, rest);
+                if (s > MAX_FPS_SECONDS) throw error(src, n, "measure-fps needs seconds in (0, " + (int) MAX_FPS_SECONDS + "], got " + q(rest));
                 return List.of(rest);
             }
-            case MEASURE_FPS:
-                positive(src, n, v, rest);
-                return List.of(rest);
             case ASSERT_TIME:
-                if (number(src, n, v, rest) < 0) throw error(src, n, "assert-time needs a time >= 0, got " + rest);
+                if (number(src, n, v, rest) < 0) throw error(src, n, "assert-time needs a time >= 0, got " + q(rest));
                 return List.of(rest);
             case ASSERT_CONTACTS: {
                 double c = number(src, n, v, rest);
-                if (c < 0 || c != Math.rint(c)) throw error(src, n, "assert-contacts needs a whole number >= 0, got " + rest);
-                return List.of(rest);
+                if (c < 0 || c != Math.rint(c) || c > MAX_CONTACTS) {
+                    throw error(src, n, "assert-contacts needs a whole number in [0, " + MAX_CONTACTS + "], got " + q(rest));
+                }
+                return List.of(Integer.toString((int) c));
             }
             case SAVE_CHARTS: {
                 String low = rest.toLowerCase(Locale.ROOT);
-                if (!low.endsWith(".png") && !low.endsWith(".svg")) throw error(src, n, "save-charts needs a .png or .svg file, got '" + rest + "'");
+                if (!low.endsWith(".png") && !low.endsWith(".svg")) throw error(src, n, "save-charts needs a .png or .svg file, got '" + q(rest) + "'");
                 return List.of(rest);
             }
             case KEY: {
                 String k = rest.toUpperCase(Locale.ROOT);
-                if (!KEYS.contains(k)) throw error(src, n, "key needs one of " + String.join(", ", KEYS) + ", got '" + rest + "'");
+                if (!KEYS.contains(k)) throw error(src, n, "key needs one of " + String.join(", ", KEYS) + ", got '" + q(rest) + "'");
                 return List.of(k);
             }
             case CAMERA:
-                if (SceneView.Camera.of(rest) == null) throw error(src, n, "camera needs home, fit, front, top or side, got '" + rest + "'");
+                if (SceneView.Camera.of(rest) == null) throw error(src, n, "camera needs home, fit, front, top or side, got '" + q(rest) + "'");
                 return List.of(rest.toLowerCase(Locale.ROOT));
             case SHOW: {
                 String[] p = rest.toLowerCase(Locale.ROOT).split("\\s+");
                 List<String> parts = new java.util.ArrayList<>();
                 for (SceneView.Part part : SceneView.Part.values()) parts.add(part.name().toLowerCase(Locale.ROOT));
                 if (p.length != 2 || !parts.contains(p[0]) || !Arrays.asList("on", "off").contains(p[1])) {
-                    throw error(src, n, "show needs " + String.join("|", parts) + " and on|off, got '" + rest + "'");
+                    throw error(src, n, "show needs " + String.join("|", parts) + " and on|off, got '" + q(rest) + "'");
                 }
                 return List.of(p[0], p[1]);
             }
@@ -268,7 +293,7 @@ public final class Script {
                     try {
                         ClutchState.valueOf(s.toUpperCase(Locale.ROOT));
                     } catch (IllegalArgumentException e) {
-                        throw error(src, n, "unknown clutch state '" + s + "' (FREE, BLOCKED, BROKEN, STALLED)");
+                        throw error(src, n, "unknown clutch state '" + q(s) + "' (FREE, BLOCKED, BROKEN, STALLED)");
                     }
                 }
                 return List.of(p[0], p[1].toUpperCase(Locale.ROOT));
@@ -278,13 +303,13 @@ public final class Script {
                 if (p.length != 2 || !p[0].matches("\\d{3,5}") || !p[1].matches("\\d{3,5}")
                     || Integer.parseInt(p[0]) < HandSimWindow.MINIMUM.width || Integer.parseInt(p[1]) < HandSimWindow.MINIMUM.height) {
                     throw error(src, n, "resize needs WIDTH HEIGHT in pixels, at least " + HandSimWindow.MINIMUM.width + " " + HandSimWindow.MINIMUM.height
-                        + ", got '" + rest + "'");
+                        + ", got '" + q(rest) + "'");
                 }
                 return List.of(p[0], p[1]);
             }
             case LOG:
                 if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp or contacts, got '" + rest + "'");
+                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp or contacts, got '" + q(rest) + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:
@@ -294,21 +319,26 @@ public final class Script {
 
     private static double number(String src, int n, Verb v, String text) throws ScriptException {
         try {
-            double d = Double.parseDouble(text);
+            double d = org.handsim.util.Decimal.parse(text);
             if (!Double.isFinite(d)) throw new NumberFormatException();
             return d;
         } catch (NumberFormatException e) {
-            throw error(src, n, v.word + " needs a number, got '" + text + "'");
+            throw error(src, n, v.word + " needs a number, got '" + q(text) + "'");
         }
     }
 
     private static double positive(String src, int n, Verb v, String text) throws ScriptException {
         double d = number(src, n, v, text);
-        if (!(d > 0)) throw error(src, n, v.word + " needs a number > 0, got '" + text + "'");
+        if (!(d > 0)) throw error(src, n, v.word + " needs a number > 0, got '" + q(text) + "'");
         return d;
     }
 
     private static ScriptException error(String src, int line, String message) {
-        return new ScriptException(src + ":" + line + ": " + message);
+        return new ScriptException(SafeText.line(src + ":" + line + ": " + message));
+    }
+
+    /** Script text for a message: control characters escaped, shortened ({@link SafeText#quote}). */
+    static String q(String text) {
+        return SafeText.quote(text);
     }
 }

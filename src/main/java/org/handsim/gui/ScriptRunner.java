@@ -47,7 +47,7 @@ public final class ScriptRunner {
         final int exitCode;
 
         ScriptFailure(String message, int exitCode) {
-            super(message);
+            super(org.handsim.util.SafeText.line(message));   // one line, no raw control bytes
             this.exitCode = exitCode;
         }
 
@@ -93,7 +93,7 @@ public final class ScriptRunner {
             } catch (Exception e) {
                 failure = message(e);
             }
-            String where = script.source() + ":" + a.line() + ": " + a.text() + ": ";
+            String where = script.source() + ":" + a.line() + ": " + org.handsim.util.SafeText.quote(a.text()) + ": ";
             if (expected != null) {
                 if (failure == null) throw new ScriptFailure(where + "expected an error containing '" + expected + "', but the action succeeded", 1);
                 if (!failure.contains(expected)) throw new ScriptFailure(where + "expected an error containing '" + expected + "', got: " + failure, 1);
@@ -333,7 +333,7 @@ public final class ScriptRunner {
     }
 
     private void say(String line) {
-        out.println("gui: " + line);
+        out.println("gui: " + org.handsim.util.SafeText.line(line));
         out.flush();
     }
 
@@ -385,8 +385,13 @@ public final class ScriptRunner {
         if (found instanceof javax.swing.JTextField) {
             javax.swing.JTextField f = (javax.swing.JTextField) found;
             f.requestFocusInWindow();
+            int before = window.statusSerial();
             f.setText(value);
             f.postActionEvent();
+            // the panel refuses a value in the status bar (in red): the action failed then
+            if (window.statusSerial() != before && window.statusIsError()) {
+                throw new ScriptFailure("set " + name + " " + org.handsim.util.SafeText.quote(value) + ": the window refused it: " + window.statusText(), 1);
+            }
         } else if (found instanceof JTextComponent) {
             ((JTextComponent) found).setText(value);
         } else if (found instanceof JComboBox) {
@@ -400,7 +405,7 @@ public final class ScriptRunner {
             box.setSelectedIndex(pick);
         } else if (found instanceof JSlider) {
             try {
-                ((JSlider) found).setValue((int) Math.round(Double.parseDouble(value)));
+                ((JSlider) found).setValue((int) Math.round(org.handsim.util.Decimal.parse(value)));
             } catch (NumberFormatException e) {
                 throw new ScriptFailure("the slider '" + name + "' needs a number, got '" + value + "'", 1);
             }

@@ -20,6 +20,36 @@ public final class RigidTransform {
         0, 1, 0, 0,
         0, 0, 1, 0});
 
+    /**
+     * The range of a pose read from input (scenario {@code position_m} and {@code rotation_rad},
+     * {@code collide --pose-b}): each rotation-vector component within ±{@value #MAX_ROTATION_RAD}
+     * rad (160 turns: beyond, the angle's rounding passes 1e-13 rad and the value is a typo, not
+     * a pose; at 1e300 its square overflows and Rodrigues' formula gives NaN), each position
+     * component within ±{@value #MAX_POSITION_M} m (1000 km: nothing the hand grasps).
+     */
+    public static final double MAX_ROTATION_RAD = 1000, MAX_POSITION_M = 1e6;
+
+    /**
+     * Why a pose read from input is out of range ({@link #MAX_ROTATION_RAD}, {@link #MAX_POSITION_M}),
+     * naming the component as {@code name[i]}, or null.
+     *
+     * @param position 3 numbers (metres) or null; rotation 3 numbers (radians) or null
+     */
+    public static String poseProblem(String positionName, double[] position, String rotationName, double[] rotation) {
+        for (int i = 0; position != null && i < 3; i++) {
+            if (!(Math.abs(position[i]) <= MAX_POSITION_M)) {
+                return positionName + "[" + i + "] must be within +-1e6 m, got " + org.handsim.util.Decimal.format(position[i]);
+            }
+        }
+        for (int i = 0; rotation != null && i < 3; i++) {
+            if (!(Math.abs(rotation[i]) <= MAX_ROTATION_RAD)) {
+                return rotationName + "[" + i + "] must be within +-1000 rad (an axis-angle vector: its length is the angle), got "
+                    + org.handsim.util.Decimal.format(rotation[i]);
+            }
+        }
+        return null;
+    }
+
     private final double[] m;
 
     private RigidTransform(double[] m12) {
@@ -62,6 +92,10 @@ public final class RigidTransform {
     public static RigidTransform fromPose(double tx, double ty, double tz, double rx, double ry, double rz) {
         double[] m = new double[12];
         double angle = Math.sqrt(rx * rx + ry * ry + rz * rz);
+        if (!Double.isFinite(angle) || !Double.isFinite(tx + ty + tz)) {
+            throw new IllegalArgumentException("pose (" + tx + ", " + ty + ", " + tz + "; " + rx + ", " + ry + ", " + rz
+                + ") is not finite: a rotation vector's length must be a finite angle");
+        }
         if (angle < 1e-300) {
             m[0] = m[5] = m[10] = 1;
         } else {

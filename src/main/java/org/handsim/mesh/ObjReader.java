@@ -1,10 +1,10 @@
 package org.handsim.mesh;
 
+import org.handsim.util.InputFile;
 import org.handsim.util.SafeText;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -62,7 +62,8 @@ public final class ObjReader {
      * @throws IOException       if the file cannot be read at all
      */
     public static Result read(Path file, double scale) throws IOException {
-        return read(file.toString(), new String(Files.readAllBytes(file), StandardCharsets.UTF_8), scale);
+        byte[] b = InputFile.readBytes(file, MeshLimits.MAX_FILE_BYTES, MeshLimits.FILE_LIMIT);
+        return read(file.toString(), new String(b, StandardCharsets.UTF_8), scale);
     }
 
     /** Reads OBJ text; {@code name} names it in messages and the mesh. */
@@ -98,7 +99,9 @@ public final class ObjReader {
     /** Checks every line; returns the counts and the normalised copy. */
     private static Checked check(String name, String text) {
         StringBuilder out = new StringBuilder(text.length());
-        int nv = 0, nvt = 0, nvn = 0, faces = 0;
+        int nv = 0, nvt = 0, nvn = 0, faces = 0, groups = 0;
+        long triangles = 0;
+        boolean model = false;   // a known statement seen: the file is an OBJ file, its tokens may be quoted
         String[] lines = text.split("\n", -1);
         for (int i = 0; i < lines.length; i++) {
             int lineNo = i + 1;
@@ -124,6 +127,11 @@ public final class ObjReader {
             String key = kw.toLowerCase(Locale.ROOT);
             int n = spans.size() - 1;
             if (!KNOWN.contains(key)) {
+                if (!model && !FREE_FORM.contains(key)) {
+                    // no OBJ statement yet: this is not an OBJ file, and nothing of it is quoted
+                    throw MeshFileException.at(name, lineNo, spans.get(0)[0] + 1, "not a Wavefront OBJ file: its first statement is none of "
+                        + String.join(", ", KNOWN));
+                }
                 if (FREE_FORM.contains(key)) {
                     throw MeshFileException.at(name, lineNo, spans.get(0)[0] + 1, "'" + kw
                         + "': free-form curves and surfaces are not supported: export the model as triangles or polygons");
@@ -131,6 +139,7 @@ public final class ObjReader {
                 throw MeshFileException.at(name, lineNo, spans.get(0)[0] + 1, "unknown statement '" + SafeText.quote(kw) + "' (known: "
                     + String.join(", ", KNOWN) + ")");
             }
+            model = true;
             switch (key) {
                 case "v":
                     if (n != 3 && n != 4 && n != 6 && n != 7) throw at(name, lineNo, line, spans, n, "a vertex needs x y z (and optionally w, or r g b), found " + n + " numbers");
@@ -190,6 +199,8 @@ public final class ObjReader {
                     }
                     if (face) {
                         faces++;
+                        triangles += n - 2;
+                        if (triangles > MeshLimits.MAX_TRIANGLES) throw MeshFileException.at(name, lineNo, 1, "more than " + MeshLimits.TRIANGLE_LIMIT);
                         out.append(f).append('\n');
                     } else {
                         out.append('\n');
@@ -198,6 +209,9 @@ public final class ObjReader {
                 }
                 case "o":
                 case "g":
+                    if (++groups > MeshLimits.MAX_SHAPES) {
+                        throw MeshFileException.at(name, lineNo, 1, "more than " + MeshLimits.MAX_SHAPES + " groups (the limit of shapes per object file)");
+                    }
                     out.append(n == 0 ? "g" : "g " + line.substring(spans.get(1)[0]).trim()).append('\n');
                     break;
                 case "s":

@@ -1,11 +1,11 @@
 package org.handsim.mesh;
 
+import org.handsim.util.InputFile;
 import org.handsim.util.SafeText;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -52,6 +52,12 @@ public final class StlReader {
     public static final int HEADER_BYTES = 80;
     /** Bytes per binary STL triangle record. */
     public static final int RECORD_BYTES = 50;
+    /**
+     * A binary STL whose size is within this factor of 84 + 50 × its triangle count is an STL
+     * with a wrong count or truncated (the message gives the count); farther off, the four bytes
+     * at 80 are not a count and the file is not an STL (the message quotes nothing of it).
+     */
+    static final long PLAUSIBLE_SIZE_RATIO = 16;
 
     /**
      * What was read.
@@ -71,7 +77,7 @@ public final class StlReader {
      * @throws IOException       if the file cannot be read at all
      */
     public static Result read(Path file, double scale) throws IOException {
-        return read(file.toString(), Files.readAllBytes(file), scale);
+        return read(file.toString(), InputFile.readBytes(file, MeshLimits.MAX_FILE_BYTES, MeshLimits.FILE_LIMIT), scale);
     }
 
     /** Reads STL bytes; {@code name} names them in messages and the mesh. */
@@ -110,11 +116,19 @@ public final class StlReader {
         }
         long count = countAt(d);
         long expected = HEADER_BYTES + 4 + RECORD_BYTES * count;
+        if (expected != d.length && !(expected <= PLAUSIBLE_SIZE_RATIO * d.length && d.length <= PLAUSIBLE_SIZE_RATIO * expected)) {
+            // the four bytes at 80 are no triangle count of this file: it is not an STL, so none of its content is quoted
+            throw MeshFileException.atByte(name, HEADER_BYTES, "not an STL file: not ASCII STL (text starting with 'solid') and its size, "
+                + d.length + " bytes, is far from 84 + 50 × the triangle count a binary STL has at byte 80");
+        }
         if (expected > d.length) {
             long inside = (d.length - HEADER_BYTES - 4) / RECORD_BYTES;
             throw MeshFileException.atByte(name, d.length, String.format(Locale.ROOT,
                 "the file ends inside triangle %d of the %d the header announces at byte 80 (binary STL: 84 + 50 × %d = %d bytes expected, the file has %d): truncated",
                 inside + 1, count, count, expected, d.length));
+        }
+        if (count > MeshLimits.MAX_TRIANGLES) {
+            throw MeshFileException.atByte(name, HEADER_BYTES, count + " triangles, more than " + MeshLimits.TRIANGLE_LIMIT);
         }
         if (expected < d.length) {
             throw MeshFileException.atByte(name, expected, String.format(Locale.ROOT,
@@ -185,6 +199,7 @@ public final class StlReader {
                     expect("endloop");
                     next();
                     expect("endfacet");
+                    if (out.facets >= MeshLimits.MAX_TRIANGLES) throw error("more than " + MeshLimits.TRIANGLE_LIMIT);
                     out.triangle(p);
                     next();
                 }

@@ -94,7 +94,7 @@ public final class TessellationWalk {
 
     private double scale = 1;
     private Grouping grouping = Grouping.WHOLE;
-    private long maxTriangles = 20_000_000L;
+    private long maxTriangles = MeshLimits.MAX_TRIANGLES;
     private String name = "scene";
 
     /** Multiplies every coordinate (e.g. 0.001 for a file in millimetres); must be positive and finite. */

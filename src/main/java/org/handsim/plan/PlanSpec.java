@@ -1,8 +1,6 @@
 package org.handsim.plan;
 
-import java.io.IOException;
 import java.io.Serializable;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -12,6 +10,7 @@ import org.handsim.sim.ObjectPlacer;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
 import org.handsim.sim.SceneGeometry;
+import org.handsim.util.InputFile;
 import org.handsim.util.Json;
 import org.handsim.util.JsonWriter;
 
@@ -40,11 +39,17 @@ public record PlanSpec(String name, String target, String templateJson, String t
     public static final double CLOSE_TO_COUNTS = 17_500, CLOSE_V_MAX = 5_000, CLOSE_A_MAX = 25_000;
     /** Time step of an object-file target's trials, seconds (events are located inside the step; docs/BENCHMARKS.md, Planning). */
     public static final double DEFAULT_DT = 0.05;
+    /**
+     * Most trials of one plan: a million — at the measured 140 to 340 trials/s of a two-core
+     * machine (docs/BENCHMARKS.md, Planning) one to two hours and a plan.csv of about 200 MB;
+     * 2 147 483 647 would take a year.
+     */
+    public static final int MAX_TRIALS = 1_000_000;
     /** Default largest standoff, metres. */
     public static final double DEFAULT_STANDOFF_MAX = 0.01;
 
     public PlanSpec {
-        if (trials < 1) throw new IllegalArgumentException("--trials must be >= 1, got " + trials);
+        if (trials < 1 || trials > MAX_TRIALS) throw new IllegalArgumentException("--trials must be in [1, " + MAX_TRIALS + "], got " + trials);
         if (!(mu >= 0) || !Double.isFinite(mu)) throw new IllegalArgumentException("--friction must be a finite number >= 0, got " + mu);
         if (edges < 1 || edges > 1024) throw new IllegalArgumentException("friction cone edges must be in [1, 1024], got " + edges);
         if (!(standoffMax >= 0) || !Double.isFinite(standoffMax)) throw new IllegalArgumentException("standoff must be >= 0, got " + standoffMax);
@@ -76,7 +81,8 @@ public record PlanSpec(String name, String target, String templateJson, String t
      */
     public static PlanSpec forTarget(Path target, int trials, long seed, Double mu, int edges, Scenario.Units units) {
         Path abs = target.toAbsolutePath().normalize();
-        if (!Files.isRegularFile(abs)) throw new ScenarioException(target + ": no such file");
+        String why = InputFile.problem(abs);
+        if (why != null) throw new ScenarioException(target + ": " + why);
         Map<String, Object> t;
         String name;
         boolean json = abs.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json");
@@ -137,11 +143,9 @@ public record PlanSpec(String name, String target, String templateJson, String t
     @SuppressWarnings("unchecked")
     private static Map<String, Object> parse(Path file) {
         try {
-            Object v = Json.parse(file.toString(), Files.readString(file));
+            Object v = Json.parse(file.toString(), Scenario.readText(file));
             if (!(v instanceof Map)) throw new ScenarioException(file + ":1:1: a scenario must be a JSON object");
             return (Map<String, Object>) v;
-        } catch (IOException e) {
-            throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
         } catch (Json.JsonException e) {
             throw new ScenarioException(e.getMessage(), e);
         }

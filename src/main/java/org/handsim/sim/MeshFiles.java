@@ -1,11 +1,12 @@
 package org.handsim.sim;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import org.handsim.mesh.MeshFileException;
+import org.handsim.mesh.MeshLimits;
+import org.handsim.util.InputFile;
 import org.handsim.mesh.ObjReader;
 import org.handsim.mesh.StlReader;
 import org.handsim.mesh.TessellationWalk;
@@ -74,7 +75,17 @@ public final class MeshFiles {
      * @throws ScenarioException {@code FILE:LINE:COL: message} or {@code FILE: byte N: message}
      */
     public static Loaded load(Path file, int divisions, double scale) {
-        if (!Files.isRegularFile(file)) throw new ScenarioException(file + ":1:1: cannot read the file: no such file");   // the VRML loader's words
+        String why = InputFile.problem(file);   // a FIFO or device is refused before it is opened
+        if (why != null) throw new ScenarioException(file + ":1:1: cannot read the file: " + why);   // the VRML loader's words
+        String scaleWhy = MeshLimits.scaleProblem(scale);
+        if (scaleWhy != null) throw new IllegalArgumentException("scale " + scaleWhy);
+        Loaded loaded = loadChecked(file, divisions, scale);
+        String far = MeshLimits.coordinateProblem(loaded.mesh());
+        if (far != null) throw new ScenarioException(file + ":1:1: " + far);
+        return loaded;
+    }
+
+    private static Loaded loadChecked(Path file, int divisions, double scale) {
         String label = file.getFileName().toString();
         Format f = Format.of(file);
         try {
@@ -102,6 +113,8 @@ public final class MeshFiles {
             throw new ScenarioException(e.getMessage(), e);
         } catch (IOException e) {
             throw new ScenarioException(file + ":1:1: cannot read the file: " + e.getMessage(), e);
+        } catch (InputFile.InputFileException e) {   // too large, or changed since the check
+            throw new ScenarioException(e.getMessage(), e);
         }
     }
 }

@@ -1,12 +1,11 @@
 package org.handsim.sim;
 
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
+import org.handsim.hand.InputRanges;
 import org.handsim.math.RigidTransform;
 import org.handsim.sim.trajectory.CartesianLine;
 import org.handsim.sim.trajectory.Hold;
@@ -14,6 +13,8 @@ import org.handsim.sim.trajectory.Quintic;
 import org.handsim.sim.trajectory.Sequence;
 import org.handsim.sim.trajectory.Trajectory;
 import org.handsim.sim.trajectory.Trapezoid;
+import org.handsim.mesh.MeshLimits;
+import org.handsim.util.InputFile;
 import org.handsim.util.Json;
 import org.handsim.util.JsonObject;
 
@@ -185,21 +186,26 @@ public final class Scenario implements Cloneable {
         if (r.has("hand")) {
             JsonObject h = r.object("hand");
             h.allowOnly("position_m", "rotation_rad");
-            worldFromPalm = pose(h);
-            handPose = new double[6];
-            System.arraycopy(h.has("position_m") ? h.numbers("position_m", 3) : new double[3], 0, handPose, 0, 3);
-            System.arraycopy(h.has("rotation_rad") ? h.numbers("rotation_rad", 3) : new double[3], 0, handPose, 3, 3);
+            handPose = pose(h);
+            worldFromPalm = RigidTransform.fromPose(handPose[0], handPose[1], handPose[2], handPose[3], handPose[4], handPose[5]);
         } else {
             worldFromPalm = RigidTransform.IDENTITY;
         }
         gravity = r.has("gravity_m_s2") ? r.numbers("gravity_m_s2", 3) : new double[] {0, 0, -9.81};
+        for (int i = 0; i < 3; i++) {
+            String why = InputRanges.GRAVITY.problem(gravity[i]);
+            if (why != null) throw r.error("gravity_m_s2[" + i + "]", why);
+        }
         if (r.has("object")) {
             JsonObject o = r.object("object");
             o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions", "units", "friction");
             Path dir = file.toAbsolutePath().getParent();
             Path f = dir.resolve(o.string("file")).normalize();
-            if (!Files.isRegularFile(f)) throw o.error("file", "no such file: " + f);
-            double scale = o.has("scale") ? o.positive("scale") : 1.0;
+            String why = InputFile.problem(f);
+            if (why != null) throw o.error("file", why + ": " + f);
+            double scale = o.has("scale") ? o.number("scale") : 1.0;
+            String scaleWhy = MeshLimits.scaleProblem(scale);
+            if (scaleWhy != null) throw o.error("scale", scaleWhy);
             int div = o.has("divisions") ? o.integer("divisions") : DEFAULT_DIVISIONS;
             if (div < 3 || div > 1024) throw o.error("divisions", "must be in [3, 1024], got " + div);
             Units units = Units.M;
@@ -207,9 +213,9 @@ public final class Scenario implements Cloneable {
                 units = Units.of(o.string("units"));
                 if (units == null) throw o.error("units", "must be mm, cm or m, got \"" + o.string("units") + "\"");
             }
-            object = ObjectPlacement.of(f, o.has("position_m") ? o.numbers("position_m", 3) : new double[3],
-                o.has("rotation_rad") ? o.numbers("rotation_rad", 3) : new double[3], scale, div, units)
-                .withFriction(o.has("friction") ? o.nonNegative("friction") : FrictionCone.DEFAULT_MU);
+            double[] op = pose(o);
+            object = ObjectPlacement.of(f, java.util.Arrays.copyOfRange(op, 0, 3), java.util.Arrays.copyOfRange(op, 3, 6), scale, div, units)
+                .withFriction(o.has("friction") ? friction(o) : FrictionCone.DEFAULT_MU);
         } else {
             object = null;
         }
@@ -233,7 +239,12 @@ public final class Scenario implements Cloneable {
             longest = Math.max(longest, motors[m].duration());
         }
         duration = r.has("duration_s") ? r.positive("duration_s") : longest;
-        if (duration / dt > 5e8) throw r.error("duration_s", "needs " + (long) (duration / dt) + " steps at dt_s = " + dt + ": too many");
+        String steps = stepsProblem(duration, dt);
+        if (steps != null) {
+            // blame the field that is out of the ordinary: a duration too long even at 1 ms, else the step
+            boolean longRun = r.has("duration_s") && stepsProblem(duration, Math.max(dt, 0.001)) != null;
+            throw r.error(longRun ? "duration_s" : "dt_s", steps);
+        }
         if (r.has("outputs")) {
             JsonObject out = r.object("outputs");
             out.allowOnly("trace", "charts", "torques");
@@ -245,10 +256,24 @@ public final class Scenario implements Cloneable {
         }
     }
 
-    private static RigidTransform pose(JsonObject o) {
+    /** {@code object.friction}, within {@link FrictionCone#muProblem}'s range. */
+    private static double friction(JsonObject o) {
+        double mu = o.number("friction");
+        String why = FrictionCone.muProblem(mu);
+        if (why != null) throw o.error("friction", why);
+        return mu;
+    }
+
+    /** {@code position_m} then {@code rotation_rad} (default 0), each within {@link RigidTransform#poseProblem}'s range. */
+    private static double[] pose(JsonObject o) {
         double[] p = o.has("position_m") ? o.numbers("position_m", 3) : new double[3];
         double[] r = o.has("rotation_rad") ? o.numbers("rotation_rad", 3) : new double[3];
-        return RigidTransform.fromPose(p[0], p[1], p[2], r[0], r[1], r[2]);
+        String why = RigidTransform.poseProblem("position_m", p, "rotation_rad", r);
+        if (why != null) {
+            String field = why.substring(0, why.indexOf('['));
+            throw o.error(field + why.substring(field.length(), why.indexOf(']') + 1), why.substring(why.indexOf(']') + 2));
+        }
+        return new double[] {p[0], p[1], p[2], r[0], r[1], r[2]};
     }
 
     private static double counts(JsonObject o, String field, double max) {
@@ -298,15 +323,27 @@ public final class Scenario implements Cloneable {
         return parts.size() == 1 ? parts.get(0) : new Sequence(parts);
     }
 
+    /** Largest scenario or sweep file, bytes (ours are a few kilobytes; a sweep of 10 000 runs about 2 MB). */
+    public static final long MAX_FILE_BYTES = 16 << 20;
+
+    /**
+     * The text of a scenario or sweep file ({@link InputFile#readText}: a regular file of at most
+     * {@link #MAX_FILE_BYTES}, UTF-8 with an optional byte-order mark).
+     *
+     * @throws ScenarioException naming the file: missing, not a regular file (a FIFO is refused
+     *                           before it is opened), too large, not UTF-8 (line and byte)
+     */
+    public static String readText(Path file) {
+        try {
+            return InputFile.readText(file, MAX_FILE_BYTES, "the limit of scenario and sweep files");
+        } catch (InputFile.InputFileException e) {
+            throw new ScenarioException(e.getMessage(), e);
+        }
+    }
+
     /** Loads a scenario file (the hand is the BarrettHand). */
     public static Scenario load(Path file) {
-        String text;
-        try {
-            text = Files.readString(file);
-        } catch (IOException e) {
-            throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
-        }
-        return parse(file, text);
+        return parse(file, readText(file));
     }
 
     /** Parses scenario text; {@code file} names it and anchors relative paths. */
@@ -424,9 +461,35 @@ public final class Scenario implements Cloneable {
         }
     }
 
-    /** A copy with another time step (seconds, in (0, 0.1]). */
+    /**
+     * Most steps one run may take: ten million — at the 7 000 to 44 000 steps/s of a run, 4 to
+     * 25 minutes, and with the trace (about 200 bytes a step) 2 GB of {@code trace.csv}. The
+     * paper's experiment takes 8 947; a finer study of the time step is the tradeoff chart's.
+     */
+    public static final long MAX_STEPS = 10_000_000;
+
+    /**
+     * Why a run of {@code duration} seconds at {@code dt} would take too many steps
+     * ({@link #MAX_STEPS}), the count written as people read it ({@code 8.9 billion steps}), or
+     * null when it would not.
+     */
+    public static String stepsProblem(double duration, double dt) {
+        double steps = Math.ceil(duration / dt - 1e-9);
+        if (steps <= MAX_STEPS) return null;
+        return "needs " + org.handsim.util.Decimal.count(steps) + " steps (" + org.handsim.util.Decimal.format(duration) + " s at "
+            + org.handsim.util.Decimal.format(dt) + " s a step), more than the limit of " + org.handsim.util.Decimal.count(MAX_STEPS)
+            + " (about 25 minutes and 2 GB of trace)";
+    }
+
+    /**
+     * A copy with another time step (seconds, in (0, 0.1]).
+     *
+     * @throws IllegalArgumentException out of range, or too many steps ({@link #stepsProblem})
+     */
     public Scenario withDt(double newDt) {
         if (!(newDt > 0) || newDt > 0.1) throw new IllegalArgumentException("dt must be in (0, 0.1] s, got " + newDt);
+        String steps = stepsProblem(duration, newDt);
+        if (steps != null) throw new IllegalArgumentException(steps);
         Scenario c = copy();
         c.dt = newDt;
         return c;
@@ -435,6 +498,8 @@ public final class Scenario implements Cloneable {
     /** A copy with another duration (seconds). */
     public Scenario withDuration(double seconds) {
         if (!(seconds > 0)) throw new IllegalArgumentException("duration must be > 0, got " + seconds);
+        String steps = stepsProblem(seconds, dt);
+        if (steps != null) throw new IllegalArgumentException(steps);
         Scenario c = copy();
         c.duration = seconds;
         return c;

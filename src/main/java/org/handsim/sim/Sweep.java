@@ -1,12 +1,11 @@
 package org.handsim.sim;
 
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.handsim.util.InputFile;
 import org.handsim.util.Json;
 import org.handsim.util.JsonObject;
 import org.handsim.util.JsonWriter;
@@ -32,6 +31,9 @@ public final class Sweep {
     /** One run: a label and the scenario it runs (built lazily so that a bad run fails alone). */
     public record Run(String label, java.util.function.Supplier<Scenario> scenario) {}
 
+    /** Most worker threads a sweep may ask for (as {@code --threads}): far beyond any machine's cores. */
+    public static final int MAX_THREADS = 1024;
+
     private final String name;
     private final List<Run> runs = new ArrayList<>();
     private final int threads;
@@ -41,15 +43,20 @@ public final class Sweep {
         name = r.string("name");
         if (!name.matches("[A-Za-z0-9._-]+")) throw r.error("name", "must be letters, digits, '.', '_' or '-', got \"" + name + "\"");
         threads = r.has("threads") ? r.integer("threads") : 0;
+        if (threads < 0 || threads > MAX_THREADS) {
+            throw r.error("threads", "must be in [0, " + MAX_THREADS + "] (0: all cores), got " + threads);
+        }
         Path dir = file.toAbsolutePath().getParent();
         if (r.has("runs")) {
             if (!r.has("base")) throw r.error("base", "missing (the runs override fields of a base scenario)");
             Path base = dir.resolve(r.string("base")).normalize();
+            String why = InputFile.problem(base);
+            if (why != null) throw r.error("base", why + ": " + base);
             String baseText;
             try {
-                baseText = Files.readString(base);
-            } catch (IOException e) {
-                throw r.error("base", "cannot read " + base + ": " + e.getMessage());
+                baseText = Scenario.readText(base);
+            } catch (ScenarioException e) {
+                throw r.error("base", e.getMessage());
             }
             int n = r.list("runs").size();
             for (int i = 0; i < n; i++) {
@@ -69,6 +76,8 @@ public final class Sweep {
                 Object v = r.list("scenarios").get(i);
                 if (!(v instanceof String)) throw r.error("scenarios[" + i + "]", "must be a file name");
                 Path f = dir.resolve((String) v).normalize();
+                String why = InputFile.problem(f);
+                if (why != null && !why.equals("no such file")) throw r.error("scenarios[" + i + "]", why + ": " + f);   // a missing one fails its row alone
                 runs.add(new Run(f.getFileName().toString().replaceFirst("\\.json$", ""), () -> Scenario.load(f)));
             }
         }
@@ -78,7 +87,12 @@ public final class Sweep {
     /** Applies dotted-path overrides to scenario JSON text and returns the new text. */
     @SuppressWarnings("unchecked")
     static String applyOverrides(Path file, String text, Map<String, Object> overrides) {
-        Object root = Json.parse(file.toString(), text);
+        Object root;
+        try {
+            root = Json.parse(file.toString(), text);
+        } catch (Json.JsonException e) {
+            throw new ScenarioException(e.getMessage(), e);
+        }
         for (Map.Entry<String, Object> e : overrides.entrySet()) {
             String[] parts = e.getKey().split("\\.");
             Object node = root;
@@ -88,7 +102,11 @@ public final class Sweep {
                 int b = part.indexOf('[');
                 if (b >= 0) {
                     if (!part.endsWith("]")) throw new ScenarioException(file + ": override \"" + e.getKey() + "\": bad index in '" + part + "'");
-                    idx = Integer.parseInt(part.substring(b + 1, part.length() - 1));
+                    try {
+                        idx = Integer.parseInt(part.substring(b + 1, part.length() - 1));
+                    } catch (NumberFormatException x) {
+                        throw new ScenarioException(file + ": override \"" + e.getKey() + "\": bad index in '" + part + "'");
+                    }
                     part = part.substring(0, b);
                 }
                 if (!(node instanceof Map)) throw new ScenarioException(file + ": override \"" + e.getKey() + "\": '" + part + "' is not inside an object");
@@ -113,9 +131,7 @@ public final class Sweep {
     /** Loads a sweep file. */
     public static Sweep load(Path file) {
         try {
-            return new Sweep(file, JsonObject.parse(file.toString(), Files.readString(file)));
-        } catch (IOException e) {
-            throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
+            return new Sweep(file, JsonObject.parse(file.toString(), Scenario.readText(file)));
         } catch (Json.JsonException e) {
             throw new ScenarioException(e.getMessage(), e);
         }

@@ -1,9 +1,6 @@
 package org.handsim.util;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
@@ -11,11 +8,17 @@ import java.util.List;
 /**
  * Reads a plain comma-separated file (no quoting: our bulk inputs are numbers) with a required
  * exact header. Each row comes with its 1-based line number so errors can name it; blank
- * lines are skipped. Use as {@code while (in.next()) { in.number(2) ... }}.
+ * lines are skipped. Use as {@code while (in.next()) { in.number(2) ... }}. The file is read
+ * through {@link InputFile.Lines}: a FIFO, directory or device is refused before it is opened,
+ * a leading byte-order mark is dropped, and a byte that is not UTF-8 or a line longer than
+ * {@link #MAX_LINE_BYTES} is an {@link InputFile.InputFileException} naming the line.
  */
 public final class CsvInput implements AutoCloseable {
+    /** Longest line accepted: a row of our inputs is a few hundred bytes. */
+    public static final int MAX_LINE_BYTES = 1 << 16;
+
     private final Path file;
-    private final BufferedReader reader;
+    private final InputFile.Lines reader;
     private final List<String> header;
     private String[] row;
     private int line;
@@ -25,14 +28,14 @@ public final class CsvInput implements AutoCloseable {
      * separated by commas, spaces around them ignored).
      *
      * @throws CsvException naming the file and line
+     * @throws InputFile.InputFileException if the file is not a readable regular file or not UTF-8
      */
     public CsvInput(Path file, String expectedHeader) throws IOException {
         this.file = file;
-        this.reader = Files.newBufferedReader(file, StandardCharsets.UTF_8);
-        String first = reader.readLine();
+        this.reader = new InputFile.Lines(file, MAX_LINE_BYTES);
+        String first = reader.next();
         line = 1;
         if (first == null) throw error("empty file, expected the header " + expectedHeader);
-        if (first.startsWith("\uFEFF")) first = first.substring(1);
         this.header = Arrays.asList(split(first));
         List<String> want = Arrays.asList(split(expectedHeader));
         if (!header.equals(want)) throw error("header must be exactly '" + expectedHeader + "', got '" + SafeText.quote(first.trim()) + "'");
@@ -48,7 +51,7 @@ public final class CsvInput implements AutoCloseable {
     public boolean next() throws IOException {
         String s;
         do {
-            s = reader.readLine();
+            s = reader.next();
             line++;
             if (s == null) return false;
         } while (s.isBlank());
@@ -68,7 +71,7 @@ public final class CsvInput implements AutoCloseable {
     /** Column i of the current row as a finite number. */
     public double number(int i) {
         try {
-            double d = Double.parseDouble(row[i]);
+            double d = Decimal.parse(row[i]);
             if (!Double.isFinite(d)) throw error("column " + header.get(i) + " = " + SafeText.quote(row[i]) + " is not finite");
             return d;
         } catch (NumberFormatException e) {

@@ -44,6 +44,47 @@ public final class Decimal {
         return sb.toString();
     }
 
+    /** What {@link #parse} reads: an optional sign, digits with an optional point, an optional exponent. */
+    private static final java.util.regex.Pattern NUMBER = java.util.regex.Pattern.compile("[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
+
+    /**
+     * The one reader of numbers typed by people (options, CSV cells, script arguments): a
+     * decimal such as {@code 12}, {@code -0.5}, {@code .5}, {@code 1e-3}, {@code 2.5E+2}, spaces
+     * around it ignored. Unlike {@link Double#parseDouble} it refuses Java's other spellings —
+     * {@code 0d}, {@code 1f}, {@code 0x1p3}, {@code NaN}, {@code Infinity} — which are not
+     * numbers to anyone but a Java compiler. A decimal beyond the double range reads as an
+     * infinity (callers refuse it as not finite, naming the value).
+     *
+     * @throws NumberFormatException for anything else, its message quoting the text
+     */
+    public static double parse(String text) {
+        String t = text == null ? "" : text.trim();
+        if (!NUMBER.matcher(t).matches()) throw new NumberFormatException("'" + SafeText.quote(t) + "' is not a number");
+        return Double.parseDouble(t);
+    }
+
+    /**
+     * A large count as a person reads it in a message: below a million its digits ({@code 8947}),
+     * then two significant decimals and a word ({@code 8.9 million}, {@code 8.95 billion},
+     * {@code 12 trillion}), and beyond 10^15 the exponent form ({@code 1e+303}). Never
+     * {@code 9223372036854775807}: a count too large for a long is given as the double it is.
+     */
+    public static String count(double n) {
+        if (!(Math.abs(n) < 1e6)) {
+            String[] words = {"million", "billion", "trillion"};
+            for (int i = 0; i < words.length; i++) {
+                double unit = Math.pow(1000, i + 2);
+                if (Math.abs(n) < unit * 1000) {
+                    double v = new java.math.BigDecimal(n / unit).round(new java.math.MathContext(3)).doubleValue();
+                    if (v >= 1000 && i + 1 < words.length) continue;
+                    return format(v) + " " + words[i];
+                }
+            }
+            return format(new java.math.BigDecimal(n).round(new java.math.MathContext(3)).doubleValue());
+        }
+        return format(Math.rint(n));
+    }
+
     /** The text of a long (plain digits). */
     public static String format(long n) {
         return Long.toString(n);

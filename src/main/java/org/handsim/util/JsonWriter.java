@@ -13,6 +13,36 @@ import java.util.Map;
 public final class JsonWriter {
     private JsonWriter() {}
 
+    /**
+     * A number that is NaN or infinite where a result was to be written, with the path of its
+     * field ({@code fingertip[0]}, {@code fingers[2].max_contact_force_N}): the command stops
+     * before writing anything (exit 4, a numerical failure) instead of writing a broken file.
+     */
+    public static final class NonFiniteException extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+        private final String path;
+        private final double value;
+
+        NonFiniteException(String path, double value) {
+            super("the result " + (path.isEmpty() ? "" : path + " ") + "is " + value + ", not a finite number");
+            this.path = path;
+            this.value = value;
+        }
+
+        /** The field's path from the root ("" for a bare number). */
+        public String path() { return path; }
+
+        public double value() { return value; }
+
+        /** The same, one level further out: {@code key} (an object's field) or {@code [i]} (an element). */
+        NonFiniteException within(String step) {
+            String p = path.isEmpty() ? step : path.startsWith("[") ? step + path : step + "." + path;
+            NonFiniteException e = new NonFiniteException(p, value);
+            e.setStackTrace(getStackTrace());
+            return e;
+        }
+    }
+
     /** Compact JSON text of a value built from Map, List, arrays, numbers, strings, booleans, null. */
     public static String write(Object v) {
         StringBuilder sb = new StringBuilder();
@@ -49,7 +79,11 @@ public final class JsonWriter {
             sb.append('[');
             for (int i = 0; i < a.length; i++) {
                 if (i > 0) sb.append(',');
-                number(sb, a[i]);
+                try {
+                    number(sb, a[i]);
+                } catch (NonFiniteException e) {
+                    throw e.within("[" + i + "]");
+                }
             }
             sb.append(']');
         } else if (v instanceof int[]) {
@@ -65,7 +99,11 @@ public final class JsonWriter {
             sb.append('[');
             for (int i = 0; i < a.length; i++) {
                 if (i > 0) sb.append(',');
-                append(sb, a[i], -1, 0);
+                try {
+                    append(sb, a[i], -1, 0);
+                } catch (NonFiniteException e) {
+                    throw e.within("[" + i + "]");
+                }
             }
             sb.append(']');
         } else if (v instanceof Map) {
@@ -77,7 +115,11 @@ public final class JsonWriter {
                 newline(sb, indent, level + 1);
                 quote(sb, String.valueOf(e.getKey()));
                 sb.append(indent < 0 ? ":" : ": ");
-                append(sb, e.getValue(), indent, level + 1);
+                try {
+                    append(sb, e.getValue(), indent, level + 1);
+                } catch (NonFiniteException x) {
+                    throw x.within(String.valueOf(e.getKey()));
+                }
                 if (it.hasNext()) sb.append(',');
             }
             if (any) newline(sb, indent, level);
@@ -89,7 +131,11 @@ public final class JsonWriter {
             for (int i = 0; i < l.size(); i++) {
                 if (i > 0) sb.append(',');
                 if (!scalars) newline(sb, indent, level + 1);
-                append(sb, l.get(i), indent, level + 1);
+                try {
+                    append(sb, l.get(i), indent, level + 1);
+                } catch (NonFiniteException e) {
+                    throw e.within("[" + i + "]");
+                }
             }
             if (!scalars && !l.isEmpty()) newline(sb, indent, level);
             sb.append(']');
@@ -99,7 +145,7 @@ public final class JsonWriter {
     }
 
     private static void number(StringBuilder sb, double d) {
-        if (!Double.isFinite(d)) throw new IllegalArgumentException("refusing to write a non-finite number (" + d + ") as JSON");
+        if (!Double.isFinite(d)) throw new NonFiniteException("", d);
         Decimal.append(sb, d);
     }
 

@@ -3,7 +3,6 @@ package org.handsim.vrml;
 import java.io.IOException;
 import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -53,6 +52,8 @@ final class LoadSession {
     private final ArrayDeque<Path> parsing = new ArrayDeque<>();
     final List<String> files = new ArrayList<>();
     long ifsTriangles;
+    /** Nodes parsed, Shape nodes parsed and triangles described so far in this load (mesh.MeshLimits). */
+    long nodes, shapes, triangles;
 
     /** A parsed file. */
     record ParsedFile(VrmlText text, List<VrmlNode> roots, Map<String, VrmlNode> defs, List<ProtoDecl> protos) {}
@@ -169,7 +170,8 @@ final class LoadSession {
         if (!real.startsWith(sandbox)) {
             return "\"" + url + "\" refused: it resolves (through a symbolic link) outside the allowed folder " + sandbox;
         }
-        if (!Files.isRegularFile(real)) return "\"" + url + "\" is not a regular file";
+        String why = org.handsim.util.InputFile.problem(real);
+        if (why != null) return "\"" + url + "\" " + why;
         String display;
         try {
             display = from.path != null ? Path.of(from.name).resolveSibling(u).normalize().toString() : candidate.toString();

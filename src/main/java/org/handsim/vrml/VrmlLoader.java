@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import org.handsim.util.InputFile;
 import org.jogamp.java3d.BranchGroup;
 import org.jogamp.java3d.loaders.LoaderBase;
 
@@ -127,7 +128,8 @@ public final class VrmlLoader extends LoaderBase {
         LoadSession s = session();
         try {
             Path real = file.toRealPath();
-            if (!Files.isRegularFile(real)) throw new VrmlParseException(name, 1, 1, "not a regular file");
+            String why = InputFile.problem(real);
+            if (why != null) throw new VrmlParseException(name, 1, 1, "cannot read the file: " + why);
             if (s.sandbox == null) s.sandbox = real.getParent();
             VrmlText t = VrmlText.read(name, real);
             return finish(s, s.parse(t));

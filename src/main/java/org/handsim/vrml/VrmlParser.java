@@ -1,5 +1,6 @@
 package org.handsim.vrml;
 
+import org.handsim.mesh.MeshLimits;
 import org.handsim.util.SafeText;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -137,6 +138,9 @@ final class VrmlParser {
             throw lx.error("expected a node, found " + lx.describe());
         }
         String word = lx.identifier("a node");
+        if (++session.nodes > MeshLimits.MAX_NODES) {
+            throw text.error(start, "more than " + MeshLimits.MAX_NODES + " nodes (the limit of nodes per object file)");
+        }
         if (word.equals("USE")) {
             int at = lx.skip() >= 0 ? lx.pos : start;
             String name = lx.identifier("a DEF name after USE");
@@ -180,6 +184,7 @@ final class VrmlParser {
             if (opened) scope.open.remove(defName);
         }
         depth--;
+        if (!scope.inBody) countGeometry(n, start);
         VrmlNode result = n;
         if (type.proto != null && !scope.inBody) {
             result = expander.instantiate(n, depth + baseDepth);
@@ -190,6 +195,31 @@ final class VrmlParser {
             if (result == null) session.warn(text, defAt, "DEF '" + defName + "' names an instance of an unresolved EXTERNPROTO; USE of it is empty");
         }
         return result;
+    }
+
+    /**
+     * Counts a parsed Shape and the triangles of a geometry node against {@link MeshLimits} as
+     * the file is read (PROTO bodies are counted when instantiated, by the expansion's own limit):
+     * IndexedFaceSet polygons as written, primitives as {@link Primitives} tessellates them.
+     */
+    private void countGeometry(VrmlNode n, int at) {
+        long t;
+        int d = session.divisions;
+        switch (n.type.name) {
+            case "Shape":
+                if (++session.shapes > MeshLimits.MAX_SHAPES) {
+                    throw text.error(at, "more than " + MeshLimits.MAX_SHAPES + " Shape nodes (the limit of shapes per object file)");
+                }
+                return;
+            case "Box": t = 12; break;
+            case "Sphere": t = 2L * d * Math.max(1, Math.max(2, d / 2) - 1); break;
+            case "Cylinder": t = 4L * d; break;
+            case "Cone": t = 2L * d; break;
+            case "IndexedFaceSet": t = n.values[n.type.indexOf("coordIndex")] instanceof int[] ? countPolygonTriangles((int[]) n.values[n.type.indexOf("coordIndex")]) : 0; break;
+            default: return;
+        }
+        session.triangles += t;
+        if (session.triangles > MeshLimits.MAX_TRIANGLES) throw text.error(at, "more than " + MeshLimits.TRIANGLE_LIMIT);
     }
 
     private static boolean isKeyword(String w) {

@@ -3,10 +3,11 @@ package org.handsim.vrml;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.zip.GZIPInputStream;
+import org.handsim.mesh.MeshLimits;
+import org.handsim.util.InputFile;
 
 /**
  * The bytes of one VRML file, with its name for messages, and the mapping from byte offsets to
@@ -26,8 +27,8 @@ import java.util.zip.GZIPInputStream;
 final class VrmlText {
     /** The header every VRML97 file starts with (ISO/IEC 14772-1, 4.2.2). */
     static final String HEADER = "#VRML V2.0 utf8";
-    /** Largest decompressed/total size accepted (bytes). */
-    static final long MAX_BYTES = 1L << 30;
+    /** Largest decompressed/total size accepted (bytes): {@link MeshLimits#MAX_FILE_BYTES}. */
+    static final long MAX_BYTES = MeshLimits.MAX_FILE_BYTES;
 
     final String name;
     /** The file's real path (null when read from a Reader or bytes). */
@@ -44,11 +45,14 @@ final class VrmlText {
 
     /** Reads a file (gzip detected by content) without checking the header. */
     static VrmlText read(String name, Path file) throws IOException {
-        long size = Files.size(file);
-        if (size > MAX_BYTES) {
-            throw new VrmlParseException(name, 1, 1, "file is " + size + " bytes, more than the limit of " + MAX_BYTES);
+        byte[] raw;
+        try {
+            raw = InputFile.readBytes(file, MAX_BYTES, MeshLimits.FILE_LIMIT);
+        } catch (InputFile.InputFileException e) {
+            String m = e.getMessage();
+            // the message starts with the path: name the file as the caller did
+            throw new VrmlParseException(name, 1, 1, m.startsWith(file.toString() + ": ") ? m.substring(file.toString().length() + 2) : m);
         }
-        byte[] raw = Files.readAllBytes(file);
         VrmlText t = fromBytes(name, raw);
         t.path = file;
         return t;
@@ -77,7 +81,7 @@ final class VrmlText {
             while ((n = in.read(chunk)) > 0) {
                 total += n;
                 if (total > MAX_BYTES) {
-                    throw new VrmlParseException(name, 1, 1, "gzip stream expands to more than " + MAX_BYTES + " bytes; refused");
+                    throw new VrmlParseException(name, 1, 1, "gzip stream expands to more than " + MAX_BYTES + " bytes (" + MeshLimits.FILE_LIMIT + "); refused");
                 }
             }
         } catch (IOException e) {
@@ -134,7 +138,8 @@ final class VrmlText {
         } else if (looksBinary()) {
             why = "binary data, not a VRML97 file: missing the header '" + HEADER + "'";
         } else {
-            why = "missing the header '" + HEADER + "' on the first line (found '" + clip(first) + "')";
+            // not a VRML file at all: nothing of its content is quoted (it may be any file, /etc/shadow)
+            why = "not a VRML97 file: the first line is not the header '" + HEADER + "'";
         }
         throw new VrmlParseException(name, 1, 1, why);
     }
