@@ -189,6 +189,11 @@ public final class HandSim implements Runnable {
             err.flush();
             return CliError.NUMERIC;
         }
+        if (t instanceof org.handsim.grasp.ConvexHull.TooLargeException) {   // a grasp wrench space beyond its documented limits
+            err.println(SafeText.line("handsim: " + t.getMessage()));
+            err.flush();
+            return CliError.USAGE;
+        }
         if (t instanceof InputFile.InputFileException) {   // an input that is not a readable regular UTF-8 file: exit 3
             err.println(SafeText.line("handsim: " + t.getMessage()));
             err.flush();

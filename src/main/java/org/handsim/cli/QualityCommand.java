@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.grasp.ConvexHull;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.grasp.GraspQuality;
 import org.handsim.grasp.GraspWrenches;
@@ -66,6 +67,12 @@ public final class QualityCommand implements Callable<Integer> {
     static final List<String> JSON_KEYS = List.of("contacts", "wrenches", "force_closure", "epsilon", "volume", "facets", "time_us_median");
     /** Largest wrench coordinate accepted: the volume is a sixth power of it. */
     static final double MAX_WRENCH = 1e30;
+    /** A hull computation running longer than this, seconds, prints its progress on standard error ... */
+    static final double PROGRESS_AFTER_S = 2;
+    /** ... every this many seconds. */
+    static final double PROGRESS_EVERY_S = 5;
+    /** Most rows of a contacts file: reading stays small (5 MB of numbers) whatever the file's length. */
+    static final int MAX_CONTACTS = 100_000;
     /** Default number of timed batches. */
     static final int DEFAULT_REPEAT = 11;
 
@@ -101,7 +108,15 @@ public final class QualityCommand implements Callable<Integer> {
         if (repeat < 1 || repeat > 1000) throw CliError.usage("handsim: --repeat must be in 1..1000, got " + repeatText);
         Args.inputFile(file);
         Contacts contacts = read(file);
-        spec.commandLine().getOut().println(JsonWriter.write(quality(contacts, mu, m, c, r, repeat)));
+        Map<String, Object> json;
+        try {
+            json = quality(contacts, mu, m, c, r, repeat, spec.commandLine().getErr());
+        } catch (ConvexHull.TooLargeException e) {
+            String why = e.getMessage();
+            throw CliError.usage("handsim: " + file + ": " + (why.startsWith("the convex hull")
+                ? contacts.count() + " contacts x " + m + " cone edges: " + why + "; use fewer contacts or --edges" : why));
+        }
+        spec.commandLine().getOut().println(JsonWriter.write(json));
         return 0;
     }
 
@@ -119,6 +134,10 @@ public final class QualityCommand implements Callable<Integer> {
         int n = 0;
         try (CsvInput in = new CsvInput(file, HEADER)) {
             while (in.next()) {
+                if (n == MAX_CONTACTS) {
+                    throw in.error("more than " + MAX_CONTACTS + " contacts (the limit of a contacts file; the whole wrench space takes at most "
+                        + WrenchSpace.MAX_WRENCHES + " distinct wrenches)");
+                }
                 if (3 * n + 3 > p.length) {
                     p = java.util.Arrays.copyOf(p, 2 * p.length);
                     nrm = java.util.Arrays.copyOf(nrm, 2 * nrm.length);
@@ -144,10 +163,13 @@ public final class QualityCommand implements Callable<Integer> {
      * The command's JSON object (the part that reads no file).
      *
      * @param repeat timed batches of {@link SteadyTiming#median}
+     * @param err    where a computation slower than {@link #PROGRESS_AFTER_S} reports its progress
      * @throws CliError exit 2 if a wrench coordinate exceeds {@link #MAX_WRENCH} (the hull's
      *                  volume, a sixth power, would overflow)
+     * @throws ConvexHull.TooLargeException beyond {@link WrenchSpace#MAX_WRENCHES} distinct
+     *                  wrenches (at once) or {@link ConvexHull#MAX_FACETS} facets
      */
-    static Map<String, Object> quality(Contacts contacts, double mu, int m, double[] c, double r, int repeat) {
+    static Map<String, Object> quality(Contacts contacts, double mu, int m, double[] c, double r, int repeat, java.io.PrintWriter err) {
         int n = contacts.count(), count = n * m;
         double[] w = GraspWrenches.of(n, contacts.points(), contacts.normals(), mu, m, c, r);
         for (int i = 0; i < w.length; i++) {
@@ -156,8 +178,27 @@ public final class QualityCommand implements Callable<Integer> {
                     + w[i] + "): coordinates or --center too large, or --radius too small");
             }
         }
-        GraspQuality q = WrenchSpace.quality(w, count, n);
-        SteadyTiming.Result t = SteadyTiming.median(() -> {
+        ConvexHull hull = WrenchSpace.threadHull();
+        long start = System.nanoTime();
+        GraspQuality q;
+        // a hull of many wrenches takes seconds: say so, with the facets built so far, every few seconds
+        java.util.concurrent.ScheduledExecutorService ticker = java.util.concurrent.Executors.newSingleThreadScheduledExecutor(job -> {
+            Thread th = new Thread(job, "quality-progress");
+            th.setDaemon(true);
+            return th;
+        });
+        ticker.scheduleAtFixedRate(() -> {
+            err.println(String.format(java.util.Locale.ROOT, "handsim quality: %d contacts, %d wrenches: %d hull facets so far (%.0f s)",
+                n, count, hull.facetsSoFar(), (System.nanoTime() - start) / 1e9));
+            err.flush();
+        }, (long) (PROGRESS_AFTER_S * 1000), (long) (PROGRESS_EVERY_S * 1000), java.util.concurrent.TimeUnit.MILLISECONDS);
+        try {
+            q = WrenchSpace.quality(w, count, n);
+        } finally {
+            ticker.shutdownNow();
+        }
+        double first = (System.nanoTime() - start) / 1e9;
+        SteadyTiming.Result t = first >= SteadyTiming.SLOW_SECONDS ? SteadyTiming.once(first) : SteadyTiming.median(() -> {
             GraspQuality x = WrenchSpace.quality(w, count, n);
             return x.volume() + x.epsilon();
         }, repeat);

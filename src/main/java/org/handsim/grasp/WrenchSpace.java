@@ -32,6 +32,22 @@ public final class WrenchSpace {
 
     private static final ThreadLocal<ConvexHull> HULL = ThreadLocal.withInitial(() -> new ConvexHull(DIM));
 
+    /**
+     * Most wrenches (contacts × cone edges, identical ones counted once) whose whole hull
+     * {@link #quality} builds: 1 600, 200 contacts of the default 8 edges. Measured on a loaded
+     * 2-core machine with 200 random contacts on a sphere (the worst case we know): 930 000
+     * facets, 31 s and 300 MB; the facets grow about as the square of the wrenches, so 5 000
+     * contacts would take hours. Beyond it {@link #quality} refuses at once
+     * ({@link ConvexHull.TooLargeException}); the ε-only path ({@link #epsilon}) builds part of
+     * the hull and has only the facet limit ({@link ConvexHull#MAX_FACETS}).
+     */
+    public static final int MAX_WRENCHES = 1600;
+
+    /** This thread's hull workspace: for a progress report ({@link ConvexHull#facetsSoFar}) from another thread. */
+    public static ConvexHull threadHull() {
+        return HULL.get();
+    }
+
     private WrenchSpace() {}
 
     /**
@@ -61,6 +77,16 @@ public final class WrenchSpace {
     /** The whole hull's quality; the merged facet count when {@code facets}, else −1. */
     private static GraspQuality whole(double[] wrenches, int count, int contacts, boolean facets) {
         check(wrenches, count, contacts);
+        if (count > MAX_WRENCHES) {
+            int distinct = distinct(wrenches, count);
+            if (distinct > MAX_WRENCHES) {
+                int edges = contacts > 0 ? count / contacts : count;
+                throw new ConvexHull.TooLargeException(contacts + " contacts x " + edges + " cone edges give more than " + MAX_WRENCHES
+                    + " distinct wrenches, the limit of the whole grasp wrench space (its facets grow about as the square of the wrenches:"
+                    + " 1 600 take 30 s and 300 MB); use fewer contacts, or at most " + Math.max(1, MAX_WRENCHES / Math.max(1, contacts))
+                    + " cone edges (--edges) for " + contacts + " contacts");
+            }
+        }
         ConvexHull hull = HULL.get();
         if (!hull.build(wrenches, count)) return GraspQuality.none(contacts, count);
         double b = hull.minOffset();
@@ -84,6 +110,16 @@ public final class WrenchSpace {
         if (Double.isNaN(b)) return new GraspQuality(contacts, count, false, 0, Double.NaN, -1);
         boolean closure = b > hull.tolerance();
         return new GraspQuality(contacts, count, closure, closure ? b : 0, Double.NaN, -1);
+    }
+
+    /** Wrenches that differ in some coordinate (identical ones add nothing to the hull), counted up to {@link #MAX_WRENCHES} + 1. */
+    static int distinct(double[] w, int count) {
+        java.util.HashSet<java.util.List<Double>> seen = new java.util.HashSet<>();
+        for (int i = 0; i < count; i++) {
+            seen.add(java.util.List.of(w[6 * i], w[6 * i + 1], w[6 * i + 2], w[6 * i + 3], w[6 * i + 4], w[6 * i + 5]));
+            if (seen.size() > MAX_WRENCHES) break;
+        }
+        return seen.size();
     }
 
     private static void check(double[] wrenches, int count, int contacts) {

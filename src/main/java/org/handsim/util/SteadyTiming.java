@@ -14,6 +14,9 @@ import java.util.function.DoubleSupplier;
  * {@link #BATCH_SECONDS} (so nanosecond-scale operations are not swamped by the clock), and the
  * median of the per-call times of the batches is reported. This is the scheme of the
  * {@code gradle bench} harness, so a command's figure and the benchmark's agree within noise.
+ * Bounded for slow operations: one whose first run takes {@link #SLOW_SECONDS} or more is timed
+ * by that run alone, and the timed batches stop after {@link #TIMED_CAP_SECONDS} (fewer samples
+ * then, at least one), so timing never takes more than about 10 s beyond the first run.
  *
  * <p>The operation returns a number that depends on its work; it is accumulated into a
  * volatile sink so the JIT cannot drop the work.
@@ -38,6 +41,17 @@ public final class SteadyTiming {
      * batches 30–33 µs, the quiet figure; docs/BENCHMARKS.md).
      */
     public static final double BATCH_SECONDS = 0.001;
+    /**
+     * The timed batches stop once they have taken this long, seconds (at least one batch is
+     * timed): an operation of 0.3 s would otherwise take 30 s for 101 batches.
+     */
+    public static final double TIMED_CAP_SECONDS = 5.0;
+    /**
+     * An operation whose first run takes this long, seconds, or longer is timed by that run alone
+     * ({@link #once}): the JIT's share of a second is small, and repeating a 30 s hull computation
+     * to take a median would take minutes.
+     */
+    public static final double SLOW_SECONDS = 1.0;
 
     /** Keeps results alive. */
     public static volatile double sink;
@@ -59,12 +73,24 @@ public final class SteadyTiming {
         return median(op, samples, WARMUP_CAP_SECONDS);
     }
 
+    /** The result of timing one run of {@code seconds} (an operation slower than {@link #SLOW_SECONDS}). */
+    public static Result once(double seconds) {
+        return new Result(seconds, 1, 1, 0, 0);
+    }
+
     /** {@link #median(DoubleSupplier, int)} with the warm-up capped at {@code capSeconds} (tests). */
     static Result median(DoubleSupplier op, int samples, double capSeconds) {
         if (samples < 1) throw new IllegalArgumentException("samples must be >= 1, got " + samples);
         double acc = 0;
         long calls = 0;
         long start = System.nanoTime();
+        acc += op.getAsDouble();   // the first run: a slow operation is timed by it alone
+        calls++;
+        double first = (System.nanoTime() - start) / 1e9;
+        if (first >= SLOW_SECONDS) {
+            sink += acc;
+            return once(first);
+        }
         long minEnd = start + (long) (WARMUP_SECONDS * 1e9), cap = start + (long) (capSeconds * 1e9);
         long now;
         do {
@@ -92,13 +118,22 @@ public final class SteadyTiming {
         long batch = Math.max(1, (long) (BATCH_SECONDS / Math.max(perCall, 1e-9)));
         double[] per = new double[samples];
         long timed = 0;
+        long timedStart = System.nanoTime(), timedCap = timedStart + (long) (TIMED_CAP_SECONDS * 1e9);
+        int taken = 0;
         for (int s = 0; s < samples; s++) {
             long t0 = System.nanoTime();
             for (long i = 0; i < batch; i++) acc += op.getAsDouble();
-            per[s] = (System.nanoTime() - t0) / 1e9 / batch;
+            long t1 = System.nanoTime();
+            per[s] = (t1 - t0) / 1e9 / batch;
             timed += batch;
+            taken++;
+            if (t1 > timedCap) break;
         }
         sink += acc;
+        if (taken < samples) {
+            per = Arrays.copyOf(per, taken);
+            samples = taken;
+        }
         Arrays.sort(per);
         double med = samples % 2 == 1 ? per[samples / 2] : 0.5 * (per[samples / 2 - 1] + per[samples / 2]);
         return new Result(med, samples, timed, calls, warmSeconds);
