@@ -62,6 +62,17 @@ public final class CollideCommand implements Callable<Integer> {
     @Option(names = "--repeat", paramLabel = "N", description = {"timed batches after the warm-up (1..10000,", "default " + DEFAULT_REPEAT + "); the median per query is reported"})
     String repeatText = String.valueOf(DEFAULT_REPEAT);
 
+    /**
+     * Most intersecting triangle pairs collide reports: 100 000. Touching objects meet in far
+     * fewer (a finger on the mug: tens; two 358 800-triangle spheres crossing: a few thousand);
+     * coincident meshes meet in every triangle's neighbours (5.4 million pairs for that sphere
+     * on itself), and joining such pairs into patches takes minutes (measured: 145 200 pairs of
+     * a coincident 29 000-triangle sphere, 16 s).
+     */
+    static final int MAX_PAIRS = 100_000;
+    /** Above this many triangles in A and B together, each phase is announced on standard error. */
+    static final long PROGRESS_TRIANGLES = 100_000;
+
     /** Timed batches by default: the median of 101 batches of about 1 ms (0.1 s after the warm-up). */
     static final int DEFAULT_REPEAT = 101;
 
@@ -78,7 +89,16 @@ public final class CollideCommand implements Callable<Integer> {
         if (repeat < 1 || repeat > 10_000) throw CliError.usage("handsim: --repeat must be in 1..10000, got " + repeatText);
         TriangleMesh a = loadMesh(fileA), b = loadMesh(fileB);
         RigidTransform pose = RigidTransform.fromPose(p[0], p[1], p[2], p[3], p[4], p[5]);
-        spec.commandLine().getOut().println(JsonWriter.write(collide(a, b, pose, k, repeat)));
+        java.io.PrintWriter err = spec.commandLine().getErr();
+        Map<String, Object> json;
+        try {
+            json = collide(a, b, pose, k, repeat, a.triangleCount() + (long) b.triangleCount() > PROGRESS_TRIANGLES ? err : null);
+        } catch (CollisionResult.TooManyPairsException e) {
+            throw CliError.usage("handsim collide: " + fileA + " and " + fileB + " at --pose-b " + poseB + " intersect in " + e.getMessage()
+                + " (coincident or deeply interpenetrating meshes; the limit of collide, whose contact patches join every pair's"
+                + " segments); move B with --pose-b");
+        }
+        spec.commandLine().getOut().println(JsonWriter.write(json));
         return 0;
     }
 
@@ -99,6 +119,17 @@ public final class CollideCommand implements Callable<Integer> {
     /** Segments round VRML Sphere, Cylinder and Cone nodes (the VRML loader's default). */
     static final int VRML_DIVISIONS = 32;
 
+    /** {@link #collide(TriangleMesh, TriangleMesh, RigidTransform, int, int, java.io.PrintWriter)} without progress lines. */
+    static Map<String, Object> collide(TriangleMesh a, TriangleMesh b, RigidTransform pose, int k, int repeat) {
+        return collide(a, b, pose, k, repeat, null);
+    }
+
+    private static void say(java.io.PrintWriter progress, String line) {
+        if (progress == null) return;
+        progress.println("handsim collide: " + line);
+        progress.flush();
+    }
+
     static TriangleMesh loadMesh(Path file) {
         Args.inputFile(file);
         try {
@@ -112,15 +143,20 @@ public final class CollideCommand implements Callable<Integer> {
      * The command's JSON object for two meshes (the part that does not read files).
      *
      * @param repeat timed batches after the warm-up ({@link SteadyTiming}); the median per query is reported
+     * @param progress where each phase is announced (large meshes), or null
+     * @throws CollisionResult.TooManyPairsException beyond {@link #MAX_PAIRS} intersecting pairs
      */
-    static Map<String, Object> collide(TriangleMesh a, TriangleMesh b, RigidTransform pose, int k, int repeat) {
+    static Map<String, Object> collide(TriangleMesh a, TriangleMesh b, RigidTransform pose, int k, int repeat, java.io.PrintWriter progress) {
         long t0 = System.nanoTime();
+        say(progress, "building the k-DOP trees of " + a.triangleCount() + " + " + b.triangleCount() + " triangles");
         KdopTree ta = KdopTree.build(a, k), tb = KdopTree.build(b, k);
         double buildMs = (System.nanoTime() - t0) / 1e6;
         TreeQuery q = new TreeQuery();
-        CollisionResult r = new CollisionResult();
+        CollisionResult r = new CollisionResult().limitPairs(MAX_PAIRS);
+        say(progress, String.format(java.util.Locale.ROOT, "trees built in %.1f s; querying and timing the query", buildMs / 1000));
         double median = SteadyTiming.median(() -> q.collide(ta, tb, pose, r).pairCount() + r.nodeTests, repeat).medianMicros();
         q.collide(ta, tb, pose, r);
+        say(progress, r.pairCount() + " intersecting pairs; joining their segments into patches");
         ContactPatches cp = new ContactPatches();
         int n = cp.build(r, a, b, pose);
         List<Object> patches = new ArrayList<>();

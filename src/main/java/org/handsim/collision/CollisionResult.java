@@ -38,6 +38,30 @@ public final class CollisionResult {
     /** Orientation predicates that needed the exact stage. */
     public long exactPredicates;
 
+    private int maxPairs = Integer.MAX_VALUE;
+
+    /**
+     * More intersecting triangle pairs than {@link #limitPairs} allows: the query stopped (the
+     * result holds the pairs found up to the limit).
+     */
+    public static final class TooManyPairsException extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        TooManyPairsException(int limit) {
+            super("more than " + limit + " triangle pairs");
+        }
+    }
+
+    /**
+     * Stops a query with {@link TooManyPairsException} once it has found {@code max} pairs
+     * (default: no limit; the simulation's contacts are a few hundred pairs).
+     */
+    public CollisionResult limitPairs(int max) {
+        if (max < 1) throw new IllegalArgumentException("max pairs must be >= 1, got " + max);
+        this.maxPairs = max;
+        return this;
+    }
+
     /** Empties the result and zeroes the counters (capacity kept). */
     public void clear() {
         pairs = 0;
@@ -76,6 +100,7 @@ public final class CollisionResult {
 
     /** Appends the intersector's current result as pair (a, b). */
     void add(int a, int b, TriangleIntersector tt, int kind) {
+        if (pairs == maxPairs) throw new TooManyPairsException(maxPairs);
         if (pairs == triA.length) {
             int c = 2 * pairs;
             triA = Arrays.copyOf(triA, c);
