@@ -361,7 +361,7 @@ public final class HandModel {
         ClutchState st = c.state();
         double qNow = c.motor(), qBefore = motorPrev[i];
         if (qNow <= qBefore || (st != ClutchState.FREE && st != ClutchState.BROKEN)) return false;
-        double half = 0.5 * objectContacts.minThickness();
+        double half = 0.5 * Math.max(objectContacts.minThickness(), objectContacts.minLinkThickness());
         double disp = Math.abs(c.theta2For(qNow) - c.theta2For(qBefore)) * reach2
             + Math.abs(c.theta3For(qNow) - c.theta3For(qBefore)) * reach3;
         if (!(disp > half)) return false;

@@ -40,6 +40,16 @@ public interface LinkContacts {
     }
 
     /**
+     * The thinnest finger link's width in metres (an estimate from above), 0 when unknown. A link
+     * crossing the object overlaps it over a motion at least as long as the link's own width, so
+     * the tunnelling guard never needs finer substeps than half of it: a flat object (a 1 000-gon
+     * sheet, width 0) would otherwise ask for 100 000 substeps a step.
+     */
+    default double minLinkThickness() {
+        return 0;
+    }
+
+    /**
      * The object's torque origin and characteristic length for grasp analysis (issue 12): its
      * centroid c in the world (metres, {@code TriangleMesh.centroid}) and R, the largest
      * distance from c to a vertex (GraspIt!'s convention), as {cx, cy, cz, R}; null when the

@@ -107,8 +107,10 @@ public final class SceneGeometry implements LinkContacts {
         objectMesh = obj.mesh;
         objectTree = obj.tree;
         double diag = obj.diagonal;
+        double linkWidth = Double.POSITIVE_INFINITY;
         for (int j = 1; j <= 3; j++) {
             Shape link = shape(linkFile(j), LINK_DIVISIONS, 1.0, k);
+            linkWidth = Math.min(linkWidth, link.thickness());
             linkMeshes[j - 1] = link.mesh;
             linkTrees[j - 1] = link.tree;
             linkSpheres[j - 1] = link.sphere;
@@ -122,6 +124,7 @@ public final class SceneGeometry implements LinkContacts {
         double[] cw = object.worldFromObject().apply(obj.centroid());
         centroidAndRadius = new double[] {cw[0], cw[1], cw[2], obj.centroidReach()};
         thickness = obj.thickness();
+        linkThickness = linkWidth;
         // the scratch last: a model that cannot be loaded leaves the retired instance as it was
         if (retired == null) {
             query = new TreeQuery();
@@ -196,7 +199,7 @@ public final class SceneGeometry implements LinkContacts {
         return SHAPES.get(key, x -> new Shape(x, mesh(file, divisions, scale), k));
     }
 
-    private final double thickness;
+    private final double thickness, linkThickness;
     private final double[] centroidAndRadius;
 
     @Override
@@ -251,6 +254,11 @@ public final class SceneGeometry implements LinkContacts {
     @Override
     public double minThickness() {
         return thickness;
+    }
+
+    @Override
+    public double minLinkThickness() {
+        return linkThickness;
     }
 
     private static double sq(double x) { return x * x; }
