@@ -1,13 +1,13 @@
 package org.handsim.gui;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.sim.ScenarioException;
 import org.handsim.sim.SceneGeometry;
+import org.handsim.util.InputFile;
 
 /**
  * Where the view gets its triangle meshes: {@link SceneGeometry#mesh}, the meshes the model
@@ -69,24 +69,28 @@ public final class MeshSource {
         if (name.endsWith(".stl")) return null;
         if (name.endsWith(".obj")) {
             try {
-                Matcher lib = MTLLIB.matcher(Files.readString(file, java.nio.charset.StandardCharsets.ISO_8859_1));
+                // heads only, regular files only (util.InputFile): an mtllib naming a FIFO or /dev/zero costs nothing
+                Matcher lib = MTLLIB.matcher(new String(InputFile.head(file, SNIFF_BYTES), java.nio.charset.StandardCharsets.ISO_8859_1));
                 if (!lib.find()) return null;
                 Path mtl = file.toAbsolutePath().getParent().resolve(lib.group(1));
-                Matcher kd = KD.matcher(Files.readString(mtl, java.nio.charset.StandardCharsets.ISO_8859_1));
+                Matcher kd = KD.matcher(new String(InputFile.head(mtl, SNIFF_BYTES), java.nio.charset.StandardCharsets.ISO_8859_1));
                 return kd.find() ? rgb(kd) : null;
-            } catch (IOException | RuntimeException e) {
+            } catch (RuntimeException e) {
                 return null;
             }
         }
         try {
-            byte[] head = Files.readAllBytes(file);
+            byte[] head = InputFile.head(file, SNIFF_BYTES);
             if (head.length > 1 && (head[0] & 0xff) == 0x1f && (head[1] & 0xff) == 0x8b) return null;   // gzip
             Matcher m = DIFFUSE.matcher(new String(head, java.nio.charset.StandardCharsets.ISO_8859_1));
             return m.find() ? rgb(m) : null;
-        } catch (IOException | NumberFormatException e) {
+        } catch (InputFile.InputFileException | NumberFormatException e) {
             return null;
         }
     }
+
+    /** Bytes of a file's head searched for its colour. */
+    private static final int SNIFF_BYTES = 1 << 20;
 
     private static float[] rgb(Matcher m) {
         float[] c = new float[3];

@@ -14,7 +14,6 @@ import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.handsim.grasp.FrictionCone;
-import org.handsim.math.RigidTransform;
 import org.handsim.sim.Home;
 import org.handsim.sim.MeshFiles;
 import org.handsim.sim.ObjectPlacer;
@@ -144,9 +143,10 @@ public final class ObjectsPanel {
      */
     public CompletableFuture<?> importFile(Path f) {
         Path abs = f.toAbsolutePath().normalize();
-        if (!Files.isRegularFile(abs)) {
-            window.error("cannot import " + abs + ": no such file", "Object not loaded");
-            return CompletableFuture.failedFuture(new java.io.IOException("no such file: " + abs));
+        String why = org.handsim.util.InputFile.problem(abs);   // a FIFO or a device is refused before it is opened
+        if (why != null) {
+            window.error("cannot import " + abs + ": " + why, "Object not loaded");
+            return CompletableFuture.failedFuture(new java.io.IOException(abs + ": " + why));
         }
         Scenario s = window.scenario();
         int divisions = s.object() != null ? s.object().divisions() : Scenario.DEFAULT_DIVISIONS;

@@ -117,6 +117,21 @@ public final class InputFile {
         }
     }
 
+    /**
+     * At most the first {@code maxBytes} bytes of a regular file (a sniff of its head: a colour, a
+     * header), whatever its length.
+     *
+     * @throws InputFileException not a readable regular file, or a read error
+     */
+    public static byte[] head(Path file, int maxBytes) {
+        require(file);
+        try (InputStream in = Files.newInputStream(file)) {
+            return in.readNBytes(maxBytes);
+        } catch (IOException e) {
+            throw new InputFileException(file + ": cannot be read (" + e.getMessage() + ")", e);
+        }
+    }
+
     private static InputFileException tooLarge(Path file, long size, long max, String what) {
         return new InputFileException(file + ": " + (size > max ? "is " + size + " bytes" : "is larger") + ", more than " + what
             + " (" + max + " bytes)");
