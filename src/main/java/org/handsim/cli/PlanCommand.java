@@ -103,6 +103,7 @@ public final class PlanCommand implements Callable<Integer> {
         long t0 = System.nanoTime();
         Map<String, Object> summary;
         PlanOutput output = new PlanOutput(dir, runner, rows -> bar.accept(rows / (double) trials));
+        eng.announce(err, "plan " + planSpec.name());
         try (output) {
             try {
                 eng.engine().run(new PlanJob(planSpec), trials, eng.settings("handsim plan " + planSpec.name()), output);

@@ -53,6 +53,7 @@ final class SweepJob implements IndexedJob<String> {
             Writer w = f.writer();
             w.write(SweepCommand.HEADER);
             w.write('\n');
+            eng.announce(err, "sweep " + sweep.name());
             try {
                 eng.engine().run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, eng.settings("handsim sweep " + sweep.name()), row -> {
                     try {
