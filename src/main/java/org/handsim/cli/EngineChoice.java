@@ -103,14 +103,8 @@ record EngineChoice(String name, TrialEngine engine, int threads, String url) {
         if (threadsOption != null && (threadsOption < 1 || threadsOption > org.handsim.sim.Sweep.MAX_THREADS)) {
             throw CliError.usage("handsim: --threads must be in [1, " + org.handsim.sim.Sweep.MAX_THREADS + "], got " + threadsOption);
         }
-        TrialEngine engine;
-        try {
-            engine = Engines.find(name);
-        } catch (IllegalArgumentException e) {
-            throw CliError.usage("handsim: " + e.getMessage());
-        }
         if (master != null && !name.equals("spark")) throw CliError.usage("handsim: --master needs --engine spark");
-        if (master != null) {
+        if (master != null) {   // before Spark is looked for: a bad master is refused without loading it
             String why = masterProblem(master);
             if (why != null) throw CliError.usage("handsim: --master '" + org.handsim.util.SafeText.quote(master) + "' " + why);
             why = unreachable(master);
@@ -118,6 +112,12 @@ record EngineChoice(String name, TrialEngine engine, int threads, String url) {
                 throw CliError.usage("handsim: --master " + org.handsim.util.SafeText.quote(master) + ": cannot connect (" + why
                     + "); is the cluster running? (tools/spark-cluster start prints its URL)");
             }
+        }
+        TrialEngine engine;
+        try {
+            engine = Engines.find(name);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: " + e.getMessage());
         }
         int n = threadsOption != null ? threadsOption : defaultThreads;
         return new EngineChoice(name, engine, n, master != null ? master : threadsOption != null ? "local[" + threadsOption + "]" : "local[*]");

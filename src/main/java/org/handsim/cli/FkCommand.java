@@ -96,6 +96,8 @@ public final class FkCommand implements Callable<Integer> {
             "--finger, --joints or --counts", IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) j[i] = in.number(i + 1);
+                String range = InputRanges.JOINT_ANGLE.problem(new String[] {"t1", "t2", "t3"}, j);
+                if (range != null) throw in.error(range);
                 try {
                     if (palm) fks[k - 1].framesInPalm(j, frames); else fks[k - 1].frames(j, frames);
                 } catch (IllegalArgumentException e) {

@@ -110,8 +110,10 @@ public final class IdCommand implements Callable<Integer> {
                     qddf[j] = in.number(7 + j);
                     g[j] = in.number(10 + j);
                 }
-                String range = firstProblem(InputRanges.JOINT_ANGLE.problem("q", qf), InputRanges.JOINT_SPEED.problem("qd", qdf),
-                    InputRanges.JOINT_ACCELERATION.problem("qdd", qddf), InputRanges.GRAVITY.problem("g", g));
+                String range = firstProblem(InputRanges.JOINT_ANGLE.problem(new String[] {"q1", "q2", "q3"}, qf),
+                    InputRanges.JOINT_SPEED.problem(new String[] {"qd1", "qd2", "qd3"}, qdf),
+                    InputRanges.JOINT_ACCELERATION.problem(new String[] {"qdd1", "qdd2", "qdd3"}, qddf),
+                    InputRanges.GRAVITY.problem(new String[] {"gx", "gy", "gz"}, g));
                 if (range != null) throw in.error(range);
                 LinkChain chain = hand.finger(k).chain();
                 String bad = fixedJointViolation(k, chain, qf, qdf, qddf, names);

@@ -70,7 +70,7 @@ public final class IkCommand implements Callable<Integer> {
             IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);
-                String range = InputRanges.POSITION.problem("target", t);
+                String range = InputRanges.POSITION.problem(new String[] {"x", "y", "z"}, t);
                 if (range != null) throw in.error(range);
                 IkResult r = palm ? iks[k - 1].solveInPalm(t) : iks[k - 1].solve(t);
                 double[] j = r.joints();

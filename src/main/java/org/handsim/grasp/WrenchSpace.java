@@ -81,10 +81,13 @@ public final class WrenchSpace {
             int distinct = distinct(wrenches, count);
             if (distinct > MAX_WRENCHES) {
                 int edges = contacts > 0 ? count / contacts : count;
+                String advice = contacts > 0 && contacts <= MAX_WRENCHES
+                    ? "use fewer contacts, or at most " + MAX_WRENCHES / contacts + " cone edges (--edges) for " + contacts + " contacts"
+                    : "use fewer contacts: at most " + MAX_WRENCHES / FrictionCone.DEFAULT_EDGES + " at the default "
+                        + FrictionCone.DEFAULT_EDGES + " cone edges";
                 throw new ConvexHull.TooLargeException(contacts + " contacts x " + edges + " cone edges give more than " + MAX_WRENCHES
                     + " distinct wrenches, the limit of the whole grasp wrench space (its facets grow about as the square of the wrenches:"
-                    + " 1 600 take 30 s and 300 MB); use fewer contacts, or at most " + Math.max(1, MAX_WRENCHES / Math.max(1, contacts))
-                    + " cone edges (--edges) for " + contacts + " contacts");
+                    + " 1 600 take 30 s and 300 MB); " + advice);
             }
         }
         ConvexHull hull = HULL.get();

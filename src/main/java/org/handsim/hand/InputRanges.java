@@ -40,6 +40,15 @@ public final class InputRanges {
             return Decimal.format(v) + " is beyond +-" + Decimal.format(max) + " " + unit + " (" + why + ")";
         }
 
+        /** The first CSV column out of range as "column NAME = problem", or null ({@code columns[i]} names {@code v[i]}). */
+        public String problem(String[] columns, double[] v) {
+            for (int i = 0; i < v.length; i++) {
+                String p = problem(v[i]);
+                if (p != null) return "column " + columns[i] + " = " + p;
+            }
+            return null;
+        }
+
         /** The first component out of range as "NAME[i]: problem", or null. */
         public String problem(String name, double[] v) {
             for (int i = 0; i < v.length; i++) {

@@ -80,7 +80,9 @@ public final class Decimal {
                     return format(v) + " " + words[i];
                 }
             }
-            return format(new java.math.BigDecimal(n).round(new java.math.MathContext(3)).doubleValue());
+            java.math.BigDecimal b = new java.math.BigDecimal(n).round(new java.math.MathContext(3));
+            int exp = b.precision() - b.scale() - 1;
+            return b.movePointLeft(exp).stripTrailingZeros().toPlainString() + "e+" + exp;
         }
         return format(Math.rint(n));
     }

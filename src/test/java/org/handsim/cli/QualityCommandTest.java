@@ -90,7 +90,7 @@ class QualityCommandTest {
         Path f = temp(CUBE);
         try {
             String[][] cases = {
-                {"--friction", "-0.1", "--friction must be a number >= 0, got -0.1"},
+                {"--friction", "-0.1", "--friction must be in [0, 10] (measured coefficients stay below 2; beyond 10 the friction cone is numerically a half-space), got -0.1"},
                 {"--friction", "nan", "'nan' is not a number"},
                 {"--edges", "0", "--edges must be between 1 and 1024"},
                 {"--edges", "2.5", "is not an integer"},

@@ -153,8 +153,12 @@ class StlReaderTest {
         ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN).putInt(80, 3);   // says 3, has 4
         String m = message(b);
         assertTrue(m.startsWith("t.stl: byte 234: 50 bytes after the last of the 3 triangles"), m);
+        ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN).putInt(80, 20);   // 1 084 bytes expected: within 16 times the file's 284
+        assertTrue(message(b).startsWith("t.stl: byte 284: the file ends inside triangle 5 of the 20"), message(b));
+        // a count far from the size: the four bytes are no count, the file is no STL, and nothing of it is quoted
         ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN).putInt(80, 1_000_000);
-        assertTrue(message(b).startsWith("t.stl: byte 284: the file ends inside triangle 5 of the 1000000"), message(b));
+        assertEquals("t.stl: byte 80: not an STL file: not ASCII STL (text starting with 'solid') and its size, 284 bytes,"
+            + " is far from 84 + 50 × the triangle count a binary STL has at byte 80", message(b));
     }
 
     @Test

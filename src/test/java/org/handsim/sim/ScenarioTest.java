@@ -67,7 +67,7 @@ class ScenarioTest {
         assertEquals(0, Scenario.parse(Path.of("s.json"), mu).withFriction(0).friction(), "--friction overrides the file");
         assertEquals(0.3, Scenario.parse(Path.of("s.json"), mu).friction(), "copies leave the original alone");
         assertEquals(12, Scenario.parse(Path.of("s.json"), mu).withConeEdges(12).coneEdges());
-        assertTrue(error(withObject.replace("\"file\":", "\"friction\":-0.1,\"file\":")).contains("field object.friction: must be >= 0, got -0.1"),
+        assertTrue(error(withObject.replace("\"file\":", "\"friction\":-0.1,\"file\":")).contains("field object.friction: must be in [0, 10] (measured coefficients stay below 2; beyond 10 the friction cone is numerically a half-space), got -0.1"),
             error(withObject.replace("\"file\":", "\"friction\":-0.1,\"file\":")));
         assertTrue(error(withObject.replace("\"file\":", "\"friction\":\"high\",\"file\":")).contains("field object.friction: must be a number"));
         // no object: the default, or what withFriction sets (analytic contact back ends)

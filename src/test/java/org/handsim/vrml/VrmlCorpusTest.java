@@ -100,7 +100,7 @@ class VrmlCorpusTest {
         String[][] cases = {
             {"globe-3d_skotknot.wrl", "VRML 1.0 is not supported"},
             {"VRMLviewer_pi1246924519_007006045l.wrz", "VRML 1.0 is not supported"},
-            {"choreonoid_J1.wrl", "missing the header '#VRML V2.0 utf8'"},
+            {"choreonoid_J1.wrl", "not a VRML97 file: the first line is not the header '#VRML V2.0 utf8'"},
         };
         List<DynamicTest> tests = new ArrayList<>();
         for (String[] c : cases) {
