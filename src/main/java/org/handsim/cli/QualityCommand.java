@@ -170,7 +170,12 @@ public final class QualityCommand implements Callable<Integer> {
      *                  wrenches (at once) or {@link ConvexHull#MAX_FACETS} facets
      */
     static Map<String, Object> quality(Contacts contacts, double mu, int m, double[] c, double r, int repeat, java.io.PrintWriter err) {
-        int n = contacts.count(), count = n * m;
+        int n = contacts.count();
+        if ((long) n * m > WrenchSpace.MAX_INPUT_WRENCHES) {
+            throw CliError.usage("handsim: " + n + " contacts x " + m + " cone edges are " + (long) n * m + " wrenches, more than "
+                + WrenchSpace.MAX_INPUT_WRENCHES + " (at most " + WrenchSpace.MAX_WRENCHES + " distinct ones make the whole wrench space)");
+        }
+        int count = n * m;
         double[] w = GraspWrenches.of(n, contacts.points(), contacts.normals(), mu, m, c, r);
         for (int i = 0; i < w.length; i++) {
             if (!(Math.abs(w[i]) <= MAX_WRENCH)) {

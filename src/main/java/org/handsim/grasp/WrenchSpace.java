@@ -42,6 +42,12 @@ public final class WrenchSpace {
      * the hull and has only the facet limit ({@link ConvexHull#MAX_FACETS}).
      */
     public static final int MAX_WRENCHES = 1600;
+    /**
+     * Most wrenches (contacts × edges, repeats included) a caller should build at all: a
+     * million, 48 MB of values; repeats are dropped and at most {@link #MAX_WRENCHES} distinct
+     * ones are used.
+     */
+    public static final int MAX_INPUT_WRENCHES = 1_000_000;
 
     /** This thread's hull workspace: for a progress report ({@link ConvexHull#facetsSoFar}) from another thread. */
     public static ConvexHull threadHull() {
@@ -77,21 +83,20 @@ public final class WrenchSpace {
     /** The whole hull's quality; the merged facet count when {@code facets}, else −1. */
     private static GraspQuality whole(double[] wrenches, int count, int contacts, boolean facets) {
         check(wrenches, count, contacts);
-        if (count > MAX_WRENCHES) {
-            int distinct = distinct(wrenches, count);
-            if (distinct > MAX_WRENCHES) {
-                int edges = contacts > 0 ? count / contacts : count;
-                String advice = contacts > 0 && contacts <= MAX_WRENCHES
-                    ? "use fewer contacts, or at most " + MAX_WRENCHES / contacts + " cone edges (--edges) for " + contacts + " contacts"
-                    : "use fewer contacts: at most " + MAX_WRENCHES / FrictionCone.DEFAULT_EDGES + " at the default "
-                        + FrictionCone.DEFAULT_EDGES + " cone edges";
-                throw new ConvexHull.TooLargeException(contacts + " contacts x " + edges + " cone edges give more than " + MAX_WRENCHES
-                    + " distinct wrenches, the limit of the whole grasp wrench space (its facets grow about as the square of the wrenches:"
-                    + " 1 600 take 30 s and 300 MB); " + advice);
-            }
+        double[] w = distinct(wrenches, count);
+        int n = w == wrenches ? count : w.length / DIM;
+        if (n > MAX_WRENCHES) {
+            int edges = contacts > 0 ? count / contacts : count;
+            String advice = contacts > 0 && contacts <= MAX_WRENCHES
+                ? "use fewer contacts, or at most " + MAX_WRENCHES / contacts + " cone edges (--edges) for " + contacts + " contacts"
+                : "use fewer contacts: at most " + MAX_WRENCHES / FrictionCone.DEFAULT_EDGES + " at the default "
+                    + FrictionCone.DEFAULT_EDGES + " cone edges";
+            throw new ConvexHull.TooLargeException(contacts + " contacts x " + edges + " cone edges give " + n + " distinct wrenches, more"
+                + " than the limit of " + MAX_WRENCHES + " for the whole grasp wrench space (its facets grow about as the square of the"
+                + " wrenches: 1 600 take 30 s and 300 MB); " + advice);
         }
         ConvexHull hull = HULL.get();
-        if (!hull.build(wrenches, count)) return GraspQuality.none(contacts, count);
+        if (!hull.build(w, n)) return GraspQuality.none(contacts, count);
         double b = hull.minOffset();
         boolean closure = b > hull.tolerance();
         return new GraspQuality(contacts, count, closure, closure ? b : 0, hull.volume(), facets ? hull.facetCount() : -1);
@@ -108,21 +113,57 @@ public final class WrenchSpace {
      */
     public static GraspQuality epsilon(double[] wrenches, int count, int contacts) {
         check(wrenches, count, contacts);
+        double[] w = distinct(wrenches, count);
         ConvexHull hull = HULL.get();
-        double b = hull.epsilon(wrenches, count);
+        double b = hull.epsilon(w, w == wrenches ? count : w.length / DIM);
         if (Double.isNaN(b)) return new GraspQuality(contacts, count, false, 0, Double.NaN, -1);
         boolean closure = b > hull.tolerance();
         return new GraspQuality(contacts, count, closure, closure ? b : 0, Double.NaN, -1);
     }
 
-    /** Wrenches that differ in some coordinate (identical ones add nothing to the hull), counted up to {@link #MAX_WRENCHES} + 1. */
-    static int distinct(double[] w, int count) {
-        java.util.HashSet<java.util.List<Double>> seen = new java.util.HashSet<>();
-        for (int i = 0; i < count; i++) {
-            seen.add(java.util.List.of(w[6 * i], w[6 * i + 1], w[6 * i + 2], w[6 * i + 3], w[6 * i + 4], w[6 * i + 5]));
-            if (seen.size() > MAX_WRENCHES) break;
+    /**
+     * Above this many wrenches, repeated ones are dropped before the hull is built: they add
+     * nothing to it, and the checks Quickhull runs after a step spoiled by rounding cost facets ×
+     * points (5 000 rows of 150 distinct contacts, 40 000 wrenches, did not finish in 3 minutes;
+     * their 1 200 distinct wrenches take seconds). Below it, the wrenches are used as given (the
+     * planner's grasps: a few dozen, no allocation).
+     */
+    static final int DEDUPLICATE_ABOVE = 512;
+
+    /**
+     * The wrenches without repeats (identical in all six coordinates; first occurrences in their
+     * order): {@code w} itself when there are none or {@code count} ≤ {@link #DEDUPLICATE_ABOVE},
+     * else a new array of 6 × distinct values.
+     */
+    static double[] distinct(double[] w, int count) {
+        if (count <= DEDUPLICATE_ABOVE) return w;
+        Integer[] order = new Integer[count];
+        for (int i = 0; i < count; i++) order[i] = i;
+        java.util.Arrays.sort(order, (a, b) -> compare(w, a, b));
+        boolean[] repeat = new boolean[count];
+        int repeats = 0;
+        for (int k = 1; k < count; k++) {
+            if (compare(w, order[k - 1], order[k]) == 0) {
+                // of equal wrenches, keep the first in the input: the sort is stable
+                repeat[order[k]] = true;
+                repeats++;
+            }
         }
-        return seen.size();
+        if (repeats == 0) return w;
+        double[] out = new double[DIM * (count - repeats)];
+        int n = 0;
+        for (int i = 0; i < count; i++) {
+            if (!repeat[i]) System.arraycopy(w, DIM * i, out, DIM * n++, DIM);
+        }
+        return out;
+    }
+
+    private static int compare(double[] w, int a, int b) {
+        for (int k = 0; k < DIM; k++) {
+            int c = Double.compare(w[DIM * a + k], w[DIM * b + k]);
+            if (c != 0) return c;
+        }
+        return 0;
     }
 
     private static void check(double[] wrenches, int count, int contacts) {

@@ -239,28 +239,28 @@ public final class Script {
             case SPEED:
                 if (!rest.equalsIgnoreCase("max")) {
                     double f = number(src, n, v, rest);
-                    if (!(f > 0)) throw error(src, n, "speed must be > 0 or 'max', got " + q(rest));
+                    if (!(f > 0)) throw error(src, n, "speed must be > 0 or 'max', got '" + q(rest) + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             case WAIT: {
                 double ms = number(src, n, v, rest);
                 if (ms < 0 || ms != Math.rint(ms) || ms > MAX_WAIT_MS) {
-                    throw error(src, n, "wait needs whole milliseconds in [0, " + MAX_WAIT_MS + "] (an hour), got " + q(rest));
+                    throw error(src, n, "wait needs whole milliseconds in [0, " + MAX_WAIT_MS + "] (an hour), got '" + q(rest) + "'");
                 }
                 return List.of(Long.toString((long) ms));
             }
             case MEASURE_FPS: {
                 double s = positive(src, n, v, rest);
-                if (s > MAX_FPS_SECONDS) throw error(src, n, "measure-fps needs seconds in (0, " + (int) MAX_FPS_SECONDS + "], got " + q(rest));
+                if (s > MAX_FPS_SECONDS) throw error(src, n, "measure-fps needs seconds in (0, " + (int) MAX_FPS_SECONDS + "], got '" + q(rest) + "'");
                 return List.of(rest);
             }
             case ASSERT_TIME:
-                if (number(src, n, v, rest) < 0) throw error(src, n, "assert-time needs a time >= 0, got " + q(rest));
+                if (number(src, n, v, rest) < 0) throw error(src, n, "assert-time needs a time >= 0, got '" + q(rest) + "'");
                 return List.of(rest);
             case ASSERT_CONTACTS: {
                 double c = number(src, n, v, rest);
                 if (c < 0 || c != Math.rint(c) || c > MAX_CONTACTS) {
-                    throw error(src, n, "assert-contacts needs a whole number in [0, " + MAX_CONTACTS + "], got " + q(rest));
+                    throw error(src, n, "assert-contacts needs a whole number in [0, " + MAX_CONTACTS + "], got '" + q(rest) + "'");
                 }
                 return List.of(Integer.toString((int) c));
             }

@@ -42,9 +42,9 @@ class ScriptLimitsTest {
     @Test
     void aByteOrderMarkIsDroppedAndQuotedTextIsEscapedAndShort() throws Exception {
         assertEquals(Script.Verb.PRESS, Script.parse("t.txt", "\uFEFFpress Kinematics").actions().get(0).verb());
-        String esc = error("\u001b[2J\u001b[31mjump");
+        String esc = error("ju\u001b[2J\u001b[31mmp 3");
         assertFalse(esc.contains("\u001b"), esc);
-        assertTrue(esc.startsWith("t.txt:1: unknown action '\\u001b[2J\\u001b[31mjump'"), esc);
+        assertTrue(esc.startsWith("t.txt:1: unknown action 'ju\\u001b[2J\\u001b[31mmp'"), esc);
         String huge = error("x".repeat(1 << 20));
         assertTrue(huge.length() < 400, huge.length() + " characters");
         assertTrue(huge.startsWith("t.txt:1: unknown action 'xxxx") && huge.contains("..."), huge);
