@@ -101,9 +101,10 @@ public final class SwingCommand implements Callable<Integer> {
         double[] g = Args.numbers("--gravity", gravity, 3, InputRanges.GRAVITY);
         if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
         if (!(duration > 0) || duration > 3600) throw CliError.usage("handsim: --duration must be in (0, 3600] seconds, got " + duration);
-        long steps = FreeSwing.steps(dt, duration);
+        double steps = Math.ceil(duration / dt - 1e-9);   // as a double: (long) of 3.6e303 would be 9223372036854775807
         if (steps > MAX_STEPS) {
-            throw CliError.usage(String.format(Locale.ROOT, "handsim: --duration %s / --dt %s needs %d steps, more than %d", duration, dt, steps, MAX_STEPS));
+            throw CliError.usage("handsim: --dt " + Decimal.format(dt) + " for --duration " + Decimal.format(duration) + " s needs "
+                + Decimal.count(steps) + " steps, more than the limit of " + Decimal.count(MAX_STEPS) + " (a swing.csv of about a gigabyte)");
         }
         ChainDynamics dyn = HandDynamics.barrettHand().finger(k);
         LinkChain chain = dyn.chain();

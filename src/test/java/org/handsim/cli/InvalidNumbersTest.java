@@ -141,6 +141,7 @@ class InvalidNumbersTest {
             "--dt 1e-9: needs 8.95 billion steps (8.946365572224732 s at 1e-9 s a step), more than the limit of 10 million");
         refused(2, run(PAPER, "--dt", "1e-300"), "--dt 1e-300: needs 8.95e+300 steps");
         refused(3, run(scenario("dur.json", s -> s.put("duration_s", 1e300))), "field duration_s: needs 1e+303 steps (1e+300 s at 0.001 s a step)");
+        refused(2, CliTesting.run("swing", "--dt", "1e-300"), "--dt 1e-300 for --duration 1 s needs 1e+300 steps, more than the limit of 10 million");
         refused(3, run(scenario("dt.json", s -> s.put("dt_s", 1e-300))), "field dt_s: needs 8.95e+300 steps");
         for (String r : new String[] {run(PAPER, "--dt", "1e-9").err(), run(scenario("dur2.json", s -> s.put("duration_s", 1e300))).err()}) {
             assertFalse(r.contains("9223372036854775807"), r);
