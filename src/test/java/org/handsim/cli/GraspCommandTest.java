@@ -85,7 +85,7 @@ class GraspCommandTest {
     void badArgumentsExit2AndAMissingFileExits3() {
         CliTesting.Run r = CliTesting.run("grasp", MUG, "--friction", "-0.5");
         assertEquals(2, r.code());
-        assertTrue(r.err().contains("--friction must be a number >= 0, got -0.5"), r.err());
+        assertTrue(r.err().contains("--friction must be in [0, 10] (measured coefficients stay below 2; beyond 10 the friction cone is numerically a half-space), got -0.5"), r.err());
         r = CliTesting.run("grasp", MUG, "--edges", "0");
         assertEquals(2, r.code());
         assertTrue(r.err().contains("--edges must be between 1 and 1024, got 0"), r.err());
