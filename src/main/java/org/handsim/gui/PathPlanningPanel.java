@@ -183,7 +183,7 @@ public final class PathPlanningPanel {
                 double[] p = new double[3];
                 for (int i = 0; i < 3; i++) {
                     try {
-                        p[i] = Double.parseDouble(parts[i]);
+                        p[i] = org.handsim.util.Decimal.parse(parts[i]);
                     } catch (NumberFormatException e) {
                         throw new IllegalArgumentException(motor + " end: '" + parts[i] + "' is not a number");
                     }
