@@ -247,7 +247,10 @@ public final class ObjectsPanel {
             double[] position = {Widgets.number(x, "x"), Widgets.number(y, "y"), Widgets.number(z, "z")};
             double[] rotation = {d * Widgets.number(rx, "rotation x"), d * Widgets.number(ry, "rotation y"), d * Widgets.number(rz, "rotation z")};
             double sc = Widgets.number(scale, "scale");
-            if (!(sc > 0)) throw new IllegalArgumentException("scale must be > 0, got " + sc);
+            String scaleWhy = org.handsim.mesh.MeshLimits.scaleProblem(sc);   // the ranges scenario files have
+            if (scaleWhy != null) throw new IllegalArgumentException("scale " + scaleWhy);
+            String poseWhy = org.handsim.math.RigidTransform.poseProblem("position", position, "rotation (rad)", rotation);
+            if (poseWhy != null) throw new IllegalArgumentException(poseWhy);
             Scenario.Units u = chosenUnits() != null ? chosenUnits() : p.units();
             double mu = frictionValue();
             window.load(window.scenario().withObject(Scenario.ObjectPlacement.of(p.file(), position, rotation, sc, p.divisions(), u).withFriction(mu)));
