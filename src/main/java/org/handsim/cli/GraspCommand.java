@@ -17,6 +17,7 @@ import org.handsim.sim.SimulationException;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.Decimal;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -69,6 +70,8 @@ public final class GraspCommand implements Callable<Integer> {
         scenario = withFriction(scenario, friction, edges);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
+        Args.outputPath("--chart", chart);
+        if (chart != null && chart.getFileName() == null) throw CliError.usage("handsim: --chart must name a file base, got '" + chart + "'");
         if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + every);
         double mu = scenario.friction();
         int m = scenario.coneEdges();
@@ -98,7 +101,7 @@ public final class GraspCommand implements Callable<Integer> {
         GraspAssessment g = GraspAssessment.of(model, mu, m);
         if (chart != null) {
             if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
-            writeChart(chart, samples, model, scenario.name());
+            writeChart(spec.commandLine().getErr(), chart, samples, model, scenario.name());
         }
         spec.commandLine().getOut().println(JsonWriter.write(g.toJson()));
         return 0;
@@ -115,7 +118,18 @@ public final class GraspCommand implements Callable<Integer> {
         return s;
     }
 
-    private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+    /** BASE.csv, BASE.png and BASE.svg, published together ({@link OutputSet} of BASE's folder). */
+    private static void writeChart(java.io.PrintWriter err, Path chart, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+        Path folder = chart.toAbsolutePath().getParent();
+        String stem = chart.getFileName().toString();
+        OutputSet.Layout layout = new OutputSet.Layout(null, java.util.regex.Pattern.quote(stem) + "\\.(png|svg|csv)");
+        try (OutputSet set = Args.outputSet(err, "--chart", folder, layout)) {
+            writeChartFiles(set.dir().resolve(stem), samples, model, name);
+            set.publish();
+        }
+    }
+
+    private static void writeChartFiles(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
         double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
         ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
             "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "
