@@ -492,21 +492,7 @@ public final class OutputSet implements AutoCloseable {
         release(jvmKey);
     }
 
-    /** Deletes a folder and everything in it (links are removed, never followed). */
-    static void deleteTree(Path dir) throws IOException {
-        if (!Files.exists(dir, LinkOption.NOFOLLOW_LINKS)) return;
-        IOException last = null;
-        for (int attempt = 0; attempt < 3; attempt++) {   // a writer thread may still be adding a file
-            try (Stream<Path> s = Files.walk(dir)) {
-                List<Path> all = new ArrayList<>();
-                s.forEach(all::add);
-                all.sort(Comparator.reverseOrder());
-                for (Path p : all) Files.deleteIfExists(p);
-                return;
-            } catch (IOException | java.io.UncheckedIOException e) {
-                last = e instanceof IOException ? (IOException) e : ((java.io.UncheckedIOException) e).getCause();
-            }
-        }
-        throw last;
+    private static void deleteTree(Path dir) throws IOException {
+        Folders.deleteTree(dir);
     }
 }
