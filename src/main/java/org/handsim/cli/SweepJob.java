@@ -71,7 +71,9 @@ final class SweepJob implements IndexedJob<String> {
                         err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", ++done[0], runs, SafeText.line(sweep.runs().get(done[0] - 1).label()),
                             (System.nanoTime() - t0) / 1e9));
                         err.flush();
+                        if (done[0] == 1) Phase.reach("first-row");
                         if (done[0] == (runs + 1) / 2) Phase.reach("half-rows");
+                        if (done[0] == runs) Phase.reach("last-row");
                     });
                 } catch (java.io.UncheckedIOException e) {
                     throw e.getCause();

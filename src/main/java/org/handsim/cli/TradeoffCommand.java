@@ -67,7 +67,7 @@ public final class TradeoffCommand implements Callable<Integer> {
             Phase.reach("opened");
             for (Study s : chosen) {
                 long t0 = System.nanoTime();
-                StudyTable table = s.run(quick, new ProgressBar(err, "handsim tradeoff " + s.id()));
+                StudyTable table = s.run(quick, Phase.atHalf("half-" + s.id(), new ProgressBar(err, "handsim tradeoff " + s.id())));
                 TradeoffChart.write(table, set.dir());
                 double secs = (System.nanoTime() - t0) / 1e9;
                 Map<String, Object> m = new LinkedHashMap<>();

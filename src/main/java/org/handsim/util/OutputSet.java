@@ -382,6 +382,7 @@ public final class OutputSet implements AutoCloseable {
                 next = i + 1;
             }
         }
+        if (!plan.isEmpty()) Phase.reach(stepKind(plan.get(plan.size() - 1)));
         synchronized (this) {
             if (published) return;
             published = true;
