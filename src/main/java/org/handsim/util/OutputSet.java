@@ -49,15 +49,15 @@ import java.util.stream.Stream;
  *
  * <p><b>Lock.</b> One writer per folder, in any number of processes: the first holds a POSIX
  * record lock on {@code .handsim-writing/lock} for the whole command; the second is told who
- * holds it (the {@code waiting} callback, once) and waits. The lock file is deleted by its holder
- * when done; a waiter that then wins the lock of the deleted file sees the path no longer holds
- * its token and tries again. Threads of one JVM wait for each other in memory first (a JVM holds
- * one POSIX lock per file).
+ * holds it (the {@code waiting} callback, once) and waits. The lock file is marked released and
+ * deleted by its holder when done; a waiter that then wins the lock of the deleted file reads the
+ * mark and tries again. Threads of one JVM wait for each other in memory first: a process holds
+ * one POSIX lock per file, and closing any descriptor of the file releases it.
  */
 public final class OutputSet implements AutoCloseable {
     /** The folder beside the outputs that holds the lock and the private folders. */
     public static final String WORK = ".handsim-writing";
-    private static final String LOCK = "lock", MANIFEST = ".publish", STAGE = "stage-";
+    private static final String LOCK = "lock", MANIFEST = ".publish", STAGE = "stage-", RELEASED = "released\n";
     private static final long PID = ProcessHandle.current().pid();
     private static final SecureRandom RANDOM = new SecureRandom();
     private static final Set<Path> HELD_IN_THIS_JVM = new HashSet<>();
@@ -155,7 +155,7 @@ public final class OutputSet implements AutoCloseable {
 
     private static OutputSet lockAndStage(Path dir, Path key, Layout layout, List<Path> created, Consumer<String> waiting) throws IOException {
         Path work = dir.resolve(WORK);
-        String token = "pid " + PID + " " + Long.toHexString(RANDOM.nextLong()) + "\n";
+        String token = "pid " + PID + "\n";
         boolean told = false;
         while (true) {
             try {
@@ -192,20 +192,17 @@ public final class OutputSet implements AutoCloseable {
                 sleep(dir);
                 continue;
             }
-            ch.truncate(0);
-            ch.write(ByteBuffer.wrap(token.getBytes(StandardCharsets.US_ASCII)), 0);
-            ch.force(false);
-            String there;
-            try {
-                there = Files.readString(work.resolve(LOCK), StandardCharsets.US_ASCII);
-            } catch (IOException e) {
-                there = "";
-            }
-            if (!there.equals(token)) {   // we locked a lock file its holder had already deleted
-                lock.release();
+            // read through the locked channel only: closing any other descriptor of the file would
+            // release this process's lock (POSIX record locks)
+            ByteBuffer was = ByteBuffer.allocate(RELEASED.length());
+            ch.read(was, 0);
+            if (new String(was.array(), 0, was.position(), StandardCharsets.US_ASCII).equals(RELEASED)) {
+                lock.release();   // the lock of a file its holder had already deleted: try the one at the path now
                 ch.close();
                 continue;
             }
+            ch.truncate(0);
+            ch.write(ByteBuffer.wrap(token.getBytes(StandardCharsets.US_ASCII)), 0);
             OutputSet set = null;
             try {
                 recoverLeftovers(dir, work);
@@ -236,15 +233,21 @@ public final class OutputSet implements AutoCloseable {
     private static String holder(Path work) {
         try {
             String s = Files.readString(work.resolve(LOCK), StandardCharsets.US_ASCII).trim();
-            return s.startsWith("pid ") ? s.substring(0, s.indexOf(' ', 4) > 0 ? s.indexOf(' ', 4) : s.length()) : "starting";
+            return s.startsWith("pid ") ? s : "finishing";
         } catch (IOException | RuntimeException e) {
             return "finishing";
         }
     }
 
-    /** Deletes the lock file (still holding its lock), the work folder if empty, then releases the lock. */
+    /**
+     * Marks the lock file released and deletes it (still holding its lock), deletes the work
+     * folder if empty, then releases the lock. A writer that was waiting on the deleted file
+     * then gets its lock, reads the mark, and tries again with the file at the path.
+     */
     private static void unlock(Path work, FileChannel ch, FileLock lock) {
         try {
+            ch.truncate(0);
+            ch.write(ByteBuffer.wrap(RELEASED.getBytes(StandardCharsets.US_ASCII)), 0);
             Files.deleteIfExists(work.resolve(LOCK));
         } catch (IOException e) {
             // left for the next writer
