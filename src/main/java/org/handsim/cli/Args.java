@@ -69,6 +69,13 @@ final class Args {
         return p;
     }
 
+    /** Exit 2 unless a file output option names a file: not '', not a folder. */
+    static Path outputFile(String option, Path p) {
+        outputPath(option, p);
+        if (p != null && Files.isDirectory(p)) throw CliError.usage("handsim: " + option + " " + p + " is a folder, not a file");
+        return p;
+    }
+
     /**
      * Opens the output set of a command in {@code dir} ({@link OutputSet}): waits for another
      * writer of the folder, saying so once on standard error; exit 2 naming {@code option} if the

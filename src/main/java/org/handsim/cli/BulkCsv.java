@@ -34,7 +34,7 @@ final class BulkCsv {
         if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
         if (others) throw CliError.usage("handsim: --input/--output cannot be combined with " + othersNames);
         if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
-        Args.outputPath("--output", output);
+        Args.outputFile("--output", output);
         Args.notTheInput(input, "--input", output, "--output");
         int rows = 0;
         int inColumns = inHeader.split(",").length;

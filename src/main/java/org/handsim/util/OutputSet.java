@@ -331,6 +331,7 @@ public final class OutputSet implements AutoCloseable {
                 }
             }
         }
+        found.sort(null);
         return found;
     }
 
@@ -340,30 +341,11 @@ public final class OutputSet implements AutoCloseable {
      * have are removed. Call once every file is complete.
      */
     public void publish() throws IOException {
+        synchronized (this) {
+            if (steps != null || closed) throw new IllegalStateException("the set of " + target + " is published or closed already");
+        }
         Phase.reach("staged");
-        List<String> files = new ArrayList<>();
-        try (Stream<Path> s = Files.walk(stage)) {
-            for (Path p : (Iterable<Path>) s::iterator) {
-                if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) continue;
-                String rel = stage.relativize(p).toString().replace(java.io.File.separatorChar, '/');
-                if (!rel.startsWith(".") && !rel.contains("/.")) files.add(rel);
-            }
-        }
-        files.sort(Comparator.comparingInt(this::rank).thenComparing(Comparator.naturalOrder()));
-        Set<String> fresh = new TreeSet<>(files);
-        checkMembers();
-        for (String rel : files) {
-            Path p = target.resolve(rel);
-            if (Files.exists(p, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS) && !Files.isSymbolicLink(p)) {
-                throw new Refused(p + " is " + kind(p) + ", not a file this command may replace");
-            }
-        }
-        List<String[]> plan = new ArrayList<>();
-        String marker = layout.marker();
-        if (marker != null && fresh.contains(marker)) plan.add(new String[] {"clear", marker});
-        for (String rel : files) if (rank(rel) < 2) plan.add(new String[] {"move", rel});
-        for (String rel : existingMembers()) if (!fresh.contains(rel)) plan.add(new String[] {"drop", rel});
-        for (String rel : files) if (rank(rel) == 2) plan.add(new String[] {"move", rel});
+        List<String[]> plan = plannedSteps();
         StringBuilder text = new StringBuilder();
         for (String[] step : plan) text.append(step[0]).append(' ').append(step[1]).append('\n');
         Path partial = stage.resolve(MANIFEST + ".partial");
@@ -392,6 +374,38 @@ public final class OutputSet implements AutoCloseable {
             deleteTree(stage);
         }
         Phase.reach("published");
+    }
+
+    /**
+     * The publication's steps, in order: {@code clear} the old marker, {@code move} each table,
+     * then each chart, {@code drop} the previous set's files this one does not have, {@code move}
+     * the marker.
+     */
+    List<String[]> plannedSteps() throws IOException {
+        List<String> files = new ArrayList<>();
+        try (Stream<Path> s = Files.walk(stage)) {
+            for (Path p : (Iterable<Path>) s::iterator) {
+                if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) continue;
+                String rel = stage.relativize(p).toString().replace(java.io.File.separatorChar, '/');
+                if (!rel.startsWith(".") && !rel.contains("/.")) files.add(rel);
+            }
+        }
+        files.sort(Comparator.comparingInt(this::rank).thenComparing(Comparator.naturalOrder()));
+        Set<String> fresh = new TreeSet<>(files);
+        checkMembers();
+        for (String rel : files) {
+            Path p = target.resolve(rel);
+            if (Files.exists(p, LinkOption.NOFOLLOW_LINKS) && !Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS) && !Files.isSymbolicLink(p)) {
+                throw new Refused(p + " is " + kind(p) + ", not a file this command may replace");
+            }
+        }
+        List<String[]> plan = new ArrayList<>();
+        String marker = layout.marker();
+        if (marker != null && fresh.contains(marker)) plan.add(new String[] {"clear", marker});
+        for (String rel : files) if (rank(rel) < 2) plan.add(new String[] {"move", rel});
+        for (String rel : existingMembers()) if (!fresh.contains(rel)) plan.add(new String[] {"drop", rel});
+        for (String rel : files) if (rank(rel) == 2) plan.add(new String[] {"move", rel});
+        return plan;
     }
 
     /** The phase a step belongs to, named for {@link Phase} (the points between them). */
