@@ -37,7 +37,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "resolution against analytic contacts), 3-kdop (k of the k-DOPs and brute",
         "force, the hand grasping each vrml/objects model), 4-integrators (energy",
         "drift of a free finger). The full run takes a few minutes; --quick runs",
-        "fewer settings (a smoke test)."})
+        "fewer settings (a smoke test). DIR holds one run's files: --only removes",
+        "those of the studies it did not run."})
 public final class TradeoffCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 
