@@ -167,6 +167,14 @@ class OutputSafetyTest {
                 CleanOutputTest.assertOneLineNoStackTrace(out, r.err());
                 assertEquals(FK_IN, Files.readString(in));
             }
+            Object[][] others = {{"ik", IK_IN}, {"id", ID_IN}};
+            for (Object[] o : others) {
+                Path other = dir.resolve(o[0] + ".csv");
+                Files.writeString(other, (String) o[1]);
+                CliTesting.Run r = CliTesting.run((String) o[0], "--input", other.toString(), "--output", other.toString());
+                assertEquals(2, r.code(), o[0] + ": " + r.err());
+                assertEquals(o[1], Files.readString(other));
+            }
             Path wrl = Files.copy(cube(), dir.resolve("cube.wrl"));
             String before = Files.readString(wrl);
             CliTesting.Run r = CliTesting.run("mesh", wrl.toString(), "--stl", wrl.toString());
