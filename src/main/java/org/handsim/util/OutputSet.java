@@ -342,7 +342,8 @@ public final class OutputSet implements AutoCloseable {
      */
     public void publish() throws IOException {
         synchronized (this) {
-            if (steps != null || closed) throw new IllegalStateException("the set of " + target + " is published or closed already");
+            if (closed) throw new IOException("not publishing " + target + ": the program is being stopped");
+            if (steps != null) throw new IllegalStateException("the set of " + target + " is published already");
         }
         Phase.reach("staged");
         List<String[]> plan = plannedSteps();
