@@ -36,7 +36,9 @@ class HandDescriptionTest {
         assertEquals(2, h.finger(3).activeJoints());
         assertEquals(0.16252678, h.finger(1).link(0).mass());
         assertEquals(-0.03629026, h.finger(3).link(2).com()[0]);
-        assertEquals(0.0000572, h.finger(2).link(0).inertia()[LinkInertia.XY]);
+        // Table III prints +∫xy dm = 0.0000572 (about the origin of {k1}); the matrix entry is its negative
+        assertEquals(-0.0000572, h.finger(2).link(0).inertia()[LinkInertia.XY]);
+        assertEquals(0.0000658, h.finger(2).link(0).inertia()[LinkInertia.XX]);
         assertEquals(1.26, h.tauBreak());
         assertEquals(17500, h.fingerCountsMax());
         assertEquals(3150, h.spreadCountsMax());
