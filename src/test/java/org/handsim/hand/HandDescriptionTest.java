@@ -81,6 +81,18 @@ class HandDescriptionTest {
         assertTrue(m.contains("mass_properties.links[1].inertia_kgm2") && m.contains("positive definite"), m);
     }
 
+    /**
+     * Link 1's listed product with the other sign (as if +5.72e-5 were the matrix element) is no
+     * body about the centre of mass (an eigenvalue of −5.44e-5 kg·m², TableThreeReadingTest):
+     * refused, naming the link.
+     */
+    @Test
+    void aTensorNoBodyHasIsNamed() throws IOException {
+        String t = resourceText().replace("\"xy\": 0.0000572", "\"xy\": -0.0000572");
+        String m = messageFor(t);
+        assertTrue(m.contains("mass_properties.links[0].inertia_kgm2") && m.contains("not a physical body"), m);
+    }
+
     @Test
     void wrongTypeIsNamed() throws IOException {
         String t = resourceText().replace("\"tau_break_Nm\": 1.26", "\"tau_break_Nm\": \"high\"");
