@@ -551,22 +551,23 @@ public final class HandModel {
 
     /**
      * What finger k's held inner joint resists, [lo, hi] N·m on the torque the contacts put on
-     * it, into out[0..1] (DESIGN.md decision 6, {@link GraspAssessment#jointLimit}: the same
-     * limits as the hold LP): stalled before any breakaway, the clutch is engaged and the joint
-     * resists |τ| ≤ τ_break; after a breakaway its worm holds it up to the finger rating's
-     * torque, and it keeps at least the load the clutch had put on it when it broke away (the
-     * worm does not let the link back off: the preload stays, as in the paper's Fig. 7).
+     * it, into out[0..1] (DESIGN.md, "Which torques the contacts carry"). It is held by its
+     * self-locking worm, which no load on the link back-drives and whose load never reaches the
+     * clutch: hi is the worm's limit of the hold LP ({@link GraspAssessment#jointLimit} of a joint
+     * its worm holds: the finger rating's torque, decision 6). After a breakaway the joint keeps
+     * at least the load the clutch had put on it (the worm does not let the link back off, so the
+     * preload stays, and τk2 stays at τ_break as in the paper's Fig. 7): lo = that load. Stalled
+     * before any breakaway nothing preloads it: lo = −hi.
      */
     private void innerBounds(int k, double[] out) {
         FingerClutch c = clutch[k - 1];
-        double limit = GraspAssessment.jointLimit(hand, k, 2, c.engaged());
-        if (c.engaged()) {
-            out[0] = -limit;
-            out[1] = limit;
+        double worm = GraspAssessment.jointLimit(hand, k, 2, false);
+        out[1] = worm;
+        if (c.innerHeldByWorm()) {
+            out[0] = -worm;
         } else {
             c.transmittedTorque(boundScratch);
-            out[0] = Math.min(boundScratch[0], limit);
-            out[1] = limit;
+            out[0] = Math.min(boundScratch[0], worm);
         }
     }
 

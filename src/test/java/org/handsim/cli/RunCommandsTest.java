@@ -23,11 +23,13 @@ class RunCommandsTest {
         assertEquals(Recorder.header(), trace.get(0));
         assertTrue(trace.get(0).startsWith("t_s,qM1_counts,theta11_rad,theta12_rad,theta13_rad,dtheta12_rad_s,dtheta13_rad_s,"
             + "ddtheta12_rad_s2,ddtheta13_rad_s2,tau12_Nm,tau13_Nm,state1,contacts1,force1_N,qM2_counts"));
-        assertTrue(trace.get(0).endsWith("state3,contacts3,force3_N,qM4_counts"));
+        assertTrue(trace.get(0).endsWith("state3,contacts3,force3_N,qM4_counts,clutch1_Nm,clutch2_Nm,clutch3_Nm,"
+            + "residual1_Nm,residual2_Nm,residual3_Nm"), "the new columns at the end, the old ones where they were");
         assertEquals(1 + 8948, trace.size(), "header, t = 0, then 8947 steps");
         String summary = Files.readString(out.resolve("summary.json"));
         for (String key : new String[] {"\"scenario\"", "\"sim_time_s\"", "\"steps\"", "\"dt_s\"", "\"wall_time_s\"", "\"steps_per_s\"",
-            "\"breakaway_time_s\"", "\"breakaway_torque_Nm\"", "\"breakaway_force_N\"", "\"final_joints_rad\"", "\"max_contact_force_N\""}) {
+            "\"breakaway_time_s\"", "\"breakaway_torque_Nm\"", "\"breakaway_force_N\"", "\"final_joints_rad\"", "\"max_contact_force_N\"",
+            "\"torque_residual_Nm\""}) {
             assertTrue(summary.contains(key), key);
         }
         for (String f : new String[] {"fig7_finger3.png", "fig7_finger3.svg", "fig8_finger3.png", "fig8_finger3.svg"}) {
