@@ -92,7 +92,7 @@ public final class ContactForces {
     private boolean[] edgePassive = new boolean[0], edgeSkip = new boolean[0];
     private final double[] tauStar = new double[3];
     // a held joint (solveHeld): the torques of the solve, the reaction, scratch
-    private final double[] tauHeld = new double[3], fScratch = new double[3];
+    private final double[] tauHeld = new double[3];
     private double held = Double.NaN;
 
     /**
@@ -117,10 +117,11 @@ public final class ContactForces {
         for (int i = 0; i < n; i++) {
             double norm2 = 0;
             for (int m = 0; m < 3; m++) {
+                // every joint of the contact's chain (jointTorque reports them all); the solve uses firstJoint..2
                 double a = 0;
-                if (m >= firstJoint && m < links[i]) a = arm(frames, m, points, dirs, i);
+                if (m < links[i]) a = arm(frames, m, points, dirs, i);
                 arms[3 * i + m] = a;
-                norm2 += a * a;
+                if (m >= firstJoint) norm2 += a * a;
             }
             undetermined[i] = Math.sqrt(norm2) < MIN_ARM_M;
             mag[i] = 0;
@@ -154,8 +155,8 @@ public final class ContactForces {
             double px = points[3 * i], py = points[3 * i + 1], pz = points[3 * i + 2];
             for (int jm = 0; jm < 3; jm++) {
                 int o = 9 * i + 3 * jm;
-                boolean loads = jm >= firstJoint && jm < links[i];
-                if (loads) {
+                // every joint of the contact's chain (jointTorque reports them all); the solve uses firstJoint..2
+                if (jm < links[i]) {
                     int f = 12 * jm;
                     double zx = frames[f + 2], zy = frames[f + 6], zz = frames[f + 10];
                     double rx = px - frames[f + 3], ry = py - frames[f + 7], rz = pz - frames[f + 11];
@@ -235,12 +236,12 @@ public final class ContactForces {
         if (firstJoint < 0 || firstJoint > 2) throw new IllegalArgumentException("held joint must be 0..2, got " + firstJoint);
         for (int jm = 0; jm < 3; jm++) tauHeld[jm] = jm == firstJoint ? 0 : tau[jm];
         solveRows(frames, firstJoint + 1, tauHeld, n, points, dirs, links, cones, m);
-        double s = torqueOn(frames, firstJoint, n, points, links);
+        double s = torqueOn(firstJoint, n);
         double bound = s < lo ? lo : s > hi ? hi : s;
         if (bound != s) {
             tauHeld[firstJoint] = bound;
             solveRows(frames, firstJoint, tauHeld, n, points, dirs, links, cones, m);
-            s = torqueOn(frames, firstJoint, n, points, links);
+            s = torqueOn(firstJoint, n);
             residual = largestResidual(firstJoint + 1, tauHeld, n);
         }
         held = s;
@@ -252,17 +253,10 @@ public final class ContactForces {
         else solveWithFriction(frames, r0, t, n, points, dirs, links, cones, m);
     }
 
-    /** Eq (9): the torque the last solve's forces put on joint jm (turning about frame jm's z), N·m. */
-    private double torqueOn(double[] frames, int jm, int n, double[] points, int[] links) {
-        int f = 12 * jm;
-        double zx = frames[f + 2], zy = frames[f + 6], zz = frames[f + 10];
+    /** Eq (9): the torque the last solve's forces put on joint jm, N·m. */
+    private double torqueOn(int jm, int n) {
         double sum = 0;
-        for (int i = 0; i < n; i++) {
-            if (links[i] <= jm) continue;
-            double rx = points[3 * i] - frames[f + 3], ry = points[3 * i + 1] - frames[f + 7], rz = points[3 * i + 2] - frames[f + 11];
-            forceVector(i, fScratch, 0);
-            sum += (zy * rz - zz * ry) * fScratch[0] + (zz * rx - zx * rz) * fScratch[1] + (zx * ry - zy * rx) * fScratch[2];
-        }
+        for (int i = 0; i < n; i++) sum += jointTorque(i, jm);
         return sum;
     }
 
