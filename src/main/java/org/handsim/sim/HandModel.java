@@ -250,6 +250,7 @@ public final class HandModel {
         int i = k - 1;
         if (events && lazy && idle(k)) {
             counters[Counter.FINGERS_IDLE.ordinal()]++;
+            watchResidual(i);                  // an idle finger keeps its residual (and its stretch goes on)
             return;
         }
         counters[Counter.FINGER_UPDATES.ordinal()]++;
@@ -774,7 +775,7 @@ public final class HandModel {
 
     /**
      * Everything the user should know before trusting the run so far, one sentence each: the
-     * {@link #startWarnings()}, then, per finger in order of time, each stretch of steps whose
+     * {@link #startWarnings()}, then, in the order they ended (one still going on: last), each stretch of steps whose
      * contact forces missed the joint torques by more than {@link #RESIDUAL_WARN_NM} (one warning
      * per stretch, naming the finger, its start and end time and its largest residual; a stretch
      * still going on ends now).
