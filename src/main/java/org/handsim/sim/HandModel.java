@@ -775,10 +775,10 @@ public final class HandModel {
 
     /**
      * Everything the user should know before trusting the run so far, one sentence each: the
-     * {@link #startWarnings()}, then, in the order they ended (one still going on: last), each stretch of steps whose
-     * contact forces missed the joint torques by more than {@link #RESIDUAL_WARN_NM} (one warning
-     * per stretch, naming the finger, its start and end time and its largest residual; a stretch
-     * still going on ends now).
+     * {@link #startWarnings()}, then each stretch of steps whose contact forces missed the joint
+     * torques by more than {@link #RESIDUAL_WARN_NM}, in the order they ended (one warning per
+     * stretch, naming the finger, its start and end time and its largest residual; a stretch
+     * still going on ends now, last).
      */
     public java.util.List<String> warnings() {
         java.util.List<String> w = startWarnings();

@@ -65,6 +65,45 @@ class RunCommandsTest {
         assertTrue(Files.readString(dir.resolve("ok").resolve("summary.json")).contains("\"warnings\": []"));
     }
 
+    /**
+     * A state with no static equilibrium is said once per finger and stretch, not per step: the
+     * README screenshot's scene (the millimetre mug placed clear on the palm axis, every finger
+     * closing until its outer link stalls on the rim before any breakaway) without friction, where
+     * no push along the normals carries the stalled outer joints' torques with the inner joints'
+     * reactions within their worms' limit (DESIGN.md, "Which torques the contacts carry"). The
+     * trace's residual columns show it, summary.json has the run's largest per finger, and each
+     * finger's warning (standard error and summary.json) names it and the stretch's times.
+     */
+    @Test
+    void aRunWithoutStaticEquilibriumWarnsOncePerFingerAndStretch() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-run");
+        org.handsim.sim.Scenario s = org.handsim.sim.Scenario.load(Home.paperScenario());
+        org.handsim.sim.ObjectPlacer.Placed p = org.handsim.sim.ObjectPlacer.place(s, Home.dir().resolve("vrml/objects/mug_mm.stl"),
+            org.handsim.sim.Scenario.DEFAULT_DIVISIONS, 1, org.handsim.sim.Scenario.Units.MM);
+        s = s.withObject(p.placement()).withFriction(0).withDuration(2.4);
+        for (int m = 0; m < 3; m++) s = s.withMotor(m, new org.handsim.sim.trajectory.Trapezoid(0, 17500, 5000, 25000));
+        Path file = dir.resolve("stalled.json");
+        Files.writeString(file, org.handsim.util.JsonWriter.pretty(s.toJson(dir)));
+        CliTesting.Run r = CliTesting.run("run", file.toString(), "--no-charts", "--out", dir.resolve("out").toString());
+        assertEquals(0, r.code(), r.err());
+        String summary = Files.readString(dir.resolve("out").resolve("summary.json"));
+        List<String> trace = Files.readAllLines(dir.resolve("out").resolve("trace.csv"));
+        String[] header = trace.get(0).split(",");
+        for (int k = 1; k <= 3; k++) {
+            String prefix = "finger " + k + ": the contact forces cannot carry its joint torques from t = ";
+            int at = r.err().indexOf("handsim: warning: " + prefix);
+            assertTrue(at >= 0, r.err());
+            assertEquals(at, r.err().lastIndexOf("handsim: warning: " + prefix), "once per finger: " + r.err());
+            assertTrue(summary.contains("\"" + prefix), summary);
+            int col = java.util.Arrays.asList(header).indexOf("residual" + k + "_Nm");
+            double largest = 0;
+            for (String line : trace.subList(1, trace.size())) largest = Math.max(largest, Double.parseDouble(line.split(",")[col]));
+            assertTrue(largest > 0.05, "finger " + k + ": the trace shows the residual: " + largest);
+            assertTrue(summary.replaceAll("\\s", "").contains("\"torque_residual_Nm\":" + org.handsim.util.Decimal.format(largest)),
+                "summary.json has the trace's largest residual " + largest);
+        }
+    }
+
     @Test
     void badScenarioIsALoadErrorNamingTheField() throws Exception {
         Path dir = Files.createTempDirectory("handsim-run");
