@@ -37,6 +37,12 @@ package org.handsim.contact;
  * ({@link #leastSquaresTorque}). μ = 0 is the frictionless {@link #solve} (the cones are
  * rays), which callers use then: its forces are today's.
  *
+ * <p><b>A held joint</b> ({@link #solveHeld}): a joint whose torque is not set by the drive but
+ * is the reaction of what holds it (the BarrettHand's inner joint, held by its self-locking
+ * worm after a breakaway) is free within [lo, hi]; the others are carried exactly. Either way
+ * {@link #residual()} says how far the forces are from doing that — nonzero when no forces in
+ * the cones can (the finger has no static equilibrium in that state).
+ *
  * <p>Frames: points, directions and the 48-value frame array ({k0}..{k3}, 12 row-major values
  * each, as {@code FingerKinematics.frames}) must all be in one frame (palm or world).
  *

@@ -279,9 +279,10 @@ public final class FingerClutch {
     /**
      * The torque the clutch transmits to the object through the held links, beyond what moving
      * the links takes (N·m), into out[0] (inner joint) and out[1] (outer joint).
-     * BLOCKED: k_clutch·(q − q_contact)/125° on the inner joint; BROKEN: the inner joint stays
-     * jammed with the torque it had at the breakaway; STALLED: the motor winds the blocked
-     * joint through the same spring up to the stall torque.
+     * BLOCKED: k_clutch·(q − q_contact)/125° on the inner joint; BROKEN (and STALLED after a
+     * breakaway): the load the clutch left on the inner link at the breakaway, which its worm
+     * keeps (τ_break less gravity's share); STALLED: the motor winds the blocked outer joint
+     * through the same spring up to the stall torque.
      */
     public void transmittedTorque(double[] out) {
         out[0] = 0;

@@ -21,7 +21,9 @@ import org.handsim.util.StepClock;
  *       motor set-points q_Mk(t) → clutch state machine → joint angles, velocities and
  *       accelerations → forward kinematics → link meshes placed → collision with the object →
  *       patches → point contacts → joint torques (Lagrange–Euler plus the clutch spring) →
- *       contact forces (eq 11 as least squares) → breakaway test (eq 9) → next state.</li>
+ *       contact forces (eq 11: the driven joints' torques carried, a held joint's reaction
+ *       within its bounds, the residual where no forces do) → breakaway test (the torque
+ *       through the clutch against τ_break) → next state.</li>
  *   <li><b>Fixed relations</b> — the private methods {@link #placeFinger}, {@link #collide},
  *       {@link #torquesAndForces} that the step calls.</li>
  * </ol>
@@ -88,6 +90,10 @@ public final class HandModel {
     private final double[] residual = new double[3], maxResidual = new double[3];
     private final double[] episodeStart = new double[3], episodeEnd = new double[3], episodeMax = new double[3];
     private final java.util.List<String> residualWarnings = new java.util.ArrayList<>();
+    private final int[] episodes = new int[3];
+    private final double[] moreEpisodesMax = new double[3];
+    /** Stretches without equilibrium warned about one by one, per finger; the rest are counted in one line. */
+    static final int MAX_EPISODE_WARNINGS = 20;
     private final double[] clutchTorque = new double[3];
     private final long[] counters = new long[Counter.values().length];
     private final int[] contactsAtStart = new int[3];
@@ -168,6 +174,8 @@ public final class HandModel {
         step = 0;
         t = 0;
         residualWarnings.clear();
+        java.util.Arrays.fill(episodes, 0);
+        java.util.Arrays.fill(moreEpisodesMax, 0);
         if (recorder != null) recorder.clear();
         java.util.Arrays.fill(counters, 0);
         sampleSpread(0);
@@ -290,7 +298,9 @@ public final class HandModel {
     }
 
     private void endEpisode(int i) {
-        residualWarnings.add(episodeWarning(i));
+        // a long run that keeps cycling through such a state says so a bounded number of times
+        if (++episodes[i] <= MAX_EPISODE_WARNINGS) residualWarnings.add(episodeWarning(i));
+        else moreEpisodesMax[i] = Math.max(moreEpisodesMax[i], episodeMax[i]);
         episodeStart[i] = Double.NaN;
     }
 
@@ -573,8 +583,8 @@ public final class HandModel {
     }
 
     /**
-     * True when the contact-force solve of finger i would get what its last one got — which
-     * joints carry a known torque ({@code first}), the torques on k2, k3, the frames of joints
+     * True when the contact-force solve of finger i would get what its last one got — whether
+     * k2 is held ({@code held}) and its bounds, the torques on k2, k3, the frames of joints
      * 1–3 and every contact's link, point and push direction — and records them otherwise (for
      * the next call). No allocation once the key array has grown to the contact count.
      */
@@ -785,6 +795,10 @@ public final class HandModel {
         w.addAll(residualWarnings);
         for (int k = 1; k <= 3; k++) {
             int i = k - 1;
+            if (episodes[i] > MAX_EPISODE_WARNINGS) {
+                w.add(String.format(java.util.Locale.ROOT, "finger %d: %d more stretches without a static equilibrium (largest residual %.3g N*m)",
+                    k, episodes[i] - MAX_EPISODE_WARNINGS, moreEpisodesMax[i]));
+            }
             if (!Double.isNaN(episodeStart[i])) w.add(episodeWarning(i));
         }
         return w;

@@ -174,7 +174,7 @@ public final class Recorder implements AutoCloseable {
      * a fixed pool and hands full chunks over (one hand-over per {@value #CHUNK} rows, so the
      * threads rarely wake each other); it allocates nothing and waits only when the writer is a
      * whole pool behind. The pool holds the whole run up to {@value #MAX_BUFFERED} rows
-     * (21 MB), so a run of that length never waits for its trace.
+     * (25 MB), so a run of that length never waits for its trace.
      */
     private static final class RowWriter extends Thread {
         static final int CHUNK = 256;
