@@ -7,8 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import org.handsim.sim.Home;
 import org.handsim.sim.Recorder;
+import org.handsim.util.Json;
+import org.handsim.util.JsonWriter;
 import org.junit.jupiter.api.Test;
 
 /** `handsim run` and `handsim sweep`: the files they promise, and their failures. */
@@ -102,6 +105,51 @@ class RunCommandsTest {
             assertTrue(summary.replaceAll("\\s", "").contains("\"torque_residual_Nm\":" + org.handsim.util.Decimal.format(largest)),
                 "summary.json has the trace's largest residual " + largest);
         }
+    }
+
+    /**
+     * One clutch criterion (DESIGN.md decision 1): the paper's experiment with gravity along the
+     * palm's −z, which loads joint 32, so the torque through the clutch is τ_dyn,32 (gravity's
+     * share, C) plus the springs'. No row of trace.csv has clutch3_Nm above τ_break = 1.26 N·m,
+     * summary.json's breakaway torque is τ_break, and the breakaway count is where the springs
+     * carry τ_break − C: q_break = q_contact + (1.26 − C)/(k_clutch · rad per count), with C read
+     * from the trace (τ32 less the springs' k_clutch·(q − q_contact) in a BLOCKED row) — earlier
+     * than without gravity, where the springs carry all of 1.26.
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void withGravityOnJoint32TheClutchNeverTransmitsMoreThanTauBreak() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-run");
+        Path paper = Home.paperScenario();
+        Map<String, Object> s = (Map<String, Object>) Json.parse(paper.toString(), Files.readString(paper));
+        s.put("gravity_m_s2", List.of(0, 0, -9.81));
+        ((Map<String, Object>) s.get("object")).put("file", Home.dir().resolve("vrml/objects/cube.wrl").toString());
+        Path file = Files.writeString(dir.resolve("gravity.json"), JsonWriter.pretty(s));
+        CliTesting.Run r = CliTesting.run("run", file.toString(), "--no-charts", "--out", dir.resolve("out").toString());
+        assertEquals(0, r.code(), r.err());
+        List<String> trace = Files.readAllLines(dir.resolve("out").resolve("trace.csv"));
+        List<String> h = List.of(trace.get(0).split(","));
+        int clutch = h.indexOf("clutch3_Nm"), tau = h.indexOf("tau32_Nm"), state = h.indexOf("state3"), q = h.indexOf("qM3_counts");
+        Map<String, Object> summary = (Map<String, Object>) Json.parse("summary", Files.readString(dir.resolve("out").resolve("summary.json")));
+        Map<String, Object> f3 = ((List<Map<String, Object>>) summary.get("fingers")).get(2);
+        double qc = ((Number) f3.get("contact_counts")).doubleValue(), qb = ((Number) f3.get("breakaway_counts")).doubleValue();
+        double perCount = org.handsim.hand.HandDescription.barrettHand().kClutch() * Math.PI / 180 / 125;
+        double largest = 0, gravityShare = Double.NaN;
+        for (String line : trace.subList(1, trace.size())) {
+            String[] c = line.split(",");
+            largest = Math.max(largest, Double.parseDouble(c[clutch]));
+            if (c[state].equals("BLOCKED") && Double.isNaN(gravityShare)) {
+                gravityShare = Double.parseDouble(c[tau]) - perCount * (Double.parseDouble(c[q]) - qc);
+                assertEquals(Double.parseDouble(c[tau]), Double.parseDouble(c[clutch]), 1e-12, "BLOCKED: the clutch carries τ32");
+            }
+        }
+        assertTrue(gravityShare > 0.01, "gravity loads joint 32: " + gravityShare);
+        assertTrue(largest <= 1.26 + 1e-9, "no row above τ_break: " + largest);
+        assertTrue(largest > 1.25, "the clutch reaches τ_break: " + largest);
+        assertEquals(1.26, ((Number) f3.get("breakaway_torque_Nm")).doubleValue());
+        assertEquals(qc + (1.26 - gravityShare) / perCount, qb, 1e-6, "the springs carry τ_break less gravity's share");
+        assertEquals(1.80, ((Number) f3.get("breakaway_time_s")).doubleValue(), 0.02);
+        assertTrue(((Number) f3.get("torque_residual_Nm")).doubleValue() <= 1e-9);
     }
 
     @Test
