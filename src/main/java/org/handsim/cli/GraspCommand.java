@@ -17,6 +17,7 @@ import org.handsim.sim.SimulationException;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.Decimal;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -31,11 +32,12 @@ import picocli.CommandLine.Model.CommandSpec;
         "  {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
         "   \"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,",
         "   \"volume\":v,\"hold_N\":{\"+x\":F,\"-x\":F,\"+y\":F,\"-y\":F,\"+z\":F,\"-z\":F},",
-        "   \"hold_min_N\":F}",
+        "   \"hold_min_N\":F,\"torque_residual_Nm\":[r1,r2,r3]}",
         "World frame; normals point into the object; epsilon and volume of the grasp",
         "wrench space (torques divided by the object's radius R); hold_N: the largest",
         "force through the object's centroid the grasp holds with every joint within",
-        "its limit, at most the hand's rated 58.84 N.",
+        "its limit, at most the hand's rated 58.84 N; torque_residual_Nm: per finger",
+        "how far its contact forces miss its joint torques (0: a static equilibrium).",
         "--chart BASE also evaluates the grasp every --every seconds along the run and",
         "writes BASE.png, BASE.svg (epsilon and the smallest hold against time) and",
         "BASE.csv."})
@@ -69,6 +71,8 @@ public final class GraspCommand implements Callable<Integer> {
         scenario = withFriction(scenario, friction, edges);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
+        Args.outputPath("--chart", chart);
+        if (chart != null && chart.getFileName() == null) throw CliError.usage("handsim: --chart must name a file base, got '" + chart + "'");
         if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + every);
         double mu = scenario.friction();
         int m = scenario.coneEdges();
@@ -98,7 +102,7 @@ public final class GraspCommand implements Callable<Integer> {
         GraspAssessment g = GraspAssessment.of(model, mu, m);
         if (chart != null) {
             if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
-            writeChart(chart, samples, model, scenario.name());
+            writeChart(spec.commandLine().getErr(), chart, samples, model, scenario.name());
         }
         spec.commandLine().getOut().println(JsonWriter.write(g.toJson()));
         return 0;
@@ -115,7 +119,18 @@ public final class GraspCommand implements Callable<Integer> {
         return s;
     }
 
-    private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+    /** BASE.csv, BASE.png and BASE.svg, published together ({@link OutputSet} of BASE's folder). */
+    private static void writeChart(java.io.PrintWriter err, Path chart, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+        Path folder = chart.toAbsolutePath().getParent();
+        String stem = chart.getFileName().toString();
+        OutputSet.Layout layout = new OutputSet.Layout(null, java.util.regex.Pattern.quote(stem) + "\\.(png|svg|csv)");
+        try (OutputSet set = Args.outputSet(err, "--chart", folder, layout)) {
+            writeChartFiles(set.dir().resolve(stem), samples, model, name);
+            set.publish();
+        }
+    }
+
+    private static void writeChartFiles(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
         double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
         ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
             "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "

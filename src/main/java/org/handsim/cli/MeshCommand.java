@@ -90,6 +90,8 @@ public final class MeshCommand implements Callable<Integer> {
         if (divisions < 3 || divisions > 100_000) throw CliError.usage("handsim mesh: --divisions must be in 3..100000, got " + divisions);
         String scaleWhy = MeshLimits.scaleProblem(scale);
         if (scaleWhy != null) throw CliError.usage("handsim mesh: --scale " + scaleWhy);
+        Args.notTheInput(file, "FILE", Args.outputFile("--obj", obj), "--obj");
+        Args.notTheInput(file, "FILE", Args.outputFile("--stl", stl), "--stl");
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         long t0 = System.nanoTime();

@@ -16,6 +16,8 @@ import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
+import org.handsim.util.OutputSet;
+import org.handsim.util.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -38,6 +40,9 @@ import picocli.CommandLine.Model.CommandSpec;
         "  standoff_m,contacts,force_closure,epsilon,volume,hold_min_N,final_state1,",
         "  final_state2,final_state3,sim_time_s,wall_s,error"})
 public final class PlanCommand implements Callable<Integer> {
+    /** The files of a plan's folder: plan.json is published last. */
+    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("plan.json",
+        "plan\\.csv|plan\\.json|best/[0-9][0-9]\\.json|epsilon-(histogram|directions)\\.(png|svg)", "best");
     @Spec CommandSpec spec;
 
     @Parameters(index = "0", paramLabel = "TARGET", description = {"an object file (any format scenarios read), or a",
@@ -95,25 +100,33 @@ public final class PlanCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
         }
-        Path dir = out != null ? out : Path.of("out", "plan-" + planSpec.name());
+        Path dir = out != null ? Args.outputPath("--out", out) : Path.of("out", "plan-" + planSpec.name());
         if (unit == null && !target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json")) {
             err.println("handsim plan: " + target.getFileName() + ": units " + planSpec.units().id() + " by its size (--units to choose)");
         }
         ProgressBar bar = new ProgressBar(err, "handsim plan " + planSpec.name());
         long t0 = System.nanoTime();
         Map<String, Object> summary;
-        PlanOutput output = new PlanOutput(dir, runner, rows -> bar.accept(rows / (double) trials));
-        eng.announce(err, "plan " + planSpec.name());
-        try (output) {
-            try {
-                eng.engine().run(new PlanJob(planSpec), trials, eng.settings("handsim plan " + planSpec.name()), output);
-            } catch (Exception e) {
-                throw eng.failed("plan " + planSpec.name(), e);
+        PlanOutput output;
+        // every file goes to the set's private folder; the folder gets them all, or none, at the end
+        try (OutputSet set = Args.outputSet(err, "--out", dir, LAYOUT)) {
+            Phase.reach("opened");
+            java.util.function.DoubleConsumer progress = Phase.atHalf("half-trials", bar);
+            output = new PlanOutput(set.dir(), dir, runner, rows -> progress.accept(rows / (double) trials));
+            eng.announce(err, "plan " + planSpec.name());
+            try (output) {
+                try {
+                    eng.engine().run(new PlanJob(planSpec), trials, eng.settings("handsim plan " + planSpec.name()), output);
+                } catch (Exception e) {
+                    throw eng.failed("plan " + planSpec.name(), e);
+                }
+                double wall = (System.nanoTime() - t0) / 1e9;
+                summary = output.finish(wall, engine);
             }
-            double wall = (System.nanoTime() - t0) / 1e9;
-            summary = output.finish(wall, engine);
+            writeCharts(output, planSpec, set.dir());
+            Phase.reach("charts");
+            set.publish();
         }
-        writeCharts(output, planSpec, dir);
         TrialResult best = output.bestFirst().isEmpty() ? null : output.bestFirst().get(0);
         stdout.println(String.format(Locale.ROOT, "plan-%s: %d trials (%d failed), %d with force closure, best epsilon %s%s;"
                 + " %.2f s wall, %.1f trials/s (%s engine, %s)",

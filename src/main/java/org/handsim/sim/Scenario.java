@@ -15,6 +15,7 @@ import org.handsim.sim.trajectory.Trajectory;
 import org.handsim.sim.trajectory.Trapezoid;
 import org.handsim.mesh.MeshLimits;
 import org.handsim.util.InputFile;
+import org.handsim.util.FileName;
 import org.handsim.util.Json;
 import org.handsim.util.JsonObject;
 
@@ -181,7 +182,8 @@ public final class Scenario implements Cloneable {
         this.root = r;
         r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "start_counts", "motors", "dt_s", "duration_s", "outputs");
         name = r.string("name");
-        if (!name.matches("[A-Za-z0-9._-]+")) throw r.error("name", "must be letters, digits, '.', '_' or '-' (it names the output folder), got \"" + name + "\"");
+        String bad = FileName.problem(name);
+        if (bad != null) throw r.error("name", bad + ", got \"" + name + "\"");
         description = r.string("description", "");
         if (r.has("hand")) {
             JsonObject h = r.object("hand");
@@ -555,7 +557,7 @@ public final class Scenario implements Cloneable {
         return c;
     }
 
-    /** A copy with torques computed or not (the clutch does not need them). */
+    /** A copy with torques computed or not (off: only a BLOCKED finger's, which its clutch torque includes). */
     public Scenario withTorques(boolean on) {
         Scenario c = copy();
         c.computeTorques = on;

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.handsim.util.InputFile;
+import org.handsim.util.FileName;
 import org.handsim.util.Json;
 import org.handsim.util.JsonObject;
 import org.handsim.util.JsonWriter;
@@ -41,7 +42,8 @@ public final class Sweep {
     private Sweep(Path file, JsonObject r) {
         r.allowOnly("name", "base", "runs", "scenarios", "threads");
         name = r.string("name");
-        if (!name.matches("[A-Za-z0-9._-]+")) throw r.error("name", "must be letters, digits, '.', '_' or '-', got \"" + name + "\"");
+        String bad = FileName.problem(name);
+        if (bad != null) throw r.error("name", bad + ", got \"" + name + "\"");
         threads = r.has("threads") ? r.integer("threads") : 0;
         if (threads < 0 || threads > MAX_THREADS) {
             throw r.error("threads", "must be in [0, " + MAX_THREADS + "] (0: all cores), got " + threads);
