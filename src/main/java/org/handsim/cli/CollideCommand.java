@@ -42,6 +42,7 @@ import org.handsim.sim.ScenarioException;
         "0.5 s and 10 000 queries, then until the JIT has been idle for 0.25 s (at",
         "most 5 s), then the median of --repeat timed batches of about 1 ms each",
         "(util.SteadyTiming, the scheme of gradle bench).",
+        "At most 100 000 intersecting triangle pairs (coincident meshes: exit 2).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;

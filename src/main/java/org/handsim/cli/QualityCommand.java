@@ -58,6 +58,9 @@ import picocli.CommandLine.Spec;
         "   \"facets\":148,\"time_us_median\":...}",
         "  (epsilon = mu a / (sqrt(3) R), a = 0.03: the support in the torque",
         "  direction (0,0,0,1,1,-1)/sqrt(3); WrenchSpaceTest derives it.)",
+        "Limits: at most 100 000 contacts and 1 600 distinct wrenches (contacts x",
+        "edges; repeated ones count once) for the whole hull, and 2^20 hull facets;",
+        "beyond, exit 2 saying how many fit. Progress every 5 s when the hull is slow.",
         "Exit codes: 0 ok, 2 bad arguments or a bad row (its line named), 3 the",
         "file cannot be read."})
 public final class QualityCommand implements Callable<Integer> {
