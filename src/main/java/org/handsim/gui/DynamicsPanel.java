@@ -168,10 +168,12 @@ public final class DynamicsPanel {
     private void applyGravity() {
         try {
             double[] g = {Widgets.number(gx, "gravity x"), Widgets.number(gy, "gravity y"), Widgets.number(gz, "gravity z")};
+            String range = org.handsim.hand.InputRanges.GRAVITY.problem("gravity", g);   // the range scenario files have
+            if (range != null) throw new IllegalArgumentException(range);
             window.load(window.scenario().withGravity(g));
             window.status(String.format(Locale.ROOT, "gravity (%.2f, %.2f, %.2f) m/s² applied: the model restarts at t = 0", g[0], g[1], g[2]), false);
         } catch (IllegalArgumentException e) {
-            window.status(e.getMessage(), true);
+            window.refused(e.getMessage());
         }
     }
 

@@ -455,7 +455,7 @@ public final class HandSimWindow {
     /** Shows a message in the status bar (red for errors). */
     public void status(String message, boolean isError) {
         statusSerial++;
-        statusError = isError;
+        statusRefused = false;
         status.setForeground(isError ? Widgets.ERROR : Color.DARK_GRAY);
         status.setText(message);
         status.setToolTipText(message);
@@ -464,7 +464,7 @@ public final class HandSimWindow {
     /** Shows a warning in the status bar (orange). */
     public void warning(String message) {
         statusSerial++;
-        statusError = false;
+        statusRefused = false;
         status.setForeground(WARNING);
         status.setText("warning: " + message);
         status.setToolTipText(message);
@@ -475,13 +475,23 @@ public final class HandSimWindow {
 
     // what the script's 'set' checks after typing a value: did the panel refuse it in the status bar?
     private int statusSerial;
-    private boolean statusError;
+    private boolean statusRefused;
+
+    /**
+     * Shows, in red, why a panel refused a value typed into one of its fields (not a number, out
+     * of range): the script's {@code set} fails on it, where an error that is a result (an
+     * unreachable IK target) leaves the {@code set} done.
+     */
+    public void refused(String message) {
+        status(message, true);
+        statusRefused = true;
+    }
 
     /** Counts the messages shown in the status bar (event dispatch thread). */
     int statusSerial() { return statusSerial; }
 
-    /** Whether the last status message was an error (event dispatch thread). */
-    boolean statusIsError() { return statusError; }
+    /** Whether the last status message was a refused value ({@link #refused}; event dispatch thread). */
+    boolean statusRefused() { return statusRefused; }
 
     /** What the run is doing, as the status bar's right end says: running, paused, finished, reset, ... */
     public String runStateText() { return runState.getText(); }

@@ -186,7 +186,7 @@ public final class KinematicsPanel {
             showValues();
             showPose();
         } catch (IllegalArgumentException e) {
-            window.status(e.getMessage(), true);
+            window.refused(e.getMessage());
             showValues();
         }
     }
@@ -207,7 +207,7 @@ public final class KinematicsPanel {
             showValues();
             showPose();
         } catch (IllegalArgumentException e) {
-            window.status(e.getMessage(), true);
+            window.refused(e.getMessage());
             showValues();
         }
     }
@@ -225,7 +225,7 @@ public final class KinematicsPanel {
             showValues();
             showPose();
         } catch (IllegalArgumentException e) {
-            window.status(e.getMessage(), true);
+            window.refused(e.getMessage());
             showValues();
         }
     }
@@ -324,7 +324,7 @@ public final class KinematicsPanel {
         try {
             target = new double[] {Widgets.number(ikX, "target x"), Widgets.number(ikY, "target y"), Widgets.number(ikZ, "target z")};
         } catch (IllegalArgumentException e) {
-            window.status(e.getMessage(), true);
+            window.refused(e.getMessage());
             return;
         }
         IkResult r = InverseKinematics.of(k).solveInPalm(target);

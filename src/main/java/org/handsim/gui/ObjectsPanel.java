@@ -226,7 +226,7 @@ public final class ObjectsPanel {
             window.status(String.format(Locale.ROOT, "friction μ = %s applied%s: the model restarts at t = 0", Widgets.significant(mu, 4),
                 mu == 0 ? " (frictionless contacts)" : ""), false);
         } catch (IllegalArgumentException e) {
-            window.status("friction not applied: " + e.getMessage(), true);
+            window.refused("friction not applied: " + e.getMessage());
         }
     }
 
@@ -257,7 +257,7 @@ public final class ObjectsPanel {
             placed.setText("placed by hand");
             window.status(String.format(Locale.ROOT, "object placed at (%.3f, %.3f, %.3f) m", position[0], position[1], position[2]), false);
         } catch (IllegalArgumentException e) {
-            window.status("object not placed: " + e.getMessage(), true);
+            window.refused("object not placed: " + e.getMessage());
         }
     }
 

@@ -150,7 +150,7 @@ public final class PathPlanningPanel {
             for (int m = 0; m < 4; m++) s = s.withMotor(m, t[m]);
             s = s.withDuration(longest + SETTLE_S);
         } catch (IllegalArgumentException e) {
-            window.status("path planning: " + e.getMessage(), true);
+            window.refused("path planning: " + e.getMessage());
             result.setText("Not run: " + e.getMessage());
             return;
         }

@@ -93,7 +93,7 @@ public final class ScriptRunner {
             } catch (Exception e) {
                 failure = message(e);
             }
-            String where = script.source() + ":" + a.line() + ": " + org.handsim.util.SafeText.quote(a.text()) + ": ";
+            String where = script.source() + ":" + a.line() + ": " + shown(a.text()) + ": ";
             if (expected != null) {
                 if (failure == null) throw new ScriptFailure(where + "expected an error containing '" + expected + "', but the action succeeded", 1);
                 if (!failure.contains(expected)) throw new ScriptFailure(where + "expected an error containing '" + expected + "', got: " + failure, 1);
@@ -103,6 +103,14 @@ public final class ScriptRunner {
             }
             if (failure != null) throw new ScriptFailure(where + failure, code);
         }
+    }
+
+    /** Script lines up to this long are shown whole in a failure's message; longer ones shortened. */
+    static final int SHOWN_WHOLE = 500;
+
+    /** A script line for a message: control characters escaped, shortened beyond {@link #SHOWN_WHOLE} characters. */
+    static String shown(String line) {
+        return line.length() <= SHOWN_WHOLE ? org.handsim.util.SafeText.escape(line) : org.handsim.util.SafeText.quote(line);
     }
 
     static String message(Throwable e) {
@@ -389,7 +397,7 @@ public final class ScriptRunner {
             f.setText(value);
             f.postActionEvent();
             // the panel refuses a value in the status bar (in red): the action failed then
-            if (window.statusSerial() != before && window.statusIsError()) {
+            if (window.statusSerial() != before && window.statusRefused()) {
                 throw new ScriptFailure("set " + name + " " + org.handsim.util.SafeText.quote(value) + ": the window refused it: " + window.statusText(), 1);
             }
         } else if (found instanceof JTextComponent) {
