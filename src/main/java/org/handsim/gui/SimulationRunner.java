@@ -375,7 +375,7 @@ public final class SimulationRunner implements AutoCloseable {
             for (int k = 1; k <= 3; k++) br[k - 1] = model.breakawayTime(k);
             finished = !model.running();
             // before the state: whoever sees this state and then awaits the grasp gets its grasp
-            grasp.offer(generation, model, model.scenario().friction(), model.scenario().coneEdges());
+            grasp.offer(generation, model, model.scenario().friction(), model.scenario().coneEdges(), !playing);
         }
         latest = new State(generation, publication, scenario, snap, br, playing, finished, error, note, warnings, origin,
             model != null && model.recorder() != null);

@@ -44,8 +44,8 @@ public final class EmbeddedExample {
             reset.addActionListener(e -> sim.reset());
             for (JButton b : new JButton[] {play, pause, step, reset}) buttons.add(b);
             buttons.add(readout);
-            sim.addStepListener(s -> readout.setText(String.format(Locale.ROOT, "t = %.3f s, finger 3 %s, %.1f N",
-                s.time(), s.clutch(3), s.snapshot().fingers()[2].forceSum())));
+            sim.addStepListener(s -> readout.setText(s.snapshot() == null ? "building the model ..." : String.format(Locale.ROOT,
+                "t = %.3f s, finger 3 %s, %.1f N", s.time(), s.clutch(3), s.snapshot().fingers()[2].forceSum())));
             f.add(sim, BorderLayout.CENTER);
             f.add(buttons, BorderLayout.SOUTH);
             f.setSize(720, 600);
