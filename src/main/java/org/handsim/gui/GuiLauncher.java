@@ -94,6 +94,8 @@ public final class GuiLauncher {
             return 0;
         }
         int code = 0;
+        // the model moves only while the script plays or waits (SimulationRunner.hold)
+        w.runner().hold(true);
         try {
             if (o.object() != null) runner.importObject(o.object().toAbsolutePath());
             if (o.script() != null) runner.run(o.script());

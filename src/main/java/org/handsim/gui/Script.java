@@ -66,6 +66,9 @@ import org.handsim.sim.ClutchState;
  *                           screenshot does, until the readouts show the model's state)
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
+ * While a script runs, the model moves only during {@code play} and {@code wait}: a button that
+ * starts a run (Path Planning's Run, Run with dynamics, the Space key) leaves it where it is
+ * until then ({@link SimulationRunner#hold}), so that a script gives one state on any machine.
  * Output lines start with {@code gui: }. An unknown verb or a bad argument is an error naming
  * the file and line ({@link ScriptException}; the command exits with code 2); a failing
  * {@code assert-*} or an action that cannot be done exits with code 1.
@@ -111,6 +114,8 @@ public final class Script {
         + "                       panel shows (kinematics: per finger 'M3 9479 counts,%n"
         + "                       θ31 0.00°, θ32 47.72°, θ33 30.06°'), once it shows the model%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
+        + "The model moves only while play or wait runs (a button that starts a run, e.g.%n"
+        + "press path.run, leaves it at t = 0 until then): one script, one state.%n"
         + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
         + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
         + "numerical guard. Field and button names: the Javadoc of each panel class.";

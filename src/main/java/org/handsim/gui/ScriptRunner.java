@@ -123,7 +123,16 @@ public final class ScriptRunner {
                 edt(() -> { window.setSpeed(f); return null; });
                 break;
             }
-            case WAIT: Thread.sleep(Long.parseLong(a.arg(0))); break;
+            case WAIT: {
+                boolean held = window.runner().held();
+                window.runner().hold(false);   // a playing model goes on meanwhile
+                try {
+                    Thread.sleep(Long.parseLong(a.arg(0)));
+                } finally {
+                    window.runner().hold(held);
+                }
+                break;
+            }
             case SCREENSHOT: screenshot(resolveOut(a.arg(0))); break;
             case SHOW: {
                 SceneView.Part p = SceneView.Part.valueOf(a.arg(0).toUpperCase(Locale.ROOT));
@@ -450,6 +459,18 @@ public final class ScriptRunner {
         long frames0 = window.view().framesRendered(), wall0 = System.nanoTime();
         edt(() -> { window.playUntil(target); return null; });
         r.sync();
+        boolean held = r.held();
+        r.hold(false);
+        try {
+            playing(r, wall0, frames0);
+        } finally {
+            r.hold(held);
+        }
+    }
+
+    /** Waits while the model plays, then says where it stopped. */
+    private void playing(SimulationRunner r, long wall0, long frames0) throws Exception {
+        r.sync();   // after hold(false)'s re-anchoring
         long deadline = System.currentTimeMillis() + PLAY_TIMEOUT_MS;
         SimulationRunner.State s = r.latest();
         // probe the event dispatch thread: how late does a posted event run while the model plays?
