@@ -73,11 +73,14 @@ public class HandSimPanel extends JPanel {
 
     /**
      * Reads the hand's meshes and builds a panel showing {@code scenario} at t = 0 (paused).
-     * Call it from any thread but the event dispatch thread (the meshes are read here).
+     * Call it from any thread but the event dispatch thread (the meshes are read here). On X11
+     * it first initialises JOGL and replaces its fatal X I/O error handler
+     * ({@link X11Exit#prepare()}).
      *
      * @throws IOException naming the file if a hand mesh cannot be read
      */
     public static HandSimPanel create(Scenario scenario) throws IOException, InterruptedException {
+        X11Exit.prepare();   // before the first window: a lost X server must not abort the program
         MeshSource.Model[] hand = loadHand();
         try {
             return ScriptRunner.edt(() -> new HandSimPanel(scenario, hand));

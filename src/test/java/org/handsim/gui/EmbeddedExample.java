@@ -62,6 +62,8 @@ public final class EmbeddedExample {
         if (shot == null) return;
         long deadline = System.currentTimeMillis() + 120_000;
         while (sim.view().framesRendered() == 0 && System.currentTimeMillis() < deadline) Thread.sleep(10);
+        System.out.println("embedded: first frame");
+        System.out.flush();
         CountDownLatch played = new CountDownLatch(1);
         sim.addStepListener(s -> { if (s.time() >= 2.5 - 1e-9 && !s.playing()) played.countDown(); });
         SwingUtilities.invokeAndWait(() -> {
