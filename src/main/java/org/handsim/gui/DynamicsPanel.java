@@ -53,7 +53,7 @@ public final class DynamicsPanel {
     private static final double[][] GRAVITY_VECTORS = {{0, 0, -9.81}, {-9.81, 0, 0}, {0, 0, 9.81}, {0, -9.81, 0}, {0, 9.81, 0}, {9.81, 0, 0}, {0, 0, 0}};
     private static final String[] COLUMNS = {"k", "clutch", "τk1", "τk2", "τk3", "cont.", "force", "break"};
     /** The widest texts each column shows (space-separated), for its width. */
-    private static final String[] WIDEST = {"3", "STALLED BLOCKED BROKEN", "-10.000", "-10.000", "-10.000", "99", "999.99", "10.0000"};
+    private static final String[] WIDEST = {"3", "STALLED BLOCKED BROKEN", "-9.999", "-9.999", "-9.999", "99", "999.99", "10.0000"};
     /** Column names in {@link #tableLines()} (the script's log). */
     private static final String[] KEYS = {"finger", "clutch", "tau1_Nm", "tau2_Nm", "tau3_Nm", "contacts", "force_N", "breakaway_s"};
 
@@ -146,16 +146,19 @@ public final class DynamicsPanel {
     }
 
     /**
-     * Sizes each column of the table for the widest text it shows (its header, or a sample of
-     * its widest value: "STALLED", "-10.000" N·m, "999.99" N, "10.0000" s) so that no value is
-     * cut to "-0.0…".
+     * Sizes each column of the table for the widest text it shows — its header, or a sample of
+     * its widest value ("BLOCKED", "-9.999" N·m, "999.99" N, "10.0000" s) as the table's own
+     * renderers draw them — so that no value is cut to "-0.0…"; the eight columns need about
+     * 320 px, which the panel has.
      */
     static void sizeColumns(JTable t) {
-        java.awt.FontMetrics cell = t.getFontMetrics(t.getFont()), head = t.getFontMetrics(t.getTableHeader().getFont());
         for (int c = 0; c < COLUMNS.length; c++) {
-            int w = head.stringWidth(COLUMNS[c]);
-            for (String sample : WIDEST[c].split(" ")) w = Math.max(w, cell.stringWidth(sample));
-            w += 2 * t.getIntercellSpacing().width + 10;   // the renderer's border and a little air
+            javax.swing.table.TableCellRenderer head = t.getTableHeader().getDefaultRenderer();
+            int w = head.getTableCellRendererComponent(t, COLUMNS[c], false, false, -1, c).getPreferredSize().width;
+            for (String sample : WIDEST[c].split(" ")) {
+                w = Math.max(w, t.getDefaultRenderer(Object.class).getTableCellRendererComponent(t, sample, false, false, 0, c).getPreferredSize().width);
+            }
+            w += t.getIntercellSpacing().width + 1;   // the grid line, and a pixel of air
             javax.swing.table.TableColumn col = t.getColumnModel().getColumn(c);
             col.setMinWidth(w);
             col.setPreferredWidth(w);

@@ -56,7 +56,7 @@ class WindowReadoutsTest {
         Scenario s = Scenario.load(TestPaths.root().resolve("scenarios/mug-grasp.json"));
         HandModel m = Simulation.model(s, false);
         DefaultTableModel model = new DefaultTableModel(new Object[] {"k", "clutch", "τk1", "τk2", "τk3", "cont.", "force", "break"}, 0);
-        model.addRow(new Object[] {3, "STALLED", "-10.000", "-10.000", "-10.000", 99, "999.99", "10.0000"});
+        model.addRow(new Object[] {3, "BLOCKED", "-9.999", "-9.999", "-9.999", 99, "999.99", "10.0000"});
         while (m.running()) {
             m.step();
             if (m.stepIndex() % 50 != 0) continue;
