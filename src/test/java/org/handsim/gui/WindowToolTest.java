@@ -267,6 +267,7 @@ class WindowToolTest {
             "assert-time 0",
             "menu run.toggle",
             "assert-runstate running",
+            "wait 200",   // a scripted model moves only while the script plays or waits
             "menu run.toggle",
             "assert-runstate paused",
             "speed max",
