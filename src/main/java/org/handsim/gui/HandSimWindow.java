@@ -148,7 +148,7 @@ public final class HandSimWindow {
         sim.addStepListener(this::update);
         sim.addTickHook(this::tickCharts);
         sim.addTickHook(this::tickGrasp);
-        charts.setDuration(scenario.duration());
+        charts.setDuration(org.handsim.sim.HandModel.endTime(scenario));   // the time label's end, handsim run's
 
         frame = new JFrame("HandSim — BarrettHand simulator");
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
@@ -383,7 +383,7 @@ public final class HandSimWindow {
     public void load(Scenario s) {
         sim.load(s);
         sim.setSpeed(speedFactor());
-        charts.setDuration(s.duration());
+        charts.setDuration(org.handsim.sim.HandModel.endTime(s));
         objects.showPlacement(s.object());
         kinematics.previewChanged();
     }
@@ -652,7 +652,7 @@ public final class HandSimWindow {
     private void update(SimulationRunner.State s) {
         if (s.generation() != shownGeneration) {
             shownGeneration = s.generation();
-            charts.setDuration(s.scenario() != null ? s.scenario().duration() : 0);
+            charts.setDuration(s.scenario() != null ? org.handsim.sim.HandModel.endTime(s.scenario()) : 0);
             if (!s.warnings().isEmpty() && s.origin() == SimulationRunner.Origin.LOADED) warning(String.join("; ", s.warnings()));
         }
         dynamics.update(s);
@@ -679,9 +679,6 @@ public final class HandSimWindow {
         double end = s.scenario() == null ? 0 : org.handsim.sim.HandModel.endTime(s.scenario());
         return String.format(Locale.ROOT, "t = %.3f s / %.3f s", s.time(), end);
     }
-
-    /** The time label as shown. */
-    public String timeLabelText() { return time.getText(); }
 
     /** The run state in words (the status bar's right end). */
     static String runState(SimulationRunner.State s) {
