@@ -75,7 +75,7 @@ public final class HandSim implements Runnable {
         int code;
         try {
             prepareHeadless();
-            CommandLine cl = commandLine();
+            CommandLine cl = commandLine(args.length > 0 ? args[0] : null);
             cl.setOut(out);
             cl.setErr(err);
             cl.setParameterExceptionHandler((ex, a) -> {
@@ -94,8 +94,27 @@ public final class HandSim implements Runnable {
 
     /** The command line with every sub-command and the help layout. */
     static CommandLine commandLine() {
+        return commandLine(null);
+    }
+
+    /**
+     * The command line for arguments that start with {@code first}: when that names a
+     * sub-command (by the convention {@code XxxCommand} is {@code xxx}), with that one alone —
+     * picocli reads every registered command's annotations, which for all of them was a good part
+     * of a short command's start-up — else, or if the convention does not hold, with every one.
+     */
+    static CommandLine commandLine(String first) {
         CommandLine cl = new CommandLine(new HandSim());
-        for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+        Class<?> only = null;
+        for (Class<?> c : SUBCOMMANDS) {
+            if (first != null && (first.toLowerCase(java.util.Locale.ROOT) + "command").equals(c.getSimpleName().toLowerCase(java.util.Locale.ROOT))) only = c;
+        }
+        if (only != null) {
+            cl.addSubcommand(only);
+            if (!cl.getSubcommands().containsKey(first)) return commandLine(null);
+        } else {
+            for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+        }
         cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
         cl.setUsageHelpWidth(HELP_WIDTH);
         cl.setUsageHelpAutoWidth(false);
