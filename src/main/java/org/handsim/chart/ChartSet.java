@@ -34,7 +34,8 @@ import org.jfree.chart.JFreeChart;
  * atomically, so a failure leaves no chart files rather than some.
  *
  * <p><b>Failure.</b> The first failure on any worker is kept (the warm-up's, typically: later ones
- * only repeat it, as "Could not initialize class ..."), later charts are skipped, and
+ * only repeat it, as "Could not initialize class ..."; such a second-hand report gives way to
+ * the original when another worker met it), later charts are skipped, and
  * {@link #finish()} returns {@link #reason(Throwable)}. {@link VirtualMachineError}s (out of
  * memory ...) are not a missing display: {@code finish} rethrows them.
  */
@@ -59,11 +60,12 @@ public final class ChartSet {
 
     /**
      * Starts the workers and warms them up by drawing {@code warmUp} (PNG and SVG, thrown away):
-     * a chart built like the command's, on a few points.
+     * a chart built like the command's, on a few points; null for no warm-up (charts that follow
+     * at once).
      */
     public static ChartSet start(Supplier<JFreeChart> warmUp) {
         ChartSet s = new ChartSet(Math.max(1, Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors())));
-        s.pool.execute(() -> s.attempt(() -> ChartExport.draw(warmUp.get(), 320, 240)));
+        if (warmUp != null) s.pool.execute(() -> s.attempt(() -> ChartExport.draw(warmUp.get(), 320, 240)));
         return s;
     }
 
@@ -77,9 +79,27 @@ public final class ChartSet {
         try {
             return draw.get();
         } catch (Throwable t) {   // a missing font library is an Error (UnsatisfiedLinkError, NoClassDefFoundError)
-            failure.compareAndSet(null, t);
+            keep(t);
             return null;
         }
+    }
+
+    /**
+     * Keeps the most telling failure: the first, unless it only says that a class failed to
+     * initialise on another thread (then that thread's own error, when it comes, replaces it).
+     */
+    private void keep(Throwable t) {
+        while (true) {
+            Throwable f = failure.get();
+            if (f != null && !(secondHand(f) && !secondHand(t))) return;
+            if (failure.compareAndSet(f, t)) return;
+        }
+    }
+
+    /** A class-initialisation failure reported without its cause (what other threads see: "Could not initialize class"). */
+    private static boolean secondHand(Throwable t) {
+        Throwable r = root(t);
+        return r instanceof NoClassDefFoundError || r instanceof ExceptionInInitializerError;
     }
 
     /**
@@ -98,7 +118,7 @@ public final class ChartSet {
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted while drawing the charts", e);
             } catch (ExecutionException e) {   // attempt() catches everything: not expected
-                failure.compareAndSet(null, e.getCause());
+                keep(e.getCause());
             }
         }
         pool.shutdown();

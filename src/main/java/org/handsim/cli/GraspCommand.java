@@ -1,12 +1,13 @@
 package org.handsim.cli;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.GraspChart;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
@@ -98,7 +99,7 @@ public final class GraspCommand implements Callable<Integer> {
         GraspAssessment g = GraspAssessment.of(model, mu, m);
         if (chart != null) {
             if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
-            writeChart(chart, samples, model, scenario.name());
+            writeChart(chart, samples, model, scenario.name(), spec.commandLine().getErr());
         }
         spec.commandLine().getOut().println(JsonWriter.write(g.toJson()));
         return 0;
@@ -115,11 +116,13 @@ public final class GraspCommand implements Callable<Integer> {
         return s;
     }
 
-    private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+    private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name, PrintWriter err) throws IOException {
         double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
-        ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
+        ChartSet set = ChartSet.start(null);
+        set.add(base, 900, 650, () -> GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
             "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "
-            + model.scenario().coneEdges() + " cone edges)"), base, 900, 650);
+            + model.scenario().coneEdges() + " cone edges)"));
+        Charts.finish(set, err);   // without the chart, its table (BASE.csv) is still written
         try (AtomicFile f = new AtomicFile(Path.of(base + ".csv"))) {
             Writer w = f.writer();
             w.write(CHART_HEADER);

@@ -43,8 +43,14 @@ public final class ChildJvm {
 
     /** Runs {@code handsim args} in a child JVM with {@code -Xmx<heap>} in {@code dir}. */
     public static Result run(Path dir, String heap, long timeoutMinutes, String... args) throws Exception {
+        return run(dir, heap, List.of(), timeoutMinutes, args);
+    }
+
+    /** As {@link #run(Path, String, long, String...)} with more options for the child JVM (before its main class). */
+    public static Result run(Path dir, String heap, List<String> jvmOptions, long timeoutMinutes, String... args) throws Exception {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.addAll(jvmOptions);
         cmd.add("-Xss16m");
         cmd.add("-Xmx" + heap);
         cmd.add("-Djava.awt.headless=true");
