@@ -47,7 +47,8 @@ public final class ChartSet {
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
     private final List<Job> jobs = new ArrayList<>();
 
-    private record Job(Path base, Future<ChartExport.Drawn> drawn) {}
+    /** A chart's two files, each drawn by its own task from its own chart object (a chart is not drawn by two threads at once). */
+    private record Job(Path base, Future<byte[]> png, Future<byte[]> svg) {}
 
     private ChartSet(int threads) {
         pool = new ThreadPoolExecutor(threads, threads, 1, TimeUnit.SECONDS, new LinkedBlockingQueue<>(), r -> {
@@ -69,13 +70,19 @@ public final class ChartSet {
         return s;
     }
 
-    /** Queues a chart: drawn now on a worker (the supplier runs there), written by {@link #finish()} as {@code base}.png and .svg. */
+    /**
+     * Queues a chart: drawn now on the workers, its PNG and its SVG as two tasks (the supplier
+     * runs for each, so two workers can draw the largest chart's two files at once), written by
+     * {@link #finish()} as {@code base}.png and .svg.
+     */
     public void add(Path base, int width, int height, Supplier<JFreeChart> chart) {
-        jobs.add(new Job(base, pool.submit(() -> failure.get() != null ? null : attempt(() -> ChartExport.draw(chart.get(), width, height)))));
+        jobs.add(new Job(base,
+            pool.submit(() -> failure.get() != null ? null : attempt(() -> ChartExport.png(chart.get(), width, height))),
+            pool.submit(() -> failure.get() != null ? null : attempt(() -> ChartExport.svg(chart.get(), width, height)))));
     }
 
     /** Runs {@code draw}, keeping its failure (the first of the set) instead of throwing; null then. */
-    private ChartExport.Drawn attempt(Supplier<ChartExport.Drawn> draw) {
+    private <T> T attempt(Supplier<T> draw) {
         try {
             return draw.get();
         } catch (Throwable t) {   // a missing font library is an Error (UnsatisfiedLinkError, NoClassDefFoundError)
@@ -113,7 +120,7 @@ public final class ChartSet {
         List<ChartExport.Drawn> drawn = new ArrayList<>();
         for (Job j : jobs) {
             try {
-                drawn.add(j.drawn().get());
+                drawn.add(new ChartExport.Drawn(j.png().get(), j.svg().get()));
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted while drawing the charts", e);

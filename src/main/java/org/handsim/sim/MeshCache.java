@@ -10,10 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.FileTime;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
-import java.util.HexFormat;
 import java.util.List;
 import java.util.function.Supplier;
 import java.util.zip.CRC32C;
@@ -25,10 +22,13 @@ import org.handsim.mesh.TriangleMesh;
  * object or a hand link in a millisecond instead of parsing its file and building a Java3D scene
  * (which, with the classes it loads, was most of {@code handsim run}'s load phase).
  *
- * <p><b>Key.</b> A SHA-256 over: the file's bytes (not its name or time: a copied or touched file
- * still hits, an edited one misses), the divisions and scale it is tessellated at, and the
- * identity of the code that tessellates (the jars of HandSim and Java3D: path, size and time,
- * and the Java version), so a new build never reads meshes an older one made. Files that may
+ * <p><b>Key.</b> The file's bytes (not its name or time: a copied or touched file still hits, an
+ * edited one misses), the divisions and scale it is tessellated at, and the identity of the code
+ * that tessellates (the jars of HandSim and Java3D: path, size and time, and the Java version),
+ * so a new build never reads meshes an older one made. The entry's name comes from two CRCs of
+ * the bytes and the rest of the key; the entry holds the whole key and the file's bytes, and a
+ * hit needs both equal — an exact test, where a cryptographic hash of the file cost more than
+ * the rest of the lookup (SHA-256 runs interpreted in a fresh JVM). Files that may
  * read other files (VRML with {@code Inline} or {@code EXTERNPROTO}) are not cached, nor is
  * anything when HandSim runs from class folders (tests, IDEs) unless the folder is set
  * explicitly.
@@ -38,9 +38,9 @@ import org.handsim.mesh.TriangleMesh;
  * {@code meshes/}. At most {@value #MAX_BYTES} bytes are kept: when a write passes that, the
  * least recently used entries go (reads refresh an entry's time).
  *
- * <p><b>Safety.</b> An entry is {@code magic, key, name, vertices, triangles, CRC-32C of all
- * before}; an entry whose magic, key, sizes or checksum do not match (a torn write, a disk
- * error, another version) is a miss and is replaced. Writers write a temporary file of their
+ * <p><b>Safety.</b> An entry is {@code magic, key, file bytes, name, vertices, triangles, CRC-32C
+ * of all before}; an entry whose magic, key, file bytes, sizes or checksum do not match (a torn
+ * write, a disk error, another version, another file of the same CRCs) is a miss and is replaced. Writers write a temporary file of their
  * own and rename it onto the entry's name atomically, so concurrent writers of the same mesh
  * (identical bytes) and readers never see a partial entry. Every failure of the cache itself
  * (no home folder, a read-only disk) only means tessellating again: it never fails a command.
@@ -48,7 +48,7 @@ import org.handsim.mesh.TriangleMesh;
 public final class MeshCache {
     /** Most bytes of cached meshes kept on disk. */
     static final long MAX_BYTES = 256L << 20;
-    private static final byte[] MAGIC = "HandSim mesh 1\n".getBytes(StandardCharsets.US_ASCII);
+    private static final byte[] MAGIC = "HandSim mesh 2\n".getBytes(StandardCharsets.US_ASCII);
     private static volatile String codeIdentity;
 
     private MeshCache() {}
@@ -62,18 +62,19 @@ public final class MeshCache {
         if (dir == null) return load.get();
         Path entry;
         String key;
+        byte[] bytes;
         try {
-            byte[] bytes = Files.readAllBytes(file);
+            bytes = Files.readAllBytes(file);
             if (!selfContained(file, bytes)) return load.get();
-            key = key(bytes, divisions, scale);
-            entry = dir.resolve(HexFormat.of().formatHex(sha256(key.getBytes(StandardCharsets.UTF_8))) + ".mesh");
-            TriangleMesh hit = read(entry, key);
+            key = key(divisions, scale);
+            entry = dir.resolve(name(bytes, key));
+            TriangleMesh hit = read(entry, key, bytes);
             if (hit != null) return hit;
         } catch (IOException | RuntimeException e) {
             return load.get();   // unreadable here: let the loader say why, in its words
         }
         TriangleMesh m = load.get();
-        write(dir, entry, key, m);
+        write(dir, entry, key, bytes, m);
         return m;
     }
 
@@ -100,9 +101,19 @@ public final class MeshCache {
         return !s.contains("Inline") && !s.contains("EXTERNPROTO");
     }
 
-    static String key(byte[] bytes, int divisions, double scale) {
-        return "file " + HexFormat.of().formatHex(sha256(bytes)) + " divisions " + divisions + " scale " + Double.doubleToLongBits(scale)
-            + " code " + (codeIdentity() == null ? "classes" : codeIdentity());
+    /** The key but for the file's bytes: how it is tessellated and by which code. */
+    static String key(int divisions, double scale) {
+        return "divisions " + divisions + " scale " + Double.doubleToLongBits(scale) + " code " + (codeIdentity() == null ? "classes" : codeIdentity());
+    }
+
+    /** The entry's file name: the file's length and two CRCs of it, and a hash of the rest of the key. */
+    static String name(byte[] bytes, String key) {
+        CRC32C c = new CRC32C();
+        c.update(bytes);
+        java.util.zip.CRC32 d = new java.util.zip.CRC32();
+        d.update(bytes);
+        return Long.toHexString(c.getValue() << 32 | d.getValue()) + "-" + Integer.toHexString(bytes.length) + "-"
+            + Integer.toHexString(key.hashCode()) + ".mesh";
     }
 
     /** The jars the tessellation comes from (path, size, time) and the Java version; null when running from class folders. */
@@ -130,8 +141,8 @@ public final class MeshCache {
         return codeIdentity;
     }
 
-    /** The mesh of an entry, or null if it is missing or does not check out. */
-    static TriangleMesh read(Path entry, String key) {
+    /** The mesh of an entry, or null if it is missing, is of another key or file, or does not check out. */
+    static TriangleMesh read(Path entry, String key, byte[] source) {
         byte[] b;
         try {
             b = Files.readAllBytes(entry);
@@ -146,6 +157,10 @@ public final class MeshCache {
             crc.update(b, 0, b.length - 8);
             if (crc.getValue() != ByteBuffer.wrap(b, b.length - 8, 8).getLong()) return null;
             if (!key.equals(string(in))) return null;
+            int ns = in.getInt();
+            if (ns != source.length || ns > in.remaining()) return null;
+            if (!java.util.Arrays.equals(b, in.position(), in.position() + ns, source, 0, ns)) return null;
+            in.position(in.position() + ns);
             String name = string(in);
             int nv = in.getInt();
             if (nv < 0 || nv > in.remaining() / 8) return null;
@@ -171,12 +186,12 @@ public final class MeshCache {
     }
 
     /** Stores a mesh under its entry (temporary file, then an atomic rename); failures are ignored. */
-    static void write(Path dir, Path entry, String key, TriangleMesh m) {
+    static void write(Path dir, Path entry, String key, byte[] source, TriangleMesh m) {
         byte[] k = key.getBytes(StandardCharsets.UTF_8), n = m.name().getBytes(StandardCharsets.UTF_8);
         double[] v = m.vertices();
         int[] t = m.triangles();
-        ByteBuffer out = ByteBuffer.allocate(MAGIC.length + 4 + k.length + 4 + n.length + 4 + 8 * v.length + 4 + 4 * t.length + 8);
-        out.put(MAGIC).putInt(k.length).put(k).putInt(n.length).put(n).putInt(v.length);
+        ByteBuffer out = ByteBuffer.allocate(MAGIC.length + 4 + k.length + 4 + source.length + 4 + n.length + 4 + 8 * v.length + 4 + 4 * t.length + 8);
+        out.put(MAGIC).putInt(k.length).put(k).putInt(source.length).put(source).putInt(n.length).put(n).putInt(v.length);
         out.asDoubleBuffer().put(v);
         out.position(out.position() + 8 * v.length);
         out.putInt(t.length);
@@ -243,13 +258,5 @@ public final class MeshCache {
         byte[] s = new byte[n];
         in.get(s);
         return new String(s, StandardCharsets.UTF_8);
-    }
-
-    static byte[] sha256(byte[] b) {
-        try {
-            return MessageDigest.getInstance("SHA-256").digest(b);
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException(e);
-        }
     }
 }

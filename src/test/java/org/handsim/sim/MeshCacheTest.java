@@ -87,18 +87,22 @@ class MeshCacheTest {
             entry = s.filter(p -> p.toString().endsWith(".mesh")).findFirst().orElseThrow();
         }
         byte[] good = Files.readAllBytes(entry);
-        String key = MeshCache.key(Files.readAllBytes(cube), 32, 1.0);
-        assertNotNull(MeshCache.read(entry, key));
-        assertNull(MeshCache.read(entry, key + " other"), "another key");
+        String key = MeshCache.key(32, 1.0);
+        byte[] source = Files.readAllBytes(cube);
+        assertNotNull(MeshCache.read(entry, key, source));
+        assertNull(MeshCache.read(entry, key + " other", source), "another key");
+        byte[] other = source.clone();
+        other[other.length / 2] ^= 1;
+        assertNull(MeshCache.read(entry, key, other), "another file (here: of the same length, as one with the same CRCs would be)");
         for (int i = 0; i < good.length; i++) {
             byte[] bad = good.clone();
             bad[i] ^= 0x10;
             Files.write(entry, bad);
-            assertNull(MeshCache.read(entry, key), "byte " + i + " flipped");
+            assertNull(MeshCache.read(entry, key, source), "byte " + i + " flipped");
         }
         for (int n : new int[] {0, 5, good.length / 2, good.length - 1}) {
             Files.write(entry, java.util.Arrays.copyOf(good, n));
-            assertNull(MeshCache.read(entry, key), "cut to " + n + " bytes");
+            assertNull(MeshCache.read(entry, key, source), "cut to " + n + " bytes");
         }
         AtomicInteger calls = new AtomicInteger();
         same(fresh, MeshCache.get(cube, 32, 1.0, () -> counted(calls, cube, 32, 1.0)));
