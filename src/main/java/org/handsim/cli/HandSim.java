@@ -114,8 +114,8 @@ public final class HandSim implements Runnable {
             if (!cl.getSubcommands().containsKey(first)) return commandLine(null);
         } else {
             for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+            cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
         }
-        cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
         cl.setUsageHelpWidth(HELP_WIDTH);
         cl.setUsageHelpAutoWidth(false);
         applySynopsis(cl);
