@@ -110,6 +110,7 @@ def main():
                 t2, t3 = q * c2, f['held3']
                 if closing and k * (t2 - th2) >= tau_break:
                     st, f['q_break'] = BROKEN, q
+                    f.setdefault('breakaway_s', d.time)
                     eq_data[f['worm'], 0] = th2
                     eq_active[f['worm']] = 1
                 elif not closing and q < f['q_contact']:
@@ -124,7 +125,8 @@ def main():
             ctrl[f['outer']] = t3
         step(m, d)
     print(json.dumps(dict(xml=xml, steps=steps, sim_time_s=d.time, contacts=int(d.ncon),
-                          step_loop_s=time.perf_counter() - t0, states=[f['state'] for f in fingers])))
+                          step_loop_s=time.perf_counter() - t0, states=[f['state'] for f in fingers],
+                          breakaway_s=[f.get('breakaway_s') for f in fingers])))
 
 
 if __name__ == '__main__':
