@@ -74,7 +74,7 @@ public final class HandSim implements Runnable {
     public static int execute(PrintWriter out, PrintWriter err, String... args) {
         int code;
         try {
-            prepareHeadless();
+            prepareHeadless(args.length > 0 ? args[0] : null);
             CommandLine cl = commandLine(args.length > 0 ? args[0] : null);
             cl.setOut(out);
             cl.setErr(err);
@@ -222,8 +222,22 @@ public final class HandSim implements Runnable {
 
     /**
      * Java3D's VirtualUniverse throws HeadlessException without a display unless the no-op
-     * renderer is chosen before the first Java3D class loads (DESIGN.md, "Headless").
+     * renderer is chosen before the first Java3D class loads (DESIGN.md, "Headless"). Every
+     * command but {@code gui} runs headless whether or not there is a display: none of them
+     * shows anything, and with a display they could not use (DISPLAY set, the X server refusing
+     * the connection) loading a VRML file died in Java3D's renderer set-up and charts in AWT's.
+     * Properties set on the command line are kept.
      */
+    static void prepareHeadless(String command) {
+        if (!"gui".equals(command)) {
+            if (System.getProperty("java.awt.headless") == null) System.setProperty("java.awt.headless", "true");
+            if (System.getProperty("j3d.rend") == null) System.setProperty("j3d.rend", "noop");
+            return;
+        }
+        prepareHeadless();
+    }
+
+    /** For the window: headless (and Java3D's no-op renderer) only when there is no display. */
     static void prepareHeadless() {
         if (System.getProperty("j3d.rend") == null
             && (GraphicsEnvironment.isHeadless() || System.getenv("DISPLAY") == null)) {

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * Results are never lost to a machine without usable fonts. Each command runs in a child JVM
+ * Results are never lost to a machine without usable fonts or display. Each command runs in a child JVM
  * whose font library cannot load, as on a compute node without libharfbuzz: the JDK's
  * {@code sun.font.FontManagerNativeLibrary} (which loads libfontmanager.so) is replaced through
  * {@code --patch-module} by one that throws the {@link UnsatisfiedLinkError} such a node gives.
@@ -118,6 +118,31 @@ class NoFontsTest {
             assertEquals(1, s.filter(f -> f.toString().endsWith(".csv")).count());
         }
         noCharts(out);
+    }
+
+    /**
+     * A display that cannot be used (DISPLAY names a server that does not exist) and no
+     * headless option on the command line, as on a login node with a stale DISPLAY: run loads
+     * its VRML files through Java3D (the mesh cache off) and draws its charts all the same, since
+     * every command but gui runs headless.
+     */
+    @Test
+    void runIgnoresAnUnusableDisplay() throws Exception {
+        Path out = work.resolve("display");
+        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss16m", "-Xmx512m",
+            "-Dhandsim.cache=off", "-Djava.io.tmpdir=" + work, "-Dhandsim.home=" + TestPaths.root(), "-cp", System.getProperty("java.class.path"),
+            HandSim.class.getName(), "run", "--out", out.toString());
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(work.toFile()).redirectErrorStream(true).redirectOutput(work.resolve("display.log").toFile());
+        pb.environment().put("DISPLAY", "127.0.0.1:4711");
+        pb.environment().remove("XAUTHORITY");
+        Process p = pb.start();
+        assertTrue(p.waitFor(5, java.util.concurrent.TimeUnit.MINUTES), "finished");
+        String log = Files.readString(work.resolve("display.log"));
+        assertEquals(0, p.exitValue(), log);
+        for (String f : new String[] {"trace.csv", "summary.json", "fig7_finger3.png", "fig7_finger3.svg", "fig8_finger3.png", "fig8_finger3.svg"}) {
+            assertTrue(Files.size(out.resolve(f)) > 1000, f + ": " + log);
+        }
+        assertFalse(log.contains("warning"), log);
     }
 
     @Test
