@@ -274,7 +274,7 @@ public final class SceneGeometry implements LinkContacts {
      */
     public static TriangleMesh mesh(Path file, int divisions, double scale) {
         return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, x -> {
-            TriangleMesh m = MeshFiles.load(file, divisions, scale).mesh();
+            TriangleMesh m = MeshCache.get(file, divisions, scale, () -> MeshFiles.load(file, divisions, scale).mesh());
             if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
             return m;
         });
