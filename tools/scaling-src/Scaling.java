@@ -60,10 +60,9 @@ public final class Scaling {
         boolean keep = o.containsKey("--work") || o.containsKey("--keep");
 
         System.out.println("CPU: " + cpuModel() + "; " + cores + " cores present; load average before: " + loadAverage());
-        System.out.println("Command per row: " + home.relativize(launcher) + " plan " + target + " --trials " + trials
-            + " --seed " + seed + " --threads T   (HANDSIM_JIT=<jit>, a Flight Recording added by HANDSIM_JAVA_OPTS)");
+        System.out.println("Each row's command, run from " + home + " with a Flight Recording added by HANDSIM_JAVA_OPTS:");
         System.out.println();
-        System.out.println("| jit | threads | trials/s | speed-up | efficiency | wall s | GC share | alloc/trial | JIT CPU s | worker CPU/trial | contended locks | load | table |");
+        System.out.println("| command | threads | trials/s | speed-up | efficiency | wall s | GC share | alloc/trial | JIT CPU s | worker CPU/trial | contended locks | load | table |");
         System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
         boolean allSame = true;
         try {
@@ -87,8 +86,10 @@ public final class Scaling {
                         }
                         if (t == threads.get(0) && r == 0) base = row.rate / t;
                         double speedup = row.rate / base;
+                        String command = "`HANDSIM_JIT=" + jit + " " + home.relativize(launcher) + " plan " + target + " --trials " + trials
+                            + " --seed " + seed + " --threads " + t + "`";
                         System.out.printf(Locale.ROOT, "| %s | %d | %.1f | %.2f | %.0f %% | %.2f | %.2f %% | %.0f kB | %s | %s | %s | %s | %s |%n",
-                            jit, t, row.rate, speedup, 100 * speedup / t, row.wall, 100 * row.gcPauseS / row.wall,
+                            command, t, row.rate, speedup, 100 * speedup / t, row.wall, 100 * row.gcPauseS / row.wall,
                             row.workerAllocBytes / trials / 1e3, row.jitCpuS < 0 ? "n/a" : String.format(Locale.ROOT, "%.1f", row.jitCpuS),
                             row.workerCpuS < 0 ? "n/a" : String.format(Locale.ROOT, "%.2f ms", 1e3 * row.workerCpuS / trials),
                             row.contended + (row.contendedLoading > 0 ? " (+" + row.contendedLoading + " class loading)" : ""),
@@ -164,9 +165,15 @@ public final class Scaling {
         return row;
     }
 
-    /** A contended enter of class loading or initialisation (a first trial's, once per class). */
+    /**
+     * A contended enter of class loading or initialisation (the first trials', once per class):
+     * a class's initialisation lock is an int[], the class loader's lock per class name a bare
+     * Object (taken by the VM as it resolves a class, so often with no loader frame on the stack);
+     * HandSim's trial path locks neither.
+     */
     private static boolean classLoading(RecordedEvent e) {
-        if (e.getClass("monitorClass") != null && e.getClass("monitorClass").getName().equals("int[]")) return true;   // a class's init lock
+        String monitor = e.getClass("monitorClass") != null ? e.getClass("monitorClass").getName() : "";
+        if (monitor.equals("int[]") || monitor.equals("java.lang.Object")) return true;
         if (e.getStackTrace() == null) return false;
         for (RecordedFrame f : e.getStackTrace().getFrames()) {
             String t = f.getMethod().getType().getName();

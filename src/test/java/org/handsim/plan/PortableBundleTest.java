@@ -86,7 +86,7 @@ class PortableBundleTest {
             Out sc = run(home, noJava, 15, "bin/scaling", "--trials", "16", "--threads", "1,2");
             assertEquals(0, sc.code, sc.log);
             assertTrue(sc.log.contains("plan.csv identical at every thread count"), sc.log);
-            assertTrue(sc.log.contains("| auto | 2 |"), sc.log);
+            assertTrue(sc.log.contains("--threads 2` | 2 |"), sc.log);
             assertFalse(sc.log.contains("DIFFERS"), sc.log);
         } finally {
             PlanTesting.deleteTree(work);
