@@ -173,7 +173,7 @@ public final class Scaling {
      */
     private static boolean classLoading(RecordedEvent e) {
         String monitor = e.getClass("monitorClass") != null ? e.getClass("monitorClass").getName() : "";
-        if (monitor.equals("int[]") || monitor.equals("java.lang.Object")) return true;
+        if (monitor.equals("[I") || monitor.equals("int[]") || monitor.equals("java.lang.Object")) return true;
         if (e.getStackTrace() == null) return false;
         for (RecordedFrame f : e.getStackTrace().getFrames()) {
             String t = f.getMethod().getType().getName();
