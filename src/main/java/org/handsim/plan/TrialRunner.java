@@ -21,8 +21,10 @@ import org.handsim.util.JsonWriter;
  * ({@link GraspAssessment}: force closure, ε, volume, minimum hold). The scenario run here is
  * exactly the one {@link #scenarioJson} writes for {@code best/NN.json} (made directly, not
  * through its text: {@link #trialScenario}) but for its outputs: no
- * trace, no charts, no joint torques (the clutch, the contacts and the evaluation do not use
- * them: the contacts carry the torque the clutch transmits, DESIGN.md), and it stops as soon
+ * trace, no charts, no joint torques (the contacts and the evaluation do not use them: the
+ * contacts carry the torque the clutch transmits, DESIGN.md; the clutch's breakaway needs the
+ * inner joint's τ_dyn, which the model computes while a finger is BLOCKED whether or not torques
+ * are asked for, so the breakaway is the one {@code handsim run} finds), and it stops as soon
  * as all three fingers are STALLED — after that nothing in the model changes, so
  * {@code handsim run} on the written scenario ends in the same grasp.
  *
@@ -36,7 +38,10 @@ public final class TrialRunner {
     private final Map<String, Object> template;
     /** The template as parsed once: each trial is a copy with the trial's pose and spread ({@link #trialScenario}). */
     private final Scenario base;
-    /** The dynamics the models are given (one per runner: the trials compute no joint torques, DESIGN.md). */
+    /**
+     * The dynamics the models are given, one per runner (a model asks it only for a BLOCKED
+     * finger's inner-joint torque; it keeps nothing from one call to the next but scratch).
+     */
     private final TorqueModel dynamics = HandDynamics.barrettHand()::inverseDynamics;
     private final HandClearance clearance;
     private final double[] startCounts = new double[3];
