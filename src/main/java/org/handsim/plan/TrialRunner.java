@@ -16,7 +16,7 @@ import org.handsim.util.JsonWriter;
 
 /**
  * Runs trial i of a plan from its {@link PlanSpec} alone: sample its parameters
- * ({@link TrialSampler}), approach ({@link Autograsp}), write the trial as a scenario, run that
+ * ({@link TrialSampler}), approach ({@link Autograsp}), make the trial's scenario, run that
  * scenario until every finger has stalled or its profile ends, and evaluate the grasp
  * ({@link GraspAssessment}: force closure, ε, volume, minimum hold). The scenario run here is
  * exactly the one {@link #scenarioJson} writes for {@code best/NN.json} (made directly, not
@@ -34,7 +34,6 @@ import org.handsim.util.JsonWriter;
 public final class TrialRunner {
     private final PlanSpec spec;
     private final TrialSampler sampler;
-    private final Path templateFile;
     private final Map<String, Object> template;
     /** The template as parsed once: each trial is a copy with the trial's pose and spread ({@link #trialScenario}). */
     private final Scenario base;
@@ -63,9 +62,8 @@ public final class TrialRunner {
     public TrialRunner(PlanSpec spec, IntConsumer fault) {
         this.spec = spec;
         this.sampler = new TrialSampler(spec);
-        this.templateFile = Path.of(spec.templateFile());
         this.template = spec.template();
-        Scenario t = Scenario.parse(templateFile, spec.templateJson());
+        Scenario t = Scenario.parse(Path.of(spec.templateFile()), spec.templateJson());
         this.base = t;
         this.clearance = new HandClearance(t.object());
         for (int k = 0; k < 3; k++) startCounts[k] = t.startCounts(k);
