@@ -1,12 +1,13 @@
 package org.handsim.cli;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.GraspChart;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
@@ -120,21 +121,23 @@ public final class GraspCommand implements Callable<Integer> {
     }
 
     /** BASE.csv, BASE.png and BASE.svg, published together ({@link OutputSet} of BASE's folder). */
-    private static void writeChart(java.io.PrintWriter err, Path chart, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+    private static void writeChart(PrintWriter err, Path chart, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
         Path folder = chart.toAbsolutePath().getParent();
         String stem = chart.getFileName().toString();
         OutputSet.Layout layout = new OutputSet.Layout(null, java.util.regex.Pattern.quote(stem) + "\\.(png|svg|csv)");
         try (OutputSet set = Args.outputSet(err, "--chart", folder, layout)) {
-            writeChartFiles(set.dir().resolve(stem), samples, model, name);
+            writeChartFiles(set.dir().resolve(stem), samples, model, name, err);
             set.publish();
         }
     }
 
-    private static void writeChartFiles(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+    private static void writeChartFiles(Path base, List<GraspAssessment> samples, HandModel model, String name, PrintWriter err) throws IOException {
         double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
-        ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
+        ChartSet set = ChartSet.start(null);
+        set.add(base, 900, 650, () -> GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
             "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "
-            + model.scenario().coneEdges() + " cone edges)"), base, 900, 650);
+            + model.scenario().coneEdges() + " cone edges)"));
+        Charts.finish(set, err);   // without the chart, its table (BASE.csv) is still written
         try (AtomicFile f = new AtomicFile(Path.of(base + ".csv"))) {
             Writer w = f.writer();
             w.write(CHART_HEADER);

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.plan.DirectionMap;
@@ -16,6 +16,8 @@ import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.JsonWriter;
 import org.handsim.util.OutputSet;
 import org.handsim.util.Phase;
 import picocli.CommandLine.Command;
@@ -108,6 +110,7 @@ public final class PlanCommand implements Callable<Integer> {
         long t0 = System.nanoTime();
         Map<String, Object> summary;
         PlanOutput output;
+        boolean charts;
         // every file goes to the set's private folder; the folder gets them all, or none, at the end
         try (OutputSet set = Args.outputSet(err, "--out", dir, LAYOUT)) {
             Phase.reach("opened");
@@ -123,7 +126,7 @@ public final class PlanCommand implements Callable<Integer> {
                 double wall = (System.nanoTime() - t0) / 1e9;
                 summary = output.finish(wall, engine);
             }
-            writeCharts(output, planSpec, set.dir());
+            charts = writeCharts(output, planSpec, set.dir(), summary, err);
             Phase.reach("charts");
             set.publish();
         }
@@ -134,19 +137,30 @@ public final class PlanCommand implements Callable<Integer> {
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
         stdout.println("wrote " + dir + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
-            + ".json, epsilon-histogram.png/.svg, epsilon-directions.png/.svg}");
+            + ".json" + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
         return output.failed() == trials ? 1 : 0;
     }
 
-    static void writeCharts(PlanOutput o, PlanSpec s, Path dir) throws java.io.IOException {
+    /**
+     * Draws and writes the two charts; when they cannot be drawn, the warning and plan.json
+     * rewritten with {@code charts_missing} (every table is written already). Returns whether
+     * the charts were written.
+     */
+    static boolean writeCharts(PlanOutput o, PlanSpec s, Path dir, Map<String, Object> summary, PrintWriter err) throws java.io.IOException {
         var h = o.histogram();
         int used = h.usedBins();
         long[] counts = java.util.Arrays.copyOf(h.counts(), used);
-        ChartExport.write(PlanCharts.epsilonHistogram("Grasp quality over " + s.trials() + " trials (" + s.name() + ", seed " + s.seed() + ")",
-            h.width(), counts, h.noClosure(), o.failed()), dir.resolve("epsilon-histogram"), 900, 550);
         var d = o.directions();
-        ChartExport.write(PlanCharts.directionMap("Best ε by approach direction (" + s.name() + ", " + s.trials() + " trials)",
-            d.best(), d.count(), DirectionMap.CELL_DEG), dir.resolve("epsilon-directions"), 1000, 560);
+        ChartSet set = ChartSet.start(null);
+        set.add(dir.resolve("epsilon-histogram"), 900, 550, () -> PlanCharts.epsilonHistogram("Grasp quality over " + s.trials()
+            + " trials (" + s.name() + ", seed " + s.seed() + ")", h.width(), counts, h.noClosure(), o.failed()));
+        set.add(dir.resolve("epsilon-directions"), 1000, 560, () -> PlanCharts.directionMap("Best ε by approach direction ("
+            + s.name() + ", " + s.trials() + " trials)", d.best(), d.count(), DirectionMap.CELL_DEG));
+        String missing = Charts.finish(set, err);
+        if (missing == null) return true;
+        summary.put(Charts.MISSING_KEY, missing);
+        AtomicFile.writeString(dir.resolve("plan.json"), JsonWriter.pretty(summary));
+        return false;
     }
 
     private static String fmt(double v) {

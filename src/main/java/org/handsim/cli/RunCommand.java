@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.PaperCharts;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
@@ -101,6 +101,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         Path dir = out != null ? Args.outputPath("--out", out) : Path.of("out", scenario.name());
         boolean charts = scenario.writeCharts() && !noCharts;
+        ChartSet chartSet = charts ? ChartSet.start(PaperCharts::warmUp) : null;   // fonts and Java2D set up while the run goes on
         if (noCharts && !scenario.writeCharts()) err.println("handsim: --no-charts has no effect: the scenario writes no charts (outputs.charts is false)");
         List<String> written = new ArrayList<>();
         Map<String, Object> summary;
@@ -136,6 +137,9 @@ public final class RunCommand implements Callable<Integer> {
                 for (String w : found) err.println("handsim: warning: " + w);
                 warnings = model.warnings();
                 Phase.reach("ran");
+                long t3 = System.nanoTime();
+                // the charts are drawn on the set's workers while the grasp is evaluated
+                List<String> chartFiles = chartSet != null ? addCharts(chartSet, rec, model, stage) : List.of();
                 summary = RunSummary.of(model, wall);
                 summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
                 summary.put("setup_time_s", setup);
@@ -145,20 +149,10 @@ public final class RunCommand implements Callable<Integer> {
                     if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
                 }
                 if (scenario.writeTrace()) written.add("trace.csv");
-                long t3 = System.nanoTime();
-                if (charts) {
-                    for (int k = 1; k <= 3; k++) {
-                        if (!rec.moved(k)) continue;
-                        String name = "finger " + k + ", " + scenario.name();
-                        ChartExport.write(PaperCharts.figure7(rec, k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
-                            stage.resolve("fig7_finger" + k), 900, 1100);
-                        Phase.reach("chart");
-                        ChartExport.write(PaperCharts.figure8(rec, k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
-                            stage.resolve("fig8_finger" + k), 900, 450);
-                        written.add("fig7_finger" + k + ".png/.svg");
-                        written.add("fig8_finger" + k + ".png/.svg");
-                    }
-                }
+                String missing = chartSet != null ? Charts.finish(chartSet, err) : null;   // the charts were drawn meanwhile
+                if (missing != null) summary.put(Charts.MISSING_KEY, missing);
+                else written.addAll(chartFiles);
+                Phase.reach("chart");
                 chartSeconds = (System.nanoTime() - t3) / 1e9;
                 // the trace writer worked on its own thread during the run and the charts; now it completes
                 if (rec != null) rec.finish();
@@ -178,6 +172,24 @@ public final class RunCommand implements Callable<Integer> {
         stdout.println(headline(model, wall));
         stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
         return 0;
+    }
+
+    /** Queues Fig. 7 and Fig. 8 of every finger that moved (drawn on the set's workers); returns their names for the "wrote" line. */
+    private static List<String> addCharts(ChartSet set, Recorder rec, HandModel model, Path dir) {
+        List<String> files = new ArrayList<>();
+        String scenario = model.scenario().name();
+        for (int k = 1; k <= 3; k++) {
+            if (!rec.moved(k)) continue;
+            int f = k;
+            double tb = model.breakawayTime(k);
+            set.add(dir.resolve("fig7_finger" + k), 900, 1100,
+                () -> PaperCharts.figure7(rec, f, tb, "Joints " + f + "2 and " + f + "3 (finger " + f + ", " + scenario + ")"));
+            set.add(dir.resolve("fig8_finger" + k), 900, 450,
+                () -> PaperCharts.figure8(rec, f, tb, "Contact force on finger " + f + " (" + scenario + ")"));
+            files.add("fig7_finger" + k + ".png/.svg");
+            files.add("fig8_finger" + k + ".png/.svg");
+        }
+        return files;
     }
 
     /** {@code --tolerance} as metres; exit 2 naming the value if it is not a length. */

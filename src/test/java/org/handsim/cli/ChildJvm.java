@@ -55,7 +55,7 @@ public final class ChildJvm {
      * the caller waits for it, or stops it, and deletes the files.
      */
     public static Started start(Path dir, String heap, List<String> properties, String... args) throws IOException {
-        List<String> cmd = command(dir, heap, args);
+        List<String> cmd = command(dir, heap, List.of(), args);
         int at = cmd.indexOf("-cp");
         for (String p : properties) cmd.add(at, "-D" + p);
         Path out = Files.createTempFile(dir, "child", ".out"), err = Files.createTempFile(dir, "child", ".err");
@@ -63,9 +63,10 @@ public final class ChildJvm {
         return new Started(p, out, err);
     }
 
-    private static List<String> command(Path dir, String heap, String... args) {
+    private static List<String> command(Path dir, String heap, List<String> jvmOptions, String... args) {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.addAll(jvmOptions);
         cmd.add("-Xss16m");
         cmd.add("-Xmx" + heap);
         cmd.add("-Djava.awt.headless=true");
@@ -81,7 +82,12 @@ public final class ChildJvm {
 
     /** Runs {@code handsim args} in a child JVM with {@code -Xmx<heap>} in {@code dir}. */
     public static Result run(Path dir, String heap, long timeoutMinutes, String... args) throws Exception {
-        List<String> cmd = command(dir, heap, args);
+        return run(dir, heap, List.of(), timeoutMinutes, args);
+    }
+
+    /** As {@link #run(Path, String, long, String...)} with more options for the child JVM (before its main class). */
+    public static Result run(Path dir, String heap, List<String> jvmOptions, long timeoutMinutes, String... args) throws Exception {
+        List<String> cmd = command(dir, heap, jvmOptions, args);
         Path out = Files.createTempFile(dir, "child", ".out"), err = Files.createTempFile(dir, "child", ".err");
         try {
             Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile()).redirectError(err.toFile()).start();
