@@ -9,6 +9,8 @@ public final class CliError extends RuntimeException {
     public static final int LOAD = 3;
     /** A run stopped by a numerical guard. */
     public static final int NUMERIC = 4;
+    /** A command stopped by SIGINT (128 + 2), what the shell reports for a JVM that SIGINT stopped. */
+    public static final int STOPPED = 130;
 
     private final int exitCode;
 

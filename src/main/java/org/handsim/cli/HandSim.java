@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.handsim.util.CommandContext;
 import org.handsim.util.Decimal;
 import org.handsim.util.InputFile;
 import org.handsim.util.SafeText;
@@ -194,6 +195,9 @@ public final class HandSim implements Runnable {
      * and code; anything else exit 1, naming the error and a log file with its stack trace.
      */
     static int failure(PrintWriter err, Throwable ex) {
+        // a command the resident server was told to stop: whatever its unwinding threw, no message
+        // and no log (the client exits as the signal that stopped it says, as a stopped JVM does)
+        if (CommandContext.cancelled()) return CliError.STOPPED;
         Throwable t = ex;
         while ((t instanceof java.util.concurrent.ExecutionException || t instanceof java.util.concurrent.CompletionException
             || t instanceof CommandLine.ExecutionException) && t.getCause() != null) t = t.getCause();

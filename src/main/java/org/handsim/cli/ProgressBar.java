@@ -2,16 +2,18 @@ package org.handsim.cli;
 
 import java.io.PrintWriter;
 import java.util.function.DoubleConsumer;
+import org.handsim.util.CommandContext;
 
 /**
  * A console progress bar on standard error for runs longer than a second: silent for the first
  * second, then redrawn in place ({@code \r}) on a terminal, or one line per 10 % otherwise (logs).
+ * Each report is a cancellation point ({@link CommandContext}).
  */
 final class ProgressBar implements DoubleConsumer {
     private final PrintWriter err;
     private final String label;
     private final long start = System.nanoTime();
-    private final boolean terminal = System.console() != null;
+    private final boolean terminal = CommandContext.console();
     private boolean shown;
     private int lastDecile = -1;
 
@@ -22,6 +24,7 @@ final class ProgressBar implements DoubleConsumer {
 
     @Override
     public void accept(double fraction) {
+        CommandContext.checkCancelled();
         double elapsed = (System.nanoTime() - start) / 1e9;
         if (elapsed < 1.0 && fraction < 1.0) return;
         if (!shown && fraction >= 1.0) return; // finished within a second: say nothing

@@ -36,7 +36,9 @@ public final class HandClearance {
     private final TriangleMesh palmMesh;
     private final double[] centroid;
     private final double objectReach;
-    private static final Map<Integer, KdopTree> PALM_TREES = new ConcurrentHashMap<>();
+    /** The palm's tree for each k, with the mesh it was built from (a changed palm file gives a new mesh: built again). */
+    private static final Map<Integer, PalmTree> PALM_TREES = new ConcurrentHashMap<>();
+    private record PalmTree(TriangleMesh mesh, KdopTree tree) {}
     private final KdopTree[] trees = new KdopTree[4];     // palm, links 1..3
     private final double[][] spheres = new double[4][];   // their bounding spheres, own frames
     private final KdopTree objectTree;
@@ -63,7 +65,7 @@ public final class HandClearance {
         int k = objectTree.k();
         Path palmFile = SceneGeometry.palmFile();
         palmMesh = SceneGeometry.mesh(palmFile, SceneGeometry.LINK_DIVISIONS, 1.0);
-        trees[0] = PALM_TREES.computeIfAbsent(k, x -> KdopTree.build(palmMesh, x));
+        trees[0] = PALM_TREES.compute(k, (x, was) -> was != null && was.mesh() == palmMesh ? was : new PalmTree(palmMesh, KdopTree.build(palmMesh, x))).tree();
         spheres[0] = SceneGeometry.boundingSphere(palmMesh);
         for (int j = 1; j <= 3; j++) {
             trees[j] = scene.linkTree(j);

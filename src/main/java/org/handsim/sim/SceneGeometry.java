@@ -12,6 +12,7 @@ import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.util.BoundedCache;
+import org.handsim.util.CommandContext;
 import org.handsim.vrml.VrmlLoader;
 import org.handsim.vrml.VrmlScene;
 
@@ -163,7 +164,40 @@ public final class SceneGeometry implements LinkContacts {
      */
     static final long CACHE_TRIANGLES = 1_000_000;
 
-    private static final BoundedCache<String, TriangleMesh> MESHES = new BoundedCache<>(CACHE_TRIANGLES, TriangleMesh::triangleCount);
+    private static final BoundedCache<String, FileMesh> MESHES = new BoundedCache<>(CACHE_TRIANGLES, m -> m.mesh.triangleCount());
+
+    /**
+     * A cached mesh and the bytes of the file it was made from (null for a file whose mesh
+     * depends on other files: VRML with Inline or EXTERNPROTO). A JVM that runs many commands
+     * (the resident server) checks the file once per command ({@link CommandContext#generation()})
+     * and makes the mesh again if the file has changed; a single command's JVM never needs to.
+     */
+    private static final class FileMesh {
+        final Path file;
+        final TriangleMesh mesh;
+        final byte[] bytes;
+        volatile long checked;
+
+        FileMesh(Path file, TriangleMesh mesh, byte[] bytes, long checked) {
+            this.file = file;
+            this.mesh = mesh;
+            this.bytes = bytes;
+            this.checked = checked;
+        }
+
+        boolean unchanged() {
+            long now = CommandContext.generation();
+            if (checked == now) return true;
+            if (bytes == null) return false;
+            try {
+                if (!java.util.Arrays.equals(java.nio.file.Files.readAllBytes(file), bytes)) return false;
+            } catch (java.io.IOException | RuntimeException e) {
+                return false;   // gone or unreadable: load it again, and let the loader say why
+            }
+            checked = now;
+            return true;
+        }
+    }
 
     /**
      * A mesh with what the queries need of it, made once per file, divisions, scale and k and
@@ -212,7 +246,8 @@ public final class SceneGeometry implements LinkContacts {
 
     private static Shape shape(Path file, int divisions, double scale, int k) {
         String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
-        return SHAPES.get(key, x -> new Shape(x, divisions, scale, mesh(file, divisions, scale), k));
+        TriangleMesh m = mesh(file, divisions, scale);   // the file's mesh now: a shape of an older one is made again
+        return SHAPES.get(key, sh -> sh.mesh == m, x -> new Shape(x, divisions, scale, m, k));
     }
 
     private final double thickness, linkThickness;
@@ -297,11 +332,19 @@ public final class SceneGeometry implements LinkContacts {
      *         {@code FILE: byte N: message} for binary STL)
      */
     public static TriangleMesh mesh(Path file, int divisions, double scale) {
-        return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, x -> {
+        return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, FileMesh::unchanged, x -> {
+            long generation = CommandContext.generation();
+            byte[] bytes;
+            try {
+                bytes = java.nio.file.Files.readAllBytes(file);
+                if (!MeshCache.selfContained(file, bytes)) bytes = null;
+            } catch (java.io.IOException | RuntimeException e) {
+                bytes = null;   // the loader says why
+            }
             TriangleMesh m = MeshCache.get(file, divisions, scale, () -> MeshFiles.load(file, divisions, scale).mesh());
             if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
-            return m;
-        });
+            return new FileMesh(file, m, bytes, generation);
+        }).mesh;
     }
 
     /**

@@ -51,13 +51,30 @@ public final class BoundedCache<K, V> {
      * @throws RuntimeException whatever {@code load} throws (nothing is cached then)
      */
     public V get(K key, Function<? super K, ? extends V> load) {
+        return get(key, v -> true, load);
+    }
+
+    /**
+     * As {@link #get(Object, Function)}, but a held value for which {@code valid} is false (the
+     * file it was made from has changed since) is dropped and made again.
+     */
+    public V get(K key, java.util.function.Predicate<? super V> valid, Function<? super K, ? extends V> load) {
         while (true) {
             Slot<V> s;
             synchronized (this) {
                 s = slots.computeIfAbsent(key, x -> new Slot<>());
             }
             synchronized (s) {   // lock order: a slot, then the cache; never the reverse
-                if (s.value != null) return s.value;
+                if (s.value != null) {
+                    if (valid.test(s.value)) return s.value;
+                    synchronized (this) {
+                        if (slots.get(key) == s) {
+                            slots.remove(key);
+                            if (s.weight >= 0) weight -= s.weight;
+                        }
+                    }
+                    continue;
+                }
                 synchronized (this) {
                     if (slots.get(key) != s) continue;   // a failed load removed it: start again
                 }

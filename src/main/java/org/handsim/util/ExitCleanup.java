@@ -37,9 +37,38 @@ public final class ExitCleanup {
         ACTIONS.remove(action);
     }
 
-    /** Whether the JVM is shutting down (a temporary file begun now would not be cleaned up). */
+    /**
+     * Whether the JVM is shutting down (a temporary file begun now would not be cleaned up), or
+     * the command is cancelled ({@link CommandContext}): no new temporary file or set is begun.
+     */
     public static boolean stopping() {
-        return stopping;
+        return stopping || CommandContext.cancelled();
+    }
+
+    /** The actions registered now (what {@link #runAllBut} leaves alone). */
+    public static synchronized Set<Runnable> registered() {
+        return new LinkedHashSet<>(ACTIONS);
+    }
+
+    /**
+     * Runs and removes the registered actions that are not in {@code before}, the latest first:
+     * what the JVM's exit would have done for a command that ends without its process ending
+     * (the resident server). Returns how many ran.
+     */
+    public static int runAllBut(Set<Runnable> before) {
+        List<Runnable> todo = new ArrayList<>();
+        synchronized (ExitCleanup.class) {
+            for (Runnable r : ACTIONS) if (!before.contains(r)) todo.add(r);
+            ACTIONS.removeAll(todo);
+        }
+        for (int i = todo.size() - 1; i >= 0; i--) {
+            try {
+                todo.get(i).run();
+            } catch (RuntimeException | Error e) {
+                // best effort: the next action still runs
+            }
+        }
+        return todo.size();
     }
 
     private static void runAll() {

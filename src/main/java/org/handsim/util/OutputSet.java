@@ -345,7 +345,7 @@ public final class OutputSet implements AutoCloseable {
             if (closed) throw new IOException("not publishing " + target + ": the program is being stopped");
             if (steps != null) throw new IllegalStateException("the set of " + target + " is published already");
         }
-        Phase.reach("staged");
+        Phase.reach("staged");   // the last cancellation point: from here on the publication is completed
         List<String[]> plan = plannedSteps();
         StringBuilder text = new StringBuilder();
         for (String[] step : plan) text.append(step[0]).append(' ').append(step[1]).append('\n');
@@ -355,26 +355,26 @@ public final class OutputSet implements AutoCloseable {
             ch.force(true);
         }
         synchronized (this) {
-            if (closed) throw new IOException("not publishing " + target + ": the program is being stopped");
+            if (closed || CommandContext.cancelled()) throw new IOException("not publishing " + target + ": the program is being stopped");
             Files.move(partial, stage.resolve(MANIFEST), StandardCopyOption.ATOMIC_MOVE);
             steps = plan;
         }
-        Phase.reach("manifest");
+        Phase.reachInPublication("manifest");
         for (int i = 0; i < plan.size(); i++) {
-            if (i > 0 && !stepKind(plan.get(i)).equals(stepKind(plan.get(i - 1)))) Phase.reach(stepKind(plan.get(i - 1)));
+            if (i > 0 && !stepKind(plan.get(i)).equals(stepKind(plan.get(i - 1)))) Phase.reachInPublication(stepKind(plan.get(i - 1)));
             synchronized (this) {
                 if (next != i) return;   // the exit hook completed the publication
                 apply(target, stage, plan.get(i));
                 next = i + 1;
             }
         }
-        if (!plan.isEmpty()) Phase.reach(stepKind(plan.get(plan.size() - 1)));
+        if (!plan.isEmpty()) Phase.reachInPublication(stepKind(plan.get(plan.size() - 1)));
         synchronized (this) {
             if (published) return;
             published = true;
             deleteTree(stage);
         }
-        Phase.reach("published");
+        Phase.reachInPublication("published");
     }
 
     /**
