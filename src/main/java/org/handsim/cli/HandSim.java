@@ -53,7 +53,8 @@ public final class HandSim implements Runnable {
         SwingCommand.class,
         QualityCommand.class,
         GraspCommand.class,
-        PlanCommand.class
+        PlanCommand.class,
+        ServerCommand.class
         // sub-commands register here, one line each
     );
 

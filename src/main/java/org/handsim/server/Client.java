@@ -1,0 +1,458 @@
+package org.handsim.server;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.EOFException;
+import java.io.File;
+import java.io.FileDescriptor;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.StandardProtocolFamily;
+import java.net.UnixDomainSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
+import java.nio.channels.SocketChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.nio.file.attribute.PosixFileAttributes;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The {@code handsim} command's entry point as the launcher starts it: a short command (run,
+ * sweep, plan with the local engine, mesh, collide, fk, ik, id, swing, grasp, quality) is handed
+ * to a resident server JVM ({@link Server}) of this install, working directory, build and
+ * environment when one is running and free, so that it runs on code that is already loaded and
+ * compiled; otherwise — no server, a busy one, anything doubtful, another command, or
+ * {@code HANDSIM_SERVER=0} — it runs here, in this JVM, exactly as {@code cli.HandSim} does, and
+ * then starts a server in the background for the next command.
+ *
+ * <p>Deliberately small: on the served path this class uses the JDK alone (no picocli, no other
+ * class of the project), so the JVM that runs it starts in a few tens of milliseconds.
+ *
+ * <p><b>Protocol</b> (a Unix-domain socket in a folder only the user can use, {@link #folder()}):
+ * the client sends {@link #MAGIC}, {@link #RUN}, its identity ({@link #identity()}), whether its
+ * standard streams are a terminal, their encodings and the arguments; the server answers
+ * {@link #ACCEPTED}, {@link #BUSY} or {@link #REFUSED} and a reason; once accepted it sends the
+ * command's standard output and error as frames ({@link #OUT}, {@link #ERR}: type, length,
+ * bytes) and ends with {@link #EXIT} and the exit code. The client sends {@link #CANCEL} when
+ * SIGINT or SIGTERM stops it and exits, as a stopped JVM does (130, 143), only once the server
+ * has answered that the command has stopped (its outputs left whole, the old set or the new);
+ * a client that dies (SIGKILL) closes the socket, which cancels the command the same way.
+ */
+public final class Client {
+    static final int MAGIC = 0x48534331;   // "HSC1"
+    static final byte RUN = 'R', STATUS = 'S', STOP = 'Q';
+    static final byte ACCEPTED = 'A', BUSY = 'B', REFUSED = 'N';
+    static final byte OUT = 'O', ERR = 'E', EXIT = 'X', CANCEL = 'C';
+
+    /** The commands a server runs: short ones of the local engine (not gui, not tradeoff, not Spark). */
+    static final Set<String> SERVED = Set.of("run", "sweep", "plan", "mesh", "collide", "fk", "ik", "id", "swing", "grasp", "quality");
+
+    /** Environment variables that change what a command does or how its JVM runs: a server serves only clients with the same. */
+    private static final Set<String> ENVIRONMENT = Set.of("HOME", "USER", "LANG", "LANGUAGE", "TZ", "LD_LIBRARY_PATH", "LD_PRELOAD",
+        "JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS", "JDK_JAVA_OPTIONS", "JAVA_HOME", "FONTCONFIG_FILE", "FONTCONFIG_PATH");
+    private static final String[] ENVIRONMENT_PREFIXES = {"HANDSIM_", "XDG_", "LC_"};
+    /** System properties that do the same (those not set on the command line have the same defaults in both JVMs). */
+    private static final String[] PROPERTIES = {"java.io.tmpdir", "file.encoding", "sun.jnu.encoding", "user.home", "user.name",
+        "user.language", "user.country", "user.variant", "user.timezone", "java.awt.headless", "j3d.rend"};
+
+    /** Longest socket path the kernel takes (sun_path is 108 bytes with its final zero). */
+    private static final int MAX_SOCKET_PATH = 107;
+
+    private Client() {}
+
+    public static void main(String[] args) {
+        Client.Outcome served = Outcome.NOT_TRIED;
+        String why = null;
+        String identity = null;
+        if (eligible(args)) {
+            try {
+                identity = identity();   // before the command runs: it sets system properties of its own
+                Connection c = connect(identity, args);
+                served = c.outcome;
+                why = c.reason;
+                if (served == Outcome.ACCEPTED) System.exit(c.stream());
+            } catch (IOException | RuntimeException e) {
+                served = Outcome.FAILED;
+                why = String.valueOf(e);
+            }
+        }
+        report("in-process (" + served.name().toLowerCase(java.util.Locale.ROOT) + (why != null ? ": " + why : "") + ")");
+        int code = org.handsim.cli.HandSim.execute(args);
+        if (served == Outcome.NO_SERVER) startServer(identity);
+        System.exit(code);
+    }
+
+    /** What became of the attempt to hand the command to a server. */
+    enum Outcome { NOT_TRIED, NO_SERVER, BUSY, REFUSED, FAILED, ACCEPTED }
+
+    /** Whether a server may run this command line. */
+    static boolean eligible(String[] args) {
+        if ("0".equals(System.getenv("HANDSIM_SERVER"))) return false;
+        if (System.getProperty("handsim.home") == null || args.length == 0 || !SERVED.contains(args[0])) return false;
+        String prev = "";
+        for (String a : args) {
+            if (a.equals("--engine=spark") || prev.equals("--engine") && a.equals("spark")) return false;
+            prev = a;
+        }
+        return true;
+    }
+
+    /** One line on standard error saying how the command ran, when the tests ask for it ({@code handsim.server.report}). */
+    static void report(String how) {
+        if (System.getProperty("handsim.server.report") != null) {
+            System.err.println("handsim-server " + how);
+            System.err.flush();
+        }
+    }
+
+    /** A connection to this command's server, or why there is none. */
+    static final class Connection {
+        Outcome outcome;
+        String reason;
+        SocketChannel channel;
+        Path log;
+        DataInputStream in;
+        DataOutputStream out;
+        private volatile boolean stopped;
+        private final CountDownLatch done = new CountDownLatch(1);
+
+        /**
+         * Relays the command's output until its exit code, which it returns. SIGINT or SIGTERM
+         * meanwhile: the command is cancelled, its further output dropped, and the JVM exits
+         * with the signal's status once the server says the command has ended.
+         */
+        int stream() throws IOException {
+            Thread hook = new Thread(this::cancelAndWait, "handsim-client-stop");
+            Runtime.getRuntime().addShutdownHook(hook);
+            OutputStream stdout = new FileOutputStream(FileDescriptor.out), stderr = new FileOutputStream(FileDescriptor.err);
+            byte[] buf = new byte[8192];
+            try {
+                while (true) {
+                    int type = in.read();
+                    if (type == EXIT) {
+                        int code = in.readInt();
+                        done.countDown();
+                        return code;
+                    }
+                    if (type != OUT && type != ERR) throw new EOFException();
+                    int n = in.readInt();
+                    if (n < 0) throw new IOException("bad frame length " + n);
+                    if (buf.length < n) buf = new byte[n];
+                    in.readFully(buf, 0, n);
+                    if (stopped) continue;   // a stopped command's last words are not shown: a stopped JVM says nothing either
+                    try {
+                        (type == OUT ? stdout : stderr).write(buf, 0, n);
+                    } catch (IOException e) {
+                        // a closed pipe (handsim run | head): the command goes on, as System.out ignores it too
+                    }
+                }
+            } catch (IOException e) {
+                done.countDown();
+                if (stopped) return 1;   // the exit status is the signal's
+                String log = String.valueOf(this.log);
+                stderr.write(("handsim: the resident server ended during the command (its log: " + log + "); its outputs are"
+                    + " the old set or a whole new one: run it again, or with HANDSIM_SERVER=0\n").getBytes(StandardCharsets.UTF_8));
+                return 1;
+            }
+        }
+
+        /** The shutdown hook: nothing after a normal end; after SIGINT/SIGTERM, cancel the command and wait for the server to end it. */
+        private void cancelAndWait() {
+            if (done.getCount() == 0) return;
+            stopped = true;
+            try {
+                synchronized (this) {
+                    out.writeByte(CANCEL);
+                    out.flush();
+                }
+            } catch (IOException e) {
+                return;   // the server is gone: nothing to wait for
+            }
+            try {
+                done.await(Server.CANCEL_GRACE_MS + 30_000, TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /** Connects to the server of this client's identity and asks it to run {@code args}. */
+    private static Connection connect(String identity, String[] args) throws IOException {
+        Connection c = new Connection();
+        Path dir = folder();
+        String unsafe = dir == null ? "no cache folder" : unsafe(dir, true);
+        if (unsafe != null) {
+            c.outcome = Outcome.REFUSED;
+            c.reason = unsafe;
+            return c;
+        }
+        Path socket = socketFile(dir, key(identity));
+        if (socket.toString().length() > MAX_SOCKET_PATH) {
+            c.outcome = Outcome.REFUSED;
+            c.reason = "socket path too long: " + socket;
+            return c;
+        }
+        if (!Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
+            c.outcome = Outcome.NO_SERVER;
+            return c;
+        }
+        SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
+        try {
+            ch.connect(UnixDomainSocketAddress.of(socket));
+        } catch (IOException e) {   // nobody listens: a server killed without removing its socket
+            ch.close();
+            c.outcome = Outcome.NO_SERVER;
+            c.reason = "stale socket";
+            return c;
+        }
+        c.channel = ch;
+        c.log = Server.logFile(dir, key(identity));
+        c.in = new DataInputStream(new java.io.BufferedInputStream(in(ch)));
+        c.out = new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
+        c.out.writeInt(MAGIC);
+        c.out.writeByte(RUN);
+        writeString(c.out, identity);
+        c.out.writeBoolean(System.console() != null);
+        writeString(c.out, System.getProperty("sun.stdout.encoding", ""));
+        writeString(c.out, System.getProperty("sun.stderr.encoding", ""));
+        c.out.writeInt(args.length);
+        for (String a : args) writeString(c.out, a);
+        c.out.flush();
+        int answer = c.in.read();
+        if (answer == ACCEPTED) {
+            c.outcome = Outcome.ACCEPTED;
+            report("served");
+            return c;
+        }
+        c.outcome = answer == BUSY ? Outcome.BUSY : Outcome.REFUSED;
+        c.reason = answer == REFUSED ? readString(c.in) : answer == BUSY ? "busy" : "no answer";
+        ch.close();
+        return c;
+    }
+
+    /**
+     * The folder of the servers' sockets, locks and logs: system property
+     * {@code handsim.server.dir}, else {@code $XDG_CACHE_HOME/handsim/server} (an absolute
+     * XDG_CACHE_HOME), else {@code ~/.cache/handsim/server}; null without a home.
+     */
+    static Path folder() {
+        String p = System.getProperty("handsim.server.dir");
+        if (p != null && !p.isEmpty()) return Path.of(p);
+        String xdg = System.getenv("XDG_CACHE_HOME");
+        if (xdg != null && !xdg.isEmpty() && Path.of(xdg).isAbsolute()) return Path.of(xdg, "handsim", "server");
+        String home = System.getProperty("user.home");
+        if (home == null || home.isEmpty() || home.equals("?")) return null;
+        return Path.of(home, ".cache", "handsim", "server");
+    }
+
+    private static final Set<PosixFilePermission> OWNER_ONLY = EnumSet.of(PosixFilePermission.OWNER_READ,
+        PosixFilePermission.OWNER_WRITE, PosixFilePermission.OWNER_EXECUTE);
+
+    /**
+     * Null if {@code dir} is a folder (not a link) of this user with mode 700 — made so if
+     * missing and {@code create} — else what is wrong with it: a server's socket is used only
+     * there, where nobody else can connect to it, replace it or read the logs.
+     */
+    static String unsafe(Path dir, boolean create) {
+        try {
+            if (create && !Files.exists(dir, LinkOption.NOFOLLOW_LINKS)) {
+                Path parent = dir.getParent();
+                if (parent != null && !Files.isDirectory(parent)) {
+                    Files.createDirectories(parent, PosixFilePermissions.asFileAttribute(OWNER_ONLY));
+                }
+                try {
+                    Files.createDirectory(dir, PosixFilePermissions.asFileAttribute(OWNER_ONLY));
+                } catch (java.nio.file.FileAlreadyExistsException e) {
+                    // made by another command meanwhile: checked below
+                }
+            }
+            PosixFileAttributes a = Files.readAttributes(dir, PosixFileAttributes.class, LinkOption.NOFOLLOW_LINKS);
+            if (!a.isDirectory()) return dir + " is not a folder";
+            if (!a.permissions().equals(OWNER_ONLY)) return dir + " has mode " + PosixFilePermissions.toString(a.permissions()) + ", not rwx------";
+            if (!a.owner().getName().equals(System.getProperty("user.name"))) return dir + " belongs to " + a.owner().getName();
+            return null;
+        } catch (IOException | RuntimeException e) {
+            return dir + ": " + e;
+        }
+    }
+
+    /**
+     * Everything a command's result may depend on besides its arguments and its input files: the
+     * install, the working directory (its path and the folder itself), the JVM and its options
+     * for the server, the build (every class-path entry's path, size and time), the umask, the
+     * environment variables and system properties that matter. A server serves only clients of
+     * its own identity; the socket's name is a hash of it ({@link #key}).
+     */
+    static String identity() {
+        StringBuilder sb = new StringBuilder("handsim server 1\n");
+        sb.append("home ").append(System.getProperty("handsim.home")).append('\n');
+        String cwd = System.getProperty("user.dir");
+        sb.append("cwd ").append(cwd).append(' ').append(fileKey(Path.of("."))).append('\n');
+        sb.append("java ").append(System.getProperty("java.home")).append(' ').append(System.getProperty("java.vm.version")).append('\n');
+        sb.append("server-jvm ").append(System.getProperty("handsim.server.jvm")).append('\n');
+        sb.append(build());
+        sb.append("umask ").append(umask()).append('\n');
+        Map<String, String> env = new TreeMap<>();
+        for (Map.Entry<String, String> e : System.getenv().entrySet()) {
+            String k = e.getKey();
+            boolean keep = ENVIRONMENT.contains(k);
+            for (String p : ENVIRONMENT_PREFIXES) keep |= k.startsWith(p);
+            if (keep && !k.equals("HANDSIM_SERVER")) env.put(k, e.getValue());
+        }
+        for (Map.Entry<String, String> e : env.entrySet()) sb.append("env ").append(e.getKey()).append('=').append(e.getValue()).append('\n');
+        Map<String, String> props = new TreeMap<>();
+        for (String k : System.getProperties().stringPropertyNames()) {
+            if (k.startsWith("handsim.") && !k.equals("handsim.server.report")) props.put(k, System.getProperty(k));
+        }
+        for (String k : PROPERTIES) props.put(k, String.valueOf(System.getProperty(k)));
+        for (Map.Entry<String, String> e : props.entrySet()) sb.append("property ").append(e.getKey()).append('=').append(e.getValue()).append('\n');
+        return sb.toString();
+    }
+
+    /** The build: each class-path entry's path, size and modification time, one line each. */
+    static String build() {
+        StringBuilder sb = new StringBuilder();
+        for (String e : System.getProperty("java.class.path", "").split(File.pathSeparator)) {
+            File f = new File(e);
+            sb.append("class-path ").append(e).append(' ').append(f.length()).append(' ').append(f.lastModified()).append('\n');
+        }
+        return sb.toString();
+    }
+
+    /** The file system's identity of a file (device and inode on Linux), "?" if unknown. */
+    static String fileKey(Path p) {
+        try {
+            return String.valueOf(Files.readAttributes(p, BasicFileAttributes.class).fileKey());
+        } catch (IOException | RuntimeException e) {
+            return "?";
+        }
+    }
+
+    /** This process's umask (Linux: /proc/self/status), "?" if unknown. */
+    static String umask() {
+        try {
+            for (String l : Files.readAllLines(Path.of("/proc/self/status"), StandardCharsets.ISO_8859_1)) {
+                if (l.startsWith("Umask:")) return l.substring(6).trim();
+            }
+        } catch (IOException | RuntimeException e) {
+            return "?";
+        }
+        return "?";
+    }
+
+    /** A hash of the identity as 16 hexadecimal digits (FNV-1a, 64 bits): the socket's name; the server checks the whole identity. */
+    static String key(String identity) {
+        long h = 0xcbf29ce484222325L;
+        for (byte b : identity.getBytes(StandardCharsets.UTF_8)) {
+            h ^= b & 0xff;
+            h *= 0x100000001b3L;
+        }
+        return String.format("%016x", h);
+    }
+
+    static Path socketFile(Path dir, String key) { return dir.resolve(key + ".sock"); }
+    static Path lockFile(Path dir, String key) { return dir.resolve(key + ".lock"); }
+
+    /**
+     * Starts a server for this client's identity in the background, for the next command: in a
+     * session of its own (so the terminal's Ctrl-C does not reach it), its output to its log
+     * file. Nothing if the launcher gave no server options ({@code handsim.server.jvm}), if there
+     * is no {@code setsid}, or if a server holds the lock already (starting, or serving).
+     */
+    static void startServer(String identity) {
+        String jvm = System.getProperty("handsim.server.jvm");
+        Path dir = folder();
+        if (jvm == null || dir == null || unsafe(dir, true) != null) return;
+        String setsid = null;
+        for (String s : new String[] {"/usr/bin/setsid", "/bin/setsid"}) if (new File(s).canExecute()) setsid = s;
+        if (setsid == null) return;
+        String key = key(identity);
+        try (FileChannel ch = FileChannel.open(lockFile(dir, key), StandardOpenOption.CREATE, StandardOpenOption.WRITE)) {
+            FileLock lock = ch.tryLock();
+            if (lock == null) return;   // a server has it
+            Files.deleteIfExists(socketFile(dir, key));   // what a killed server left: nobody listens there
+            lock.release();
+            List<String> cmd = new ArrayList<>();
+            cmd.add(setsid);
+            cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+            for (String o : jvm.trim().split("\\s+")) if (!o.isEmpty()) cmd.add(o);
+            cmd.add("-Dhandsim.server.jvm=" + jvm);
+            cmd.add("-cp");
+            cmd.add(System.getProperty("java.class.path"));
+            cmd.add(Server.class.getName());
+            File log = Server.logFile(dir, key).toFile();
+            new ProcessBuilder(cmd).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")))
+                .redirectOutput(ProcessBuilder.Redirect.to(log)).redirectErrorStream(true).start();
+        } catch (IOException | RuntimeException e) {
+            // no server this time: the next command runs in-process again
+        }
+    }
+
+    static void writeString(DataOutputStream out, String s) throws IOException {
+        byte[] b = s.getBytes(StandardCharsets.UTF_8);
+        out.writeInt(b.length);
+        out.write(b);
+    }
+
+    static String readString(DataInputStream in) throws IOException {
+        int n = in.readInt();
+        if (n < 0 || n > (16 << 20)) throw new IOException("bad string length " + n);
+        byte[] b = new byte[n];
+        in.readFully(b);
+        return new String(b, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * A stream that reads the channel directly: the JDK's channel streams take the channel's
+     * blocking lock for a read, which would hold up a write (the cancellation) for as long as
+     * the read waits.
+     */
+    static InputStream in(SocketChannel ch) {
+        return new InputStream() {
+            @Override
+            public int read() throws IOException {
+                byte[] one = new byte[1];
+                return read(one, 0, 1) < 0 ? -1 : one[0] & 0xff;
+            }
+
+            @Override
+            public int read(byte[] b, int off, int len) throws IOException {
+                if (len == 0) return 0;
+                return ch.read(ByteBuffer.wrap(b, off, len));
+            }
+        };
+    }
+
+    /** A stream that writes the channel directly (see {@link #in}). */
+    static OutputStream out(SocketChannel ch) {
+        return new OutputStream() {
+            @Override
+            public void write(int b) throws IOException {
+                write(new byte[] {(byte) b}, 0, 1);
+            }
+
+            @Override
+            public void write(byte[] b, int off, int len) throws IOException {
+                ByteBuffer bb = ByteBuffer.wrap(b, off, len);
+                while (bb.hasRemaining()) ch.write(bb);
+            }
+        };
+    }
+}
