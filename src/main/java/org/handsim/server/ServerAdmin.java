@@ -44,8 +44,12 @@ public final class ServerAdmin {
      * SIGKILL) are removed when their lock shows no server holds them.
      */
     public static List<Status> servers() throws IOException {
+        return servers(Client.folder());
+    }
+
+    /** As {@link #servers()}, in the folder {@code dir}. */
+    public static List<Status> servers(Path dir) throws IOException {
         List<Status> found = new ArrayList<>();
-        Path dir = Client.folder();
         if (dir == null || !Files.isDirectory(dir) || Client.unsafe(dir, false) != null) return found;
         List<Path> sockets = new ArrayList<>();
         try (DirectoryStream<Path> s = Files.newDirectoryStream(dir, "*.sock")) {

@@ -1,0 +1,404 @@
+package org.handsim.server;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.net.StandardProtocolFamily;
+import java.net.UnixDomainSocketAddress;
+import java.nio.channels.SocketChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.jar.JarOutputStream;
+import java.util.zip.ZipEntry;
+import org.handsim.TestPaths;
+import org.handsim.cli.ChildJvm;
+import org.handsim.util.Json;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The resident server against the command run in its own JVM: the same bytes; a client stopped
+ * with SIGTERM or SIGKILL mid-run leaves the old set or a whole new one and no private folder;
+ * a second client while the server is busy runs in its own JVM; a socket left by a server killed
+ * with SIGKILL is found and removed; a server whose build changed refuses and exits. Every JVM
+ * here is a child (the client as the launcher starts it, {@code org.handsim.server.Client}; the
+ * server started directly, in the same working directory with the same options), with its own
+ * server folder, so nothing touches the user's servers.
+ */
+@Tag("slow")
+class ServerTest {
+    /** A command's end: exit code, standard output, standard error without the client's report line, and that line. */
+    record Ran(int code, String out, String err, String how) {}
+
+    /** A test's folder: {@code work/} (the working directory), {@code srv/} (the servers' folder), and the JVM options of both sides. */
+    static final class Setup implements AutoCloseable {
+        final Path dir, work, srv;
+        final List<String> jvm = new ArrayList<>();
+        String classPath = System.getProperty("java.class.path");
+        final List<Process> started = new ArrayList<>();
+
+        Setup(String name, String... extraJvm) throws Exception {
+            dir = Files.createTempDirectory("handsim-server-" + name);
+            work = Files.createDirectories(dir.resolve("work"));
+            srv = dir.resolve("srv");
+            jvm.addAll(List.of("-Xss16m", "-Xmx1g", "-Djava.awt.headless=true", "-Dj3d.rend=noop", "-Djava.io.tmpdir=" + dir,
+                "-Dhandsim.home=" + TestPaths.root(), "-Dhandsim.cache=" + dir.resolve("cache"), "-Dhandsim.server.dir=" + srv,
+                "-Dhandsim.server.idle=300"));
+            jvm.addAll(List.of(extraJvm));
+        }
+
+        private List<String> command(String main, List<String> more, String... args) {
+            List<String> cmd = new ArrayList<>();
+            cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+            cmd.addAll(jvm);
+            cmd.add("-Dhandsim.server.jvm=" + String.join(" ", jvm));
+            cmd.addAll(more);
+            cmd.add("-cp");
+            cmd.add(classPath);
+            cmd.add(main);
+            cmd.addAll(List.of(args));
+            return cmd;
+        }
+
+        /** Starts a server here and waits until it listens; returns its process. */
+        Process server() throws Exception {
+            Path log = Files.createTempFile(dir, "server", ".log");
+            Process p = new ProcessBuilder(command(Server.class.getName(), List.of())).directory(work.toFile())
+                .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null"))).redirectErrorStream(true)
+                .redirectOutput(log.toFile()).start();
+            started.add(p);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(90);
+            while (System.nanoTime() < end) {
+                if (Files.isDirectory(srv) && !ServerAdmin.servers(srv).isEmpty()) {
+                    for (ServerAdmin.Status s : ServerAdmin.servers(srv)) if (s.field("pid").equals(Long.toString(p.pid()))) return p;
+                }
+                if (!p.isAlive()) fail("the server ended: " + Files.readString(log));
+                Thread.sleep(50);
+            }
+            fail("the server did not listen within 90 s: " + Files.readString(log));
+            return p;
+        }
+
+        /** Starts a client (the launcher's entry point) with the command {@code args}; {@code inProcess}: with HANDSIM_SERVER=0. */
+        ChildJvm.Started client(boolean inProcess, String... args) throws Exception {
+            ProcessBuilder pb = new ProcessBuilder(command(Client.class.getName(), List.of("-Dhandsim.server.report=on"), args)).directory(work.toFile());
+            pb.environment().remove("HANDSIM_SERVER");
+            if (inProcess) pb.environment().put("HANDSIM_SERVER", "0");
+            Path out = Files.createTempFile(dir, "client", ".out"), err = Files.createTempFile(dir, "client", ".err");
+            Process p = pb.redirectOutput(out.toFile()).redirectError(err.toFile()).redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null"))).start();
+            return new ChildJvm.Started(p, out, err);
+        }
+
+        /** Runs a client to its end. */
+        Ran run(boolean inProcess, String... args) throws Exception {
+            return finish(client(inProcess, args));
+        }
+
+        Ran finish(ChildJvm.Started c) throws Exception {
+            if (!c.process().waitFor(3, TimeUnit.MINUTES)) {
+                c.process().destroyForcibly().waitFor();
+                fail("the client did not end within 3 minutes: " + c.errText());
+            }
+            String err = c.errText();
+            String how = "";
+            List<String> rest = new ArrayList<>();
+            for (String l : err.split("\n", -1)) {
+                if (l.startsWith("handsim-server ")) how = l.substring("handsim-server ".length());
+                else rest.add(l);
+            }
+            return new Ran(c.process().exitValue(), Files.readString(c.out(), StandardCharsets.UTF_8), String.join("\n", rest), how);
+        }
+
+        /** Stops every server of this folder and waits for the processes this test started. */
+        @Override
+        public void close() throws Exception {
+            try {
+                if (Files.isDirectory(srv)) {
+                    for (ServerAdmin.Status s : ServerAdmin.servers(srv)) {
+                        ServerAdmin.stop(s.socket());
+                        long pid = Long.parseLong(s.field("pid"));
+                        ProcessHandle.of(pid).ifPresent(h -> {
+                            try {
+                                h.onExit().get(30, TimeUnit.SECONDS);
+                            } catch (Exception e) {
+                                h.destroyForcibly();   // a server this test started (directly or through its client)
+                            }
+                        });
+                    }
+                }
+                for (Process p : started) {
+                    if (!p.waitFor(30, TimeUnit.SECONDS)) p.destroyForcibly().waitFor();
+                }
+            } finally {
+                ChildJvm.deleteTree(dir);
+            }
+        }
+    }
+
+    @Test
+    void servedCommandsGiveTheBytesOfInProcessOnes() throws Exception {
+        try (Setup s = new Setup("same")) {
+            Ran ref = s.run(true, "run", "--dt", "0.005", "--out", "ref");
+            assertEquals(0, ref.code(), ref.err());
+            assertTrue(ref.how().startsWith("in-process (not_tried"), ref.how());
+            Process server = s.server();
+            for (int round = 1; round <= 2; round++) {
+                Ran served = s.run(false, "run", "--dt", "0.005", "--out", "served");
+                assertEquals(0, served.code(), served.err());
+                assertEquals("served", served.how());
+                assertEquals(ref.err(), served.err());
+                assertEquals(lastLine(ref.out()), lastLine(served.out()).replace("served", "ref"));
+                Path a = s.work.resolve("ref"), b = s.work.resolve("served");
+                for (String f : List.of("trace.csv", "fig7_finger3.png", "fig8_finger3.png")) {
+                    assertTrue(Arrays.equals(Files.readAllBytes(a.resolve(f)), Files.readAllBytes(b.resolve(f))), f + " differs in round " + round);
+                }
+                for (String f : List.of("fig7_finger3.svg", "fig8_finger3.svg")) {   // apart from JFreeSVG's clip ids, made of the clock in any JVM
+                    assertEquals(svg(a.resolve(f)), svg(b.resolve(f)), f + " differs in round " + round);
+                }
+                assertEquals(withoutTimes(a.resolve("summary.json")), withoutTimes(b.resolve("summary.json")), "summary.json, round " + round);
+                assertEquals(List.of(), hidden(b));
+            }
+            // errors: the same line and exit code
+            Ran refBad = s.run(true, "run", "no-such.json");
+            Ran bad = s.run(false, "run", "no-such.json");
+            assertEquals("served", bad.how());
+            assertEquals(3, refBad.code());
+            assertEquals(refBad.code(), bad.code());
+            assertEquals(refBad.err(), bad.err());
+            // a command it does not serve runs in-process
+            Ran help = s.run(false, "tradeoff", "--help");
+            assertEquals(0, help.code());
+            assertTrue(help.how().startsWith("in-process (not_tried"), help.how());
+            assertTrue(server.isAlive(), "the server serves on");
+        }
+    }
+
+    @Test
+    void sigtermOrSigkillOfTheClientLeavesTheOldSetOrAWholeNewOne() throws Exception {
+        for (String phase : List.of("half-run", "manifest")) {
+            for (boolean kill : new boolean[] {false, true}) {
+                try (Setup s = new Setup("stop", "-Dhandsim.phases=on", "-Dhandsim.phases.pause=" + phase)) {
+                    Path resume = s.dir.resolve("resume");
+                    s.jvm.add("-Dhandsim.phases.resume=" + resume);
+                    Files.writeString(resume, "");
+                    Ran old = s.run(true, "run", "--dt", "0.01", "--out", "out");
+                    assertEquals(0, old.code(), old.err());
+                    Map<String, byte[]> before = snapshot(s.work.resolve("out"));
+                    Files.delete(resume);
+                    Process server = s.server();
+                    ChildJvm.Started c = s.client(false, "run", "--dt", "0.005", "--out", "out");
+                    waitFor(c, "handsim-phase " + phase + "\n");
+                    if (kill) c.process().destroyForcibly(); else c.process().destroy();
+                    assertTrue(c.process().waitFor(60, TimeUnit.SECONDS), "the client ends after its signal");
+                    String where = (kill ? "SIGKILL" : "SIGTERM") + " at " + phase;
+                    if (!kill) assertEquals(143, c.process().exitValue(), where + ": the exit status of a JVM stopped by SIGTERM");
+                    waitIdle(s, server);   // after SIGKILL the server notices the closed socket by itself
+                    Path out = s.work.resolve("out");
+                    assertEquals(List.of(), hidden(out), where + ": no private folder or lock left");
+                    Map<String, byte[]> after = snapshot(out);
+                    if (phase.equals("half-run")) {
+                        assertTrue(same(before, after), where + ": the old set, byte for byte: " + after.keySet());
+                    } else {   // the publication had begun: it is completed
+                        @SuppressWarnings("unchecked")
+                        Map<String, Object> summary = (Map<String, Object>) Json.parse("summary.json", new String(after.get("summary.json"), StandardCharsets.UTF_8));
+                        assertEquals(0.005, ((Number) summary.get("dt_s")).doubleValue(), 1e-15, where + ": the whole new set");
+                        long steps = ((Number) summary.get("steps")).longValue();
+                        assertEquals(steps + 2, Files.readAllLines(out.resolve("trace.csv")).size(), where + ": the new trace (header, start, steps)");
+                    }
+                    assertTrue(server.isAlive(), where + ": the server serves on");
+                    Files.writeString(resume, "");
+                    Ran next = s.run(false, "run", "--dt", "0.005", "--out", "out");
+                    assertEquals(0, next.code(), where + ": the next command: " + next.err());
+                    assertEquals("served", next.how(), where);
+                    assertEquals(List.of(), hidden(out));
+                }
+            }
+        }
+    }
+
+    @Test
+    void aBusyServerSendsTheSecondClientToItsOwnJvm() throws Exception {
+        try (Setup s = new Setup("busy", "-Dhandsim.phases=on", "-Dhandsim.phases.pause=half-run")) {
+            Path resume = s.dir.resolve("resume");
+            s.jvm.add("-Dhandsim.phases.resume=" + resume);
+            s.server();
+            ChildJvm.Started first = s.client(false, "run", "--dt", "0.005", "--out", "out");
+            waitFor(first, "handsim-phase half-run\n");
+            Ran second = s.run(false, "fk", "--finger", "1", "--joints=0.1,0.2,0.3");
+            assertEquals(0, second.code(), second.err());
+            assertEquals("in-process (busy: busy)", second.how());
+            Ran ref = s.run(true, "fk", "--finger", "1", "--joints=0.1,0.2,0.3");
+            assertEquals(ref.out(), second.out());
+            Files.writeString(resume, "");
+            Ran firstDone = s.finish(first);
+            assertEquals(0, firstDone.code(), firstDone.err());
+            assertEquals("served", firstDone.how());
+        }
+    }
+
+    @Test
+    void aSocketLeftByAKilledServerIsRemoved() throws Exception {
+        try (Setup s = new Setup("stale")) {
+            Process server = s.server();
+            Path socket = ServerAdmin.servers(s.srv).get(0).socket();
+            server.destroyForcibly().waitFor();
+            assertTrue(Files.exists(socket), "SIGKILL leaves the socket");
+            Ran r = s.run(false, "fk", "--finger", "2", "--joints=0,0.5,0.5");
+            assertEquals(0, r.code(), r.err());
+            assertEquals("in-process (no_server: stale socket)", r.how());
+            // the client removed it and started a server for next time: the socket is a live one now, or none yet
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(90);
+            List<ServerAdmin.Status> live = List.of();
+            while (System.nanoTime() < end && (live = ServerAdmin.servers(s.srv)).isEmpty()) Thread.sleep(100);
+            assertEquals(1, live.size(), "the client started a new server");
+            assertNotEquals(Long.toString(server.pid()), live.get(0).field("pid"));
+            Ran next = s.run(false, "fk", "--finger", "2", "--joints=0,0.5,0.5");
+            assertEquals("served", next.how());
+            assertEquals(r.out(), next.out());
+        }
+    }
+
+    @Test
+    void aServerWhoseJarChangedRefusesAndExits() throws Exception {
+        try (Setup s = new Setup("jar")) {
+            Path jar = s.dir.resolve("extra.jar");
+            writeJar(jar, 1);
+            s.classPath = s.classPath + java.io.File.pathSeparator + jar;
+            Process server = s.server();
+            assertEquals("served", s.run(false, "fk", "--finger", "1", "--joints=0,0,0").how());
+            ServerAdmin.Status st = ServerAdmin.servers(s.srv).get(0);
+            String identity = identityOf(s.srv, st.socket());
+            writeJar(jar, 2);   // a new build: another size
+            // a client of the old identity (as one that looked just before the rebuild) is refused
+            String answer = request(st.socket(), identity);
+            assertTrue(answer == null || answer.startsWith("refused: the build changed"), answer);
+            assertTrue(server.waitFor(30, TimeUnit.SECONDS), "the server exits");
+            assertFalse(Files.exists(st.socket()), "and removes its socket");
+        }
+    }
+
+    /** The identity a server serves (its status after the state lines). */
+    private static String identityOf(Path srv, Path socket) throws Exception {
+        for (ServerAdmin.Status s : ServerAdmin.servers(srv)) {
+            if (!s.socket().equals(socket)) continue;
+            try (SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX)) {
+                ch.connect(UnixDomainSocketAddress.of(socket));
+                DataOutputStream out = new DataOutputStream(Client.out(ch));
+                out.writeInt(Client.MAGIC);
+                out.writeByte(Client.STATUS);
+                String text = Client.readString(new DataInputStream(Client.in(ch)));
+                return text.substring(text.indexOf("handsim server 1\n"));
+            }
+        }
+        throw new AssertionError("no server at " + socket);
+    }
+
+    /** Sends a RUN request of {@code identity} for {@code fk}; "refused: REASON", "accepted", "busy", or null if nobody listens. */
+    private static String request(Path socket, String identity) {
+        try (SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX)) {
+            ch.connect(UnixDomainSocketAddress.of(socket));
+            DataOutputStream out = new DataOutputStream(Client.out(ch));
+            DataInputStream in = new DataInputStream(Client.in(ch));
+            out.writeInt(Client.MAGIC);
+            out.writeByte(Client.RUN);
+            Client.writeString(out, identity);
+            out.writeBoolean(false);
+            Client.writeString(out, "");
+            Client.writeString(out, "");
+            out.writeInt(1);
+            Client.writeString(out, "fk");
+            int a = in.read();
+            if (a == Client.REFUSED) return "refused: " + Client.readString(in).replaceFirst("^another identity: .*", "the build changed (identity)");
+            return a == Client.ACCEPTED ? "accepted" : a == Client.BUSY ? "busy" : null;
+        } catch (java.io.IOException e) {
+            return null;
+        }
+    }
+
+    private static void writeJar(Path jar, int entries) throws Exception {
+        try (JarOutputStream j = new JarOutputStream(Files.newOutputStream(jar))) {
+            for (int i = 0; i < entries; i++) {
+                j.putNextEntry(new ZipEntry("handsim-test/" + i + ".txt"));
+                j.write(("entry " + i).getBytes(StandardCharsets.UTF_8));
+                j.closeEntry();
+            }
+        }
+    }
+
+    private static void waitFor(ChildJvm.Started c, String text) throws Exception {
+        long end = System.nanoTime() + TimeUnit.MINUTES.toNanos(3);
+        while (System.nanoTime() < end) {
+            if (c.errText().contains(text)) return;
+            if (!c.process().isAlive()) fail("the client ended before '" + text.trim() + "': " + c.errText());
+            Thread.sleep(20);
+        }
+        fail("'" + text.trim() + "' not seen within 3 minutes: " + c.errText());
+    }
+
+    /** Waits until the server says it is idle again (its command ended). */
+    private static void waitIdle(Setup s, Process server) throws Exception {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < end) {
+            for (ServerAdmin.Status st : ServerAdmin.servers(s.srv)) {
+                if (st.field("pid").equals(Long.toString(server.pid())) && st.field("state").equals("idle")) return;
+            }
+            Thread.sleep(50);
+        }
+        fail("the server did not end the cancelled command within 60 s");
+    }
+
+    private static String svg(Path f) throws Exception {
+        return Files.readString(f).replaceAll("_[0-9]+clip-", "_Nclip-");
+    }
+
+    private static String lastLine(String text) {
+        String[] l = text.trim().split("\n");
+        return l[l.length - 1];
+    }
+
+    /** summary.json without the keys that are timings. */
+    @SuppressWarnings("unchecked")
+    private static Object withoutTimes(Path summary) throws Exception {
+        Map<String, Object> m = new LinkedHashMap<>((Map<String, Object>) Json.parse("summary.json", Files.readString(summary)));
+        for (String k : List.of("wall_time_s", "steps_per_s", "realtime_factor", "setup_time_s", "phase_times")) {
+            assertNotNull(m.remove(k), "summary.json has " + k);
+        }
+        return m;
+    }
+
+    private static Map<String, byte[]> snapshot(Path out) throws Exception {
+        Map<String, byte[]> m = new java.util.TreeMap<>();
+        try (var st = Files.list(out)) {
+            for (Path p : (Iterable<Path>) st::iterator) if (Files.isRegularFile(p)) m.put(p.getFileName().toString(), Files.readAllBytes(p));
+        }
+        return m;
+    }
+
+    private static boolean same(Map<String, byte[]> a, Map<String, byte[]> b) {
+        if (!a.keySet().equals(b.keySet())) return false;
+        for (String k : a.keySet()) if (!Arrays.equals(a.get(k), b.get(k))) return false;
+        return true;
+    }
+
+    private static List<String> hidden(Path out) throws Exception {
+        List<String> h = new ArrayList<>();
+        try (var st = Files.list(out)) {
+            for (Path p : (Iterable<Path>) st::iterator) if (p.getFileName().toString().startsWith(".")) h.add(p.getFileName().toString());
+        }
+        h.sort(null);
+        return h;
+    }
+}
