@@ -72,7 +72,8 @@ public final class Server {
     private final String build, cwdKey;
     private ServerSocketChannel listener;
     private Object socketKey;
-    private boolean busy, stopping;
+    private boolean busy, stopping, warming, clientCame;
+    private volatile long warmUpCancelledAt;
     private long lastActivity = System.currentTimeMillis();
     private int served;
 
@@ -129,6 +130,11 @@ public final class Server {
             Thread watch = new Thread(this::watch, "handsim-server-watch");
             watch.setDaemon(true);
             watch.start();
+            if (!"0".equals(System.getProperty("handsim.server.warmup"))) {
+                Thread warm = new Thread(this::warmUp, "handsim-server-warm-up");
+                warm.setDaemon(true);
+                warm.start();
+            }
             try {
                 while (true) {
                     SocketChannel c;
@@ -228,6 +234,19 @@ public final class Server {
                 return;
             }
             synchronized (this) {
+                clientCame = true;   // no more warming up
+                if (warming) {       // a warm-up run: it stops at its next cancellation point, and the client is served
+                    warmUpCancelledAt = System.nanoTime();
+                    CommandContext.cancel();
+                    while (warming) {
+                        try {
+                            wait();
+                        } catch (InterruptedException e) {
+                            Thread.currentThread().interrupt();
+                            return;
+                        }
+                    }
+                }
                 if (busy || stopping) {
                     out.writeByte(Client.BUSY);
                     out.flush();
@@ -281,7 +300,7 @@ public final class Server {
         return "pid " + ProcessHandle.current().pid() + "\n"
             + "since " + Instant.ofEpochMilli(started) + "\n"
             + "commands " + served + "\n"
-            + "state " + (busy ? "busy" : stopping ? "stopping" : "idle") + "\n"
+            + "state " + (warming ? "warming" : busy ? "busy" : stopping ? "stopping" : "idle") + "\n"
             + "log " + logFile(dir, key) + "\n"
             + identity;
     }
@@ -353,11 +372,109 @@ public final class Server {
 
         PrintStream cmdOut = new PrintStream(new BufferedOutputStream(new Frames(out, Client.OUT, cancel), 8192), true, outCs);
         PrintStream cmdErr = new PrintStream(new BufferedOutputStream(new Frames(out, Client.ERR, cancel), 8192), true, errCs);
+        reader.start();
+        int[] code = {1};
+        boolean fit = execute(args, console, cmdOut, cmdErr, code, () -> {
+            synchronized (command) {
+                return cancelled[0] ? cancelledAt[0] : 0;
+            }
+        }, () -> {
+            synchronized (command) {
+                finished[0] = true;
+                CommandContext.end();
+            }
+        });
+        boolean wasCancelled;
+        synchronized (command) {
+            wasCancelled = cancelled[0];
+        }
+        if (code[0] == 1 && !wasCancelled) fit = false;   // an unexpected failure (out of memory, an internal error): start afresh
+        try {
+            synchronized (out) {
+                out.writeByte(Client.EXIT);
+                out.writeInt(code[0]);
+                out.flush();
+            }
+        } catch (IOException e) {
+            // the client is gone
+        }
+        say(String.join(" ", args) + ": exit " + code[0] + (wasCancelled ? " (cancelled)" : "") + " in "
+            + String.format(java.util.Locale.ROOT, "%.3f", (System.nanoTime() - t0) / 1e9) + " s");
+        return fit;
+    }
+
+    /** Warm-up runs after the start: the paper's run and the mug grasp, each this many times. */
+    static final int WARM_UP_ROUNDS = 4;
+
+    /**
+     * Runs the paper's experiment and the mug grasp a few times into a private temporary folder,
+     * their output thrown away, so that the next command finds the code they share compiled (a
+     * fresh server's first commands run partly interpreted). Ends at the first client, which
+     * cancels a run under way (it stops at its next cancellation point) and is served at once;
+     * never runs again after one. Property {@code handsim.server.warmup=0}: no warm-up.
+     */
+    private void warmUp() {
+        Path tmp = null;
+        try {
+            tmp = Files.createTempDirectory("handsim-server-warm-up-");
+            Path mug = org.handsim.sim.Home.dir().resolve("scenarios").resolve("mug-grasp.json");
+            PrintStream nowhere = new PrintStream(OutputStream.nullOutputStream(), true, Charset.defaultCharset());
+            for (int round = 0; round < WARM_UP_ROUNDS; round++) {
+                for (String[] args : new String[][] {
+                    {"run", "--out", tmp.resolve("paper").toString()},
+                    {"run", mug.toString(), "--out", tmp.resolve("mug").toString()}}) {
+                    synchronized (this) {
+                        if (clientCame || busy || stopping) return;
+                        busy = true;
+                        warming = true;
+                        warmUpCancelledAt = 0;
+                    }
+                    boolean fit = true;
+                    try {
+                        fit = execute(args, false, nowhere, nowhere, new int[1], () -> warmUpCancelledAt, CommandContext::end);
+                    } finally {
+                        synchronized (this) {
+                            busy = false;
+                            warming = false;
+                            lastActivity = System.currentTimeMillis();
+                            notifyAll();
+                        }
+                    }
+                    if (!fit) {
+                        shutDown("the warm-up left this JVM in doubt");
+                        return;
+                    }
+                }
+            }
+            say("warmed up");
+        } catch (IOException | RuntimeException e) {
+            say("warm-up: " + e);
+        } finally {
+            if (tmp != null) {
+                try {
+                    org.handsim.util.Folders.deleteTree(tmp);
+                } catch (IOException e) {
+                    // the system's temporary folder keeps it
+                }
+            }
+        }
+    }
+
+    /**
+     * Runs {@code args} as in a JVM of its own: {@link HandSim#execute} on a 16 MB thread with
+     * {@code System.out}/{@code err} set to the given streams, then waits for the threads it
+     * started, undoes what the JVM's exit would have undone, restores the streams and the system
+     * properties, and calls {@code end} (which must end the {@link CommandContext} command).
+     * {@code cancelledAt} tells when the command was cancelled (0: not): one that has not stopped
+     * {@link #CANCEL_GRACE_MS} later makes the server exit as SIGTERM would. Returns whether the
+     * JVM is still fit for the next command.
+     */
+    private boolean execute(String[] args, boolean console, PrintStream cmdOut, PrintStream cmdErr, int[] code,
+                            java.util.function.LongSupplier cancelledAt, Runnable end) {
         Properties saved = new Properties();
         saved.putAll(System.getProperties());
         Set<Runnable> registered = ExitCleanup.registered();
         ThreadGroup group = new ThreadGroup("handsim-command");
-        int[] code = {1};
         CommandContext.begin(console);
         System.setOut(cmdOut);
         System.setErr(cmdErr);
@@ -365,7 +482,6 @@ public final class Server {
         boolean fit = true;
         try {
             main.start();
-            reader.start();
             while (main.isAlive()) {
                 try {
                     main.join(100);
@@ -373,10 +489,7 @@ public final class Server {
                     Thread.currentThread().interrupt();
                     break;
                 }
-                long at;
-                synchronized (command) {
-                    at = cancelled[0] ? cancelledAt[0] : 0;
-                }
+                long at = cancelledAt.getAsLong();
                 if (at != 0 && main.isAlive() && System.nanoTime() - at > CANCEL_GRACE_MS * 1_000_000) {
                     say("the cancelled command " + String.join(" ", args) + " did not stop within " + CANCEL_GRACE_MS
                         + " ms: exiting (the exit hook removes or completes its outputs)");
@@ -397,27 +510,8 @@ public final class Server {
             System.setOut(logOut);
             System.setErr(log);
             restore(saved);
-            synchronized (command) {
-                finished[0] = true;
-                CommandContext.end();
-            }
+            end.run();
         }
-        boolean wasCancelled;
-        synchronized (command) {
-            wasCancelled = cancelled[0];
-        }
-        if (code[0] == 1 && !wasCancelled) fit = false;   // an unexpected failure (out of memory, an internal error): start afresh
-        try {
-            synchronized (out) {
-                out.writeByte(Client.EXIT);
-                out.writeInt(code[0]);
-                out.flush();
-            }
-        } catch (IOException e) {
-            // the client is gone
-        }
-        say(String.join(" ", args) + ": exit " + code[0] + (wasCancelled ? " (cancelled)" : "") + " in "
-            + String.format(java.util.Locale.ROOT, "%.3f", (System.nanoTime() - t0) / 1e9) + " s");
         return fit;
     }
 
