@@ -72,6 +72,9 @@ public final class Client {
     private static final String[] PROPERTIES = {"java.io.tmpdir", "file.encoding", "sun.jnu.encoding", "user.home", "user.name",
         "user.language", "user.country", "user.variant", "user.timezone", "java.awt.headless", "j3d.rend"};
 
+    /** How long a stopped client waits for the server to end the command (the server gives it 10 s, then exits). */
+    private static final long CANCEL_WAIT_MS = 40_000;
+
     /** Longest socket path the kernel takes (sun_path is 108 bytes with its final zero). */
     private static final int MAX_SOCKET_PATH = 107;
 
@@ -186,7 +189,7 @@ public final class Client {
                 return;   // the server is gone: nothing to wait for
             }
             try {
-                done.await(Server.CANCEL_GRACE_MS + 30_000, TimeUnit.MILLISECONDS);
+                done.await(CANCEL_WAIT_MS, TimeUnit.MILLISECONDS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -223,7 +226,7 @@ public final class Client {
             return c;
         }
         c.channel = ch;
-        c.log = Server.logFile(dir, key(identity));
+        c.log = logFile(dir, key(identity));
         c.in = new DataInputStream(new java.io.BufferedInputStream(in(ch)));
         c.out = new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
         c.out.writeInt(MAGIC);
@@ -369,6 +372,8 @@ public final class Client {
 
     static Path socketFile(Path dir, String key) { return dir.resolve(key + ".sock"); }
     static Path lockFile(Path dir, String key) { return dir.resolve(key + ".lock"); }
+    /** The log file of the server of {@code key}. */
+    static Path logFile(Path dir, String key) { return dir.resolve(key + ".log"); }
 
     /**
      * Starts a server for this client's identity in the background, for the next command: in a
@@ -397,7 +402,7 @@ public final class Client {
             cmd.add("-cp");
             cmd.add(System.getProperty("java.class.path"));
             cmd.add(Server.class.getName());
-            File log = Server.logFile(dir, key).toFile();
+            File log = logFile(dir, key).toFile();
             new ProcessBuilder(cmd).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")))
                 .redirectOutput(ProcessBuilder.Redirect.to(log)).redirectErrorStream(true).start();
         } catch (IOException | RuntimeException e) {

@@ -89,11 +89,6 @@ public final class Server {
         this.cwdKey = Client.fileKey(Path.of("."));
     }
 
-    /** The log file of the server of {@code key} in {@code dir}. */
-    static Path logFile(Path dir, String key) {
-        return dir.resolve(key + ".log");
-    }
-
     public static void main(String[] args) throws Exception {
         Path dir = Client.folder();
         String unsafe = dir == null ? "no cache folder" : Client.unsafe(dir, true);
@@ -301,7 +296,7 @@ public final class Server {
             + "since " + Instant.ofEpochMilli(started) + "\n"
             + "commands " + served + "\n"
             + "state " + (warming ? "warming" : busy ? "busy" : stopping ? "stopping" : "idle") + "\n"
-            + "log " + logFile(dir, key) + "\n"
+            + "log " + Client.logFile(dir, key) + "\n"
             + identity;
     }
 
