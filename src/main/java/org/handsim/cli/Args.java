@@ -2,6 +2,8 @@ package org.handsim.cli;
 
 import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.UnitRule;
 
 /** Parsing of the comma-separated numeric arguments the sub-commands share. */
 final class Args {
@@ -51,6 +53,24 @@ final class Args {
         }
         if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
     }
+
+    /**
+     * {@code --units}: {@code auto} (null: judged by the file's size, {@link UnitRule}) or mm, cm, m.
+     *
+     * @throws CliError (exit 2) for anything else
+     */
+    static Scenario.Units units(String text) {
+        try {
+            return UnitRule.parse(text);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + SafeText.quote(text) + "'");
+        }
+    }
+
+    /** The help of every {@code --units} option (the same rule everywhere: {@link UnitRule}). */
+    static final String UNITS_HELP_1 = "unit of the object file's coordinates. auto";
+    static final String UNITS_HELP_2 = "(default): metres up to 2 units across, else mm";
+    static final String UNITS_HELP_3 = "(GraspIt!'s unit), as the window's import";
 
     /** Formats a number for CSV output ({@link Decimal}: shortest round trip, integers plain); refuses non-finite values. */
     static String csv(double d) {

@@ -65,7 +65,8 @@ public final class GraspCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario());
+        java.io.PrintWriter err = spec.commandLine().getErr();
+        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario(), "handsim grasp", err);
         scenario = withFriction(scenario, friction, edges);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
@@ -73,6 +74,7 @@ public final class GraspCommand implements Callable<Integer> {
         double mu = scenario.friction();
         int m = scenario.coneEdges();
         HandModel model = Simulation.model(scenario, false);
+        for (String w : model.startWarnings()) err.println("handsim: warning: " + w);
         double end = model.totalSteps() * scenario.dt();
         double until = end;
         if (at != null) {

@@ -87,7 +87,7 @@ public final class GuiCommand implements Callable<Integer> {
                 throw CliError.usage("handsim: " + e.getMessage());
             }
         }
-        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario());
+        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario(), "handsim gui", err);
         if (GraphicsEnvironment.isHeadless()) {
             throw CliError.usage("handsim gui: no display (DISPLAY is not set or Java runs headless): run it under a virtual display with "
                 + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");

@@ -15,6 +15,7 @@ import org.handsim.plan.PlanSpec;
 import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
 import org.handsim.sim.Scenario;
+import org.handsim.sim.UnitRule;
 import org.handsim.sim.ScenarioException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -55,10 +56,7 @@ public final class PlanCommand implements Callable<Integer> {
     Double friction;
 
     @Option(names = "--units", paramLabel = "auto|mm|cm|m", defaultValue = "auto", description = {
-        "unit of the object file's coordinates. auto",
-        "(default): a template's object.units; an object",
-        "file by its size (metres up to 2 units across,",
-        "else mm, as the window's import)"})
+        Args.UNITS_HELP_1, Args.UNITS_HELP_2, Args.UNITS_HELP_3, "(a template's object.units when it has one)"})
     String units;
 
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default out/plan-<name>)")
@@ -82,8 +80,7 @@ public final class PlanCommand implements Callable<Integer> {
         if (trials < 1) throw CliError.usage("handsim: --trials must be >= 1, got " + trials);
         EngineChoice eng = EngineChoice.of(engine, master, threads, Runtime.getRuntime().availableProcessors());
         Args.frictionAndEdges(friction, null);
-        Scenario.Units unit = units.equals("auto") ? null : Scenario.Units.of(units);
-        if (unit == null && !units.equals("auto")) throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + units + "'");
+        Scenario.Units unit = Args.units(units);
         PlanSpec planSpec;
         TrialRunner runner;
         try {
@@ -93,8 +90,11 @@ public final class PlanCommand implements Callable<Integer> {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
         }
         Path dir = out != null ? out : Path.of("out", "plan-" + planSpec.name());
-        if (unit == null && !target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json")) {
-            err.println("handsim plan: " + target.getFileName() + ": units " + planSpec.units().id() + " by its size (--units to choose)");
+        if (unit == null) {
+            boolean json = target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json");
+            String notice = json ? Scenario.load(target).unitNotice("handsim plan")
+                : UnitRule.notice("handsim plan", target, planSpec.units(), "--units");
+            if (notice != null) err.println(notice);
         }
         ProgressBar bar = new ProgressBar(err, "handsim plan " + planSpec.name());
         long t0 = System.nanoTime();
