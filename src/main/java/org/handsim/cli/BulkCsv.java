@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Files;
@@ -33,7 +34,7 @@ final class BulkCsv {
                    String inHeader, String addedHeader, Row row) throws IOException {
         if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
         if (others) throw CliError.usage("handsim: --input/--output cannot be combined with " + othersNames);
-        if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + input + ": no such file");
+        if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + NotFound.message(input));
         int rows = 0;
         int inColumns = inHeader.split(",").length;
         try (CsvInput in = new CsvInput(input, inHeader); AtomicFile af = new AtomicFile(output)) {

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 import java.nio.file.Files;
@@ -111,7 +112,7 @@ public final class CollideCommand implements Callable<Integer> {
      * @throws CliError exit 3 with FILE:LINE:COL: message (binary STL: FILE: byte N: message)
      */
     static TriangleMesh loadMesh(Path file, Scenario.Units chosen, PrintWriter err) {
-        if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
+        if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + NotFound.message(file));
         try {
             TriangleMesh m = MeshFiles.load(file, VRML_DIVISIONS, chosen != null ? chosen.metres() : 1.0).mesh();
             UnitRule.Choice u = UnitRule.resolve(m, chosen);

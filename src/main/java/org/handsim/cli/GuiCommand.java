@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -78,6 +79,8 @@ public final class GuiCommand implements Callable<Integer> {
             String text;
             try {
                 text = Files.readString(script);
+            } catch (java.nio.file.NoSuchFileException e) {
+                throw new CliError(CliError.LOAD, "handsim: " + NotFound.message(script));
             } catch (IOException e) {
                 throw new CliError(CliError.LOAD, "handsim: " + script + ": cannot read: " + e.getMessage());
             }
@@ -92,7 +95,7 @@ public final class GuiCommand implements Callable<Integer> {
             throw CliError.usage("handsim gui: no display (DISPLAY is not set or Java runs headless): run it under a virtual display with "
                 + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");
         }
-        if (object != null && !Files.isRegularFile(object)) throw new CliError(CliError.LOAD, "handsim: --object " + object + ": no such file");
+        if (object != null && !Files.isRegularFile(object)) throw new CliError(CliError.LOAD, "handsim: --object " + NotFound.message(object));
         Path scriptDir = script != null ? script.toAbsolutePath().getParent() : null;
         return GuiLauncher.run(new GuiLauncher.Options(scenario, actions, scriptDir, screenshot, measureFps, speedFactor, object), out, err);
     }

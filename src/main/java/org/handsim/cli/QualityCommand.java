@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -100,7 +101,7 @@ public final class QualityCommand implements Callable<Integer> {
         if (!(r > 0)) throw CliError.usage("handsim: --radius must be > 0, got " + radiusText);
         int repeat = integer("--repeat", repeatText);
         if (repeat < 1 || repeat > 1000) throw CliError.usage("handsim: --repeat must be in 1..1000, got " + repeatText);
-        if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + file + ": no such file");
+        if (!Files.isRegularFile(file)) throw new CliError(CliError.LOAD, "handsim: " + NotFound.message(file));
         Contacts contacts = read(file);
         spec.commandLine().getOut().println(JsonWriter.write(quality(contacts, mu, m, c, r, repeat)));
         return 0;

@@ -1,5 +1,6 @@
 package org.handsim.plan;
 
+import org.handsim.sim.NotFound;
 import java.io.IOException;
 import java.io.Serializable;
 import java.nio.file.Files;
@@ -75,7 +76,7 @@ public record PlanSpec(String name, String target, String templateJson, String t
      */
     public static PlanSpec forTarget(Path target, int trials, long seed, Double mu, int edges, Scenario.Units units) {
         Path abs = target.toAbsolutePath().normalize();
-        if (!Files.isRegularFile(abs)) throw new ScenarioException(target + ": no such file");
+        if (!Files.isRegularFile(abs)) throw new ScenarioException(NotFound.message(target));
         Map<String, Object> t;
         String name;
         boolean json = abs.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".json");

@@ -82,6 +82,12 @@ public final class Home {
         }
     }
 
+    /** Whether the data folders in use are the ones unpacked from the runnable jar (not a checkout's). */
+    public static boolean fromRunnableJar() {
+        Path u = unpacked;
+        return u != null && dir().equals(u);
+    }
+
     /** {@code vrml/hand/} */
     public static Path handModels() { return dir().resolve("vrml").resolve("hand"); }
 

@@ -74,7 +74,7 @@ public final class MeshFiles {
      * @throws ScenarioException {@code FILE:LINE:COL: message} or {@code FILE: byte N: message}
      */
     public static Loaded load(Path file, int divisions, double scale) {
-        if (!Files.isRegularFile(file)) throw new ScenarioException(file + ":1:1: cannot read the file: no such file");   // the VRML loader's words
+        if (!Files.isRegularFile(file)) throw new ScenarioException(file + ":1:1: cannot read the file: no such file" + NotFound.where(file));   // the VRML loader's words
         String label = file.getFileName().toString();
         Format f = Format.of(file);
         try {

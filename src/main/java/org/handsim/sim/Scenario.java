@@ -308,6 +308,8 @@ public final class Scenario implements Cloneable {
         String text;
         try {
             text = Files.readString(file);
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new ScenarioException(NotFound.message(file), e);
         } catch (IOException e) {
             throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
         }

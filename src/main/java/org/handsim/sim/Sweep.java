@@ -114,6 +114,8 @@ public final class Sweep {
     public static Sweep load(Path file) {
         try {
             return new Sweep(file, JsonObject.parse(file.toString(), Files.readString(file)));
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new ScenarioException(NotFound.message(file), e);
         } catch (IOException e) {
             throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
         } catch (Json.JsonException e) {

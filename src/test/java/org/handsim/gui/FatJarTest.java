@@ -97,6 +97,14 @@ class FatJarTest {
         Out none = java(dir, false);
         assertEquals(2, none.code(), none.log());
         assertTrue(none.log().startsWith("handsim: no display for the window;"), none.log());
+        String jar = Path.of(System.getProperty("handsim.fatJar")).getFileName().toString();
+        assertTrue(none.log().contains("  java -jar " + jar + " run --out out/paper"), "names the jar it is: " + none.log());
+        // a relative path outside a checkout: where it looked, and where the jar's own models are
+        Out missing = java(dir, false, "plan", "vrml/objects/mug.wrl", "--trials", "1");
+        assertEquals(3, missing.code(), missing.log());
+        assertTrue(missing.log().contains("vrml/objects/mug.wrl: no such file (looked in " + dir.toRealPath()), missing.log());
+        assertTrue(missing.log().matches("(?s).*the models and scenarios of the jar are unpacked in \\S+: \\S+/vrml/objects/mug\\.wrl\\).*"),
+            missing.log());
         VrmlTesting.deleteTree(dir);
     }
 
