@@ -1,6 +1,7 @@
 package org.handsim.cli;
 
 import org.handsim.util.SafeText;
+import java.util.List;
 import org.handsim.util.Decimal;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.UnitRule;
@@ -49,7 +50,7 @@ final class Args {
     /** Exit 2 naming the value unless {@code --friction} ≥ 0 and 1 ≤ {@code --edges} ≤ 1024 (null: not given). */
     static void frictionAndEdges(Double friction, Integer edges) {
         if (friction != null && (!(friction >= 0) || !Double.isFinite(friction))) {
-            throw CliError.usage("handsim: --friction must be a number >= 0, got " + friction);
+            throw CliError.usage("handsim: --friction must be a number >= 0, got " + (Double.isFinite(friction) ? Decimal.format(friction) : friction));
         }
         if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
     }
@@ -71,6 +72,17 @@ final class Args {
     static final String UNITS_HELP_1 = "unit of the object file's coordinates. auto";
     static final String UNITS_HELP_2 = "(default): metres up to 2 units across, else mm";
     static final String UNITS_HELP_3 = "(GraspIt!'s unit), as the window's import";
+
+    /**
+     * What the user typed for an option (its last occurrence), for error messages: "got 0" for
+     * {@code --dt 0}, not the parsed double's "0.0".
+     */
+    static String typed(picocli.CommandLine.Model.CommandSpec spec, String option) {
+        picocli.CommandLine.ParseResult r = spec.commandLine().getParseResult();
+        picocli.CommandLine.Model.OptionSpec o = r == null ? null : r.matchedOption(option);
+        List<String> v = o == null ? List.of() : o.stringValues();
+        return v.isEmpty() ? "(none)" : SafeText.quote(v.get(v.size() - 1));
+    }
 
     /** Formats a number for CSV output ({@link Decimal}: shortest round trip, integers plain); refuses non-finite values. */
     static String csv(double d) {

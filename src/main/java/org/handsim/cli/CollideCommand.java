@@ -29,6 +29,7 @@ import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
 import org.handsim.sim.UnitRule;
 import java.io.PrintWriter;
+import java.io.StringWriter;
 
 /**
  * {@code handsim collide A B [--units auto|mm|cm|m] [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}:
@@ -85,8 +86,11 @@ public final class CollideCommand implements Callable<Integer> {
         int repeat = integer("--repeat", repeatText);
         if (repeat < 1 || repeat > 10_000) throw CliError.usage("handsim: --repeat must be in 1..10000, got " + repeatText);
         Scenario.Units chosen = Args.units(units);
-        PrintWriter err = spec.commandLine().getErr();
-        TriangleMesh a = loadMesh(fileA, chosen, err), b = loadMesh(fileB, chosen, err);
+        StringWriter notices = new StringWriter();   // said once both files have loaded: an error stays one line
+        PrintWriter said = new PrintWriter(notices);
+        TriangleMesh a = loadMesh(fileA, chosen, said), b = loadMesh(fileB, chosen, said);
+        said.flush();
+        spec.commandLine().getErr().print(notices);
         RigidTransform pose = RigidTransform.fromPose(p[0], p[1], p[2], p[3], p[4], p[5]);
         spec.commandLine().getOut().println(JsonWriter.write(collide(a, b, pose, k, repeat)));
         return 0;

@@ -70,7 +70,7 @@ public final class GraspCommand implements Callable<Integer> {
         scenario = withFriction(scenario, friction, edges);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
-        if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + every);
+        if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + Args.typed(spec, "--every"));
         double mu = scenario.friction();
         int m = scenario.coneEdges();
         HandModel model = Simulation.model(scenario, false);
@@ -79,7 +79,7 @@ public final class GraspCommand implements Callable<Integer> {
         double until = end;
         if (at != null) {
             if (!(at >= 0) || at > end + 1e-9 * scenario.dt()) {
-                throw CliError.usage("handsim: --at must be in [0, " + (float) end + "] seconds (the scenario's duration), got " + at);
+                throw CliError.usage("handsim: --at must be in [0, " + (float) end + "] seconds (the scenario's duration), got " + Args.typed(spec, "--at"));
             }
             until = at;
         }

@@ -72,7 +72,7 @@ public final class GuiCommand implements Callable<Integer> {
             }
         }
         if (measureFps != null && !(measureFps > 0 && measureFps <= 3600)) {
-            throw CliError.usage("handsim: --measure-fps must be in (0, 3600] seconds, got " + measureFps);
+            throw CliError.usage("handsim: --measure-fps must be in (0, 3600] seconds, got " + Args.typed(spec, "--measure-fps"));
         }
         Script actions = null;
         if (script != null) {

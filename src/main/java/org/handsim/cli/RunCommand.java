@@ -73,7 +73,7 @@ public final class RunCommand implements Callable<Integer> {
         Path file = scenarioFile != null ? scenarioFile : Home.paperScenario();
         Scenario scenario = loadScenario(file, "handsim run", err);
         if (dt != null) {
-            if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
+            if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + Args.typed(spec, "--dt"));
             scenario = scenario.withDt(dt);
         }
         scenario = GraspCommand.withFriction(scenario, friction, edges);

@@ -98,8 +98,8 @@ public final class SwingCommand implements Callable<Integer> {
         double[] q0 = Args.numbers("--q", q, 3);
         double[] qd0 = Args.numbers("--qd", qd, 3);
         double[] g = Args.numbers("--gravity", gravity, 3);
-        if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
-        if (!(duration > 0) || duration > 3600) throw CliError.usage("handsim: --duration must be in (0, 3600] seconds, got " + duration);
+        if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + Args.typed(spec, "--dt"));
+        if (!(duration > 0) || duration > 3600) throw CliError.usage("handsim: --duration must be in (0, 3600] seconds, got " + Args.typed(spec, "--duration"));
         long steps = FreeSwing.steps(dt, duration);
         if (steps > MAX_STEPS) {
             throw CliError.usage(String.format(Locale.ROOT, "handsim: --duration %s / --dt %s needs %d steps, more than %d", duration, dt, steps, MAX_STEPS));
