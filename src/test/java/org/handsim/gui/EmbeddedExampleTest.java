@@ -14,6 +14,7 @@ import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
 import org.handsim.TestPaths;
 import org.handsim.vrml.VrmlTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -22,6 +23,7 @@ import org.junit.jupiter.api.Test;
  * up to date, and the view shows the hand. Also checks the program leaves without JOGL's
  * X11Util lines.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class EmbeddedExampleTest {
     @Test
     void anotherSwingProgramEmbedsTheSimulator() throws Exception {

@@ -16,6 +16,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
 import org.handsim.util.Json;
 import org.handsim.vrml.VrmlTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -24,6 +25,7 @@ import org.junit.jupiter.api.Test;
  * empty folder on a machine without a display — the jar carries the models and scenarios — and
  * that the window opens from it (the JOGL natives come out of the jar) and closes cleanly.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class FatJarTest {
     static Path jar() {
         String p = System.getProperty("handsim.fatJar");

@@ -20,6 +20,7 @@ import javax.imageio.ImageIO;
 import org.handsim.TestPaths;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -55,6 +56,7 @@ import org.junit.jupiter.api.Test;
  *     -Dhandsim.display="$DISPLAY" -Dhandsim.xauthority="$XAUTHORITY"'   # build.gradle forwards them
  * </pre>
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class GuiWindowTest {
     /** Share of the 3D view's pixels that must show something other than the background. */
     static final double MIN_SCENE_FRACTION = 0.02;

@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import org.handsim.TestPaths;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -23,6 +24,7 @@ import org.junit.jupiter.api.Test;
  * file). The test starts an X server of its own (Xvfb, which {@code ./test} installs), opens
  * {@code handsim gui} on it, waits for the first frame and kills the server.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class X11ExitTest {
     @Test
     void losingTheXServerEndsTheProgramWithoutANativeAbort() throws Exception {
