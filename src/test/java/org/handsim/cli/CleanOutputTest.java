@@ -16,6 +16,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.TestPaths;
 import org.handsim.sim.Home;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -173,6 +174,7 @@ public class CleanOutputTest {
 
     /** Every file of the malformed-VRML tests, through every command that loads VRML: exit 3, one line, no stack trace. */
     @Test
+    @Tag("slow")   // every command on every malformed input: ./test --all (CI)
     void noStackTraceOnAnyMalformedInput() throws Exception {
         Path bad = TestPaths.root().resolve("src/test/resources/vrml/bad");
         List<Path> files = new ArrayList<>();
