@@ -8,7 +8,6 @@ import java.util.concurrent.Callable;
 import org.handsim.chart.ChartExport;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
-import org.handsim.plan.DirectionMap;
 import org.handsim.plan.PlanJob;
 import org.handsim.plan.PlanOutput;
 import org.handsim.plan.PlanSpec;
@@ -128,8 +127,8 @@ public final class PlanCommand implements Callable<Integer> {
         ChartExport.write(PlanCharts.epsilonHistogram("Grasp quality over " + s.trials() + " trials (" + s.name() + ", seed " + s.seed() + ")",
             h.width(), counts, h.noClosure(), o.failed()), dir.resolve("epsilon-histogram"), 900, 550);
         var d = o.directions();
-        ChartExport.write(PlanCharts.directionMap("Best ε by approach direction (" + s.name() + ", " + s.trials() + " trials)",
-            d.best(), d.count(), DirectionMap.CELL_DEG), dir.resolve("epsilon-directions"), 1000, 560);
+        ChartExport.write(PlanCharts.directionMap("Best ε by approach direction (" + s.name() + ", " + s.trials() + " trials)", d),
+            dir.resolve("epsilon-directions"), 1000, 560);
     }
 
     private static String fmt(double v) {

@@ -68,6 +68,7 @@ public final class TradeoffCommand implements Callable<Integer> {
             m.put("rows", table.rows().size());
             m.put("wall_time_s", secs);
             m.put("files", List.of(s.id() + ".png", s.id() + ".svg", s.id() + ".csv"));
+            m.put("notes", new ArrayList<>(table.notes().values()));   // the chart's caption: for the docs, not under the plot
             perStudy.put(s.id(), m);
             stdout.println(String.format(Locale.ROOT, "%s: %d settings in %.1f s -> %s/%s.{png,svg,csv}",
                 s.id(), table.rows().size(), secs, out, s.id()));

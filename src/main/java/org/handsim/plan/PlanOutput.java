@@ -38,7 +38,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     private final Writer w;
     private final PriorityQueue<TrialResult> best = new PriorityQueue<>(BETTER_FIRST.reversed());
     private final EpsilonHistogram histogram = new EpsilonHistogram();
-    private final DirectionMap directions = new DirectionMap();
+    private final DirectionMap directions;
     private final Consumer<Integer> progress;
     private long rows, failed, forceClosure;
     private int expected;
@@ -52,6 +52,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         this.dir = dir;
         this.scenarios = scenarios;
         this.progress = progress;
+        this.directions = new DirectionMap(scenarios.spec().trials());   // cells sized to the trial count
         this.csv = new AtomicFile(dir.resolve("plan.csv"));
         this.w = csv.writer();
         w.write(TrialResult.HEADER);
