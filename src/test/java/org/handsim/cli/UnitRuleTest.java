@@ -135,6 +135,16 @@ class UnitRuleTest {
             }
             assertTrue(mm.startWarnings().isEmpty(), mm.startWarnings().toString());
 
+            // grasp and sweep say the same (grasp at 0.1 s, one sweep run of 0.05 s)
+            CliTesting.Run g = CliTesting.run("grasp", noUnits.toString(), "--at", "0.1");
+            assertEquals(0, g.code(), g.err());
+            assertEquals("handsim grasp: mug_mm.stl: units mm by its size (object.units to choose)", g.err());
+            Path sweep = Files.writeString(dir.resolve("sweep.json"), "{\"name\": \"units\", \"base\": \"mug-m.json\", \"threads\": 1,"
+                + " \"runs\": [{\"label\": \"short\", \"set\": {\"duration_s\": 0.05}}], \"scenarios\": []}");
+            CliTesting.Run sw = CliTesting.run("sweep", sweep.toString(), "--out", dir.resolve("sweep").toString());
+            assertEquals(0, sw.code(), sw.err());
+            assertTrue(sw.err().contains("handsim: warning: short: the object mug_mm.stl is 137 m across"), sw.err());
+
             // forced to metres: 1000 times too large, no contact, and a warning in summary.json and on stderr
             Path out = dir.resolve("out");
             CliTesting.Run r = CliTesting.run("run", forced.toString(), "--out", out.toString(), "--no-charts", "--dt", "0.005");
