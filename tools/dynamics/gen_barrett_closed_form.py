@@ -19,6 +19,9 @@ Derivation (Fu-Gonzalez-Lee, Robotics, 1987, section 3.2, the Lagrange-Euler for
   * D_ik = sum_j Tr(U_jk J_j U_ji^T)                           (LE3)
     U_ji = T_{i-1} Q ^{i-1}T_j                                   (LE1)
     J_j  = pseudo-inertia about the origin of frame {j}           (FGL §3.2)
+    The ten parameters of each J_j stay symbols: their numbers come at run time from
+    LinkChain.pseudoInertia (Table III read about each link frame's origin, J = tr(I)/2 E - I),
+    so the reading of Table III is not in this file and a change of it needs no regeneration.
   * c_i  = -sum_j m_j g U_ji rbar_j                               (FGL §3.2, c)
   * V    = -sum_j m_j g T_j rbar_j                                (FGL §3.2)
   * h_i  = sum_k sum_m c_ikm qd_k qd_m with the Christoffel symbols

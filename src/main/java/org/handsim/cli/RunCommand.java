@@ -119,6 +119,10 @@ public final class RunCommand implements Callable<Integer> {
                 throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
             }
             wall = (System.nanoTime() - t1) / 1e9;
+            // and what the run found: stretches without a static equilibrium (once each, not per step)
+            List<String> found = model.warnings().subList(warnings.size(), model.warnings().size());
+            for (String w : found) err.println("handsim: warning: " + w);
+            warnings = model.warnings();
             summary = RunSummary.of(model, wall);
             summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
             summary.put("setup_time_s", setup);

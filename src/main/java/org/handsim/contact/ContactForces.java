@@ -37,6 +37,12 @@ package org.handsim.contact;
  * ({@link #leastSquaresTorque}). μ = 0 is the frictionless {@link #solve} (the cones are
  * rays), which callers use then: its forces are today's.
  *
+ * <p><b>A held joint</b> ({@link #solveHeld}): a joint whose torque is not set by the drive but
+ * is the reaction of what holds it (the BarrettHand's inner joint, held by its self-locking
+ * worm after a breakaway) is free within [lo, hi]; the others are carried exactly. Either way
+ * {@link #residual()} says how far the forces are from doing that — nonzero when no forces in
+ * the cones can (the finger has no static equilibrium in that state).
+ *
  * <p>Frames: points, directions and the 48-value frame array ({k0}..{k3}, 12 row-major values
  * each, as {@code FingerKinematics.frames}) must all be in one frame (palm or world).
  *
@@ -91,6 +97,9 @@ public final class ContactForces {
     private double[] edgeArms = new double[0], edgeWeight = new double[0], edgeZ = new double[0];
     private boolean[] edgePassive = new boolean[0], edgeSkip = new boolean[0];
     private final double[] tauStar = new double[3];
+    // a held joint (solveHeld): the torques of the solve, the reaction, scratch
+    private final double[] tauHeld = new double[3];
+    private double held = Double.NaN;
 
     /**
      * Solves for the contact magnitudes.
@@ -109,26 +118,22 @@ public final class ContactForces {
         ensure(n);
         count = n;
         friction = false;
+        held = Double.NaN;
         System.arraycopy(dirs, 0, dirCopy, 0, 3 * n);
         for (int i = 0; i < n; i++) {
             double norm2 = 0;
             for (int m = 0; m < 3; m++) {
+                // every joint of the contact's chain (jointTorque reports them all); the solve uses firstJoint..2
                 double a = 0;
-                if (m >= firstJoint && m < links[i]) a = arm(frames, m, points, dirs, i);
+                if (m < links[i]) a = arm(frames, m, points, dirs, i);
                 arms[3 * i + m] = a;
-                norm2 += a * a;
+                if (m >= firstJoint) norm2 += a * a;
             }
             undetermined[i] = Math.sqrt(norm2) < MIN_ARM_M;
             mag[i] = 0;
         }
         nnls(firstJoint, tau, n);
-        residual = 0;
-        for (int m = firstJoint; m < 3; m++) {
-            double r = -tau[m];
-            for (int i = 0; i < n; i++) r += arms[3 * i + m] * mag[i];
-            residual += r * r;
-        }
-        residual = Math.sqrt(residual);
+        residual = largestResidual(firstJoint, tau, n);
     }
 
     /**
@@ -149,14 +154,15 @@ public final class ContactForces {
         ensureCones(n, m);
         count = n;
         friction = true;
+        held = Double.NaN;
         edgesPerCone = m;
         System.arraycopy(dirs, 0, dirCopy, 0, 3 * n);
         for (int i = 0; i < n; i++) {
             double px = points[3 * i], py = points[3 * i + 1], pz = points[3 * i + 2];
             for (int jm = 0; jm < 3; jm++) {
                 int o = 9 * i + 3 * jm;
-                boolean loads = jm >= firstJoint && jm < links[i];
-                if (loads) {
+                // every joint of the contact's chain (jointTorque reports them all); the solve uses firstJoint..2
+                if (jm < links[i]) {
                     int f = 12 * jm;
                     double zx = frames[f + 2], zy = frames[f + 6], zz = frames[f + 10];
                     double rx = px - frames[f + 3], ry = py - frames[f + 7], rz = pz - frames[f + 11];
@@ -186,13 +192,78 @@ public final class ContactForces {
             fvec[3 * i] = 0; fvec[3 * i + 1] = 0; fvec[3 * i + 2] = 0;
         }
         newtonOnTheDual(firstJoint, tau, n, cones, m);
-        residual = 0;
-        for (int jm = firstJoint; jm < 3; jm++) {
-            double r = -tau[jm];
-            for (int i = 0; i < n; i++) r += jointTorque(i, jm);
-            residual += r * r;
+        residual = largestResidual(firstJoint, tau, n);
+    }
+
+    /** max over joints r0..2 of |τ_m − Σ_i (torque of contact i on m)|, N·m. */
+    private double largestResidual(int r0, double[] tau, int n) {
+        double worst = 0;
+        for (int jm = r0; jm < 3; jm++) {
+            double r = tau[jm];
+            for (int i = 0; i < n; i++) r -= jointTorque(i, jm);
+            worst = Math.max(worst, Math.abs(r));
         }
-        residual = Math.sqrt(residual);
+        return worst;
+    }
+
+    /**
+     * Contact forces for a finger whose joint {@code firstJoint} is <em>held</em> and whose later
+     * joints are <em>driven</em> (DESIGN.md, "Which torques the contacts carry"): a driven joint's
+     * torque {@code tau[m]} must be carried exactly, while the held joint's torque is a reaction
+     * of whatever holds it (the BarrettHand's inner joint: its self-locking worm), free within
+     * [{@code lo}, {@code hi}], what that holder resists. Without friction the non-negative
+     * least squares of {@link #solve}, with it the least-norm forces of
+     * {@link #solveWithFriction} (when {@code cones} is not null), each under these rows:
+     * <ol>
+     *   <li>solve for the driven joints alone; the held joint's reaction s is what those forces
+     *       put on it (eq 9);</li>
+     *   <li>if s lies outside [lo, hi], solve again with the held joint driven at the bound
+     *       nearer s.</li>
+     * </ol>
+     * That is the optimum of the problem with the interval: the best value with the held torque
+     * fixed at σ is a convex function of σ (a partial minimum of a convex problem), smallest at
+     * σ = s, so over [lo, hi] it is smallest at the bound nearer s — for the least-norm forces and,
+     * when the torques cannot be carried, for the least-squares torque alike. {@link #residual()}
+     * then includes how far the reaction lies outside [lo, hi], and {@link #heldTorque()} is the
+     * reaction.
+     *
+     * @param frames     48 values: frames {k0}..{k3}
+     * @param firstJoint the held joint (0-based); the joints after it are driven
+     * @param tau        torques of the driven joints, N·m (entry {@code firstJoint} is not read)
+     * @param lo         least torque the held joint's holder puts on it, N·m
+     * @param hi         largest, N·m (≥ lo)
+     * @param cones      the contacts' cone edges as for {@link #solveWithFriction}, or null
+     *                   without friction
+     * @param m          edges per cone (ignored without friction)
+     */
+    public void solveHeld(double[] frames, int firstJoint, double[] tau, double lo, double hi, int n, double[] points, double[] dirs,
+                          int[] links, double[] cones, int m) {
+        if (!(lo <= hi)) throw new IllegalArgumentException("held joint's bounds must have lo <= hi, got [" + lo + ", " + hi + "]");
+        if (firstJoint < 0 || firstJoint > 2) throw new IllegalArgumentException("held joint must be 0..2, got " + firstJoint);
+        for (int jm = 0; jm < 3; jm++) tauHeld[jm] = jm == firstJoint ? 0 : tau[jm];
+        solveRows(frames, firstJoint + 1, tauHeld, n, points, dirs, links, cones, m);
+        double s = torqueOn(firstJoint, n);
+        double bound = s < lo ? lo : s > hi ? hi : s;
+        if (bound != s) {
+            tauHeld[firstJoint] = bound;
+            solveRows(frames, firstJoint, tauHeld, n, points, dirs, links, cones, m);
+            s = torqueOn(firstJoint, n);
+            residual = largestResidual(firstJoint + 1, tauHeld, n);
+        }
+        held = s;
+        residual = Math.max(residual, Math.max(0, Math.max(lo - s, s - hi)));
+    }
+
+    private void solveRows(double[] frames, int r0, double[] t, int n, double[] points, double[] dirs, int[] links, double[] cones, int m) {
+        if (cones == null) solve(frames, r0, t, n, points, dirs, links);
+        else solveWithFriction(frames, r0, t, n, points, dirs, links, cones, m);
+    }
+
+    /** Eq (9): the torque the last solve's forces put on joint jm, N·m. */
+    private double torqueOn(int jm, int n) {
+        double sum = 0;
+        for (int i = 0; i < n; i++) sum += jointTorque(i, jm);
+        return sum;
     }
 
     /**
@@ -645,6 +716,15 @@ public final class ContactForces {
     /** @return moment arm a_mi of contact i about joint m (0-based) along its normal d_i, metres */
     public double arm(int i, int m) { return arms[3 * i + m]; }
 
-    /** @return |A f − τ| of the last solve (N·m): nonzero when the contacts cannot carry τ */
+    /**
+     * How far the last solve's forces are from carrying the joint torques, N·m: the largest
+     * |τ_m − Σ_i t_mi·f_i| over the joints it was given (eq 9 with the forces found), and after
+     * {@link #solveHeld} also how far the held joint's reaction lies outside its bounds. 0 up to
+     * rounding when the contacts carry the torques; nonzero when no forces in the cones can
+     * (the finger has no static equilibrium in that state).
+     */
     public double residual() { return residual; }
+
+    /** The held joint's reaction after {@link #solveHeld} (N·m, eq 9 with the forces found); NaN after the other solves. */
+    public double heldTorque() { return held; }
 }

@@ -24,16 +24,25 @@ import org.handsim.mesh.TriangleMesh;
  * <ul>
  *   <li>centre: the centre of the bounding box of the patch's segment end points (the paper's
  *       rule);</li>
- *   <li>normal: a weighted sum of the unit normals of the object's triangles in the patch,
- *       normalised. The object is mesh B by default ({@link #objectSide}); the normal always
+ *   <li>normal: a weighted sum of the unit normals of one side's triangles in the patch,
+ *       normalised — by default ({@link NormalSide#LEAST_SPREAD}) the side whose normals spread
+ *       least: where one side is flat (its triangles coplanar) and the other an edge or a vertex,
+ *       the flat side's (the paper's cube: its edge on the inner link's flat face gives the
+ *       face's normal, the same for every angle of the cube about that edge; the cube's own two
+ *       faces would give a normal 31.45° off it that turns with the cube), else, the sides
+ *       spreading alike, the object's ({@link NormalSide#OBJECT} always takes the object's, the
+ *       paper's rule). The object is mesh B by default ({@link #objectSide}); the normal always
  *       points <em>out of B, into A</em>, so with the object on side A the sum of A's normals is
- *       negated. Weights ({@link NormalRule}): the paper's rule ({@link NormalRule#AREA}) weights
+ *       negated. Weights ({@link NormalRule}), the same for both sides and for their
+ *       {@link #spread}: the paper's rule ({@link NormalRule#AREA}) weights
  *       each distinct object triangle of the patch by its area. Its triangles are the band the
  *       intersection curve runs through, and where the mesh's triangles are larger on one side
  *       of the curve than on the other (a UV sphere tilted against the contact, any mesh of
  *       varying density) the band is wider there and the normal leans that way, at every
  *       resolution: a 2 cm sphere 2 mm into a plane, random orientations, mean error 4–7° for
- *       UV spheres of 16, 32 and 64 segments alike (ContactPatchesTest). The default
+ *       UV spheres of 16, 32 and 64 segments alike (ContactPatchesTest; these errors are the
+ *       sphere's own normals, {@link NormalSide#OBJECT}: against the flat plane
+ *       {@link NormalSide#LEAST_SPREAD} takes the plane's normal, which is exact). The default
  *       {@link NormalRule#CURVE} weights each pair's object normal by the length of its piece
  *       of the intersection curve instead (a discrete ∮ n ds, independent of the band's width),
  *       or, in a face-to-face contact, by the coplanar overlap areas: mean error 1.3°, 0.40°,
@@ -49,10 +58,10 @@ import org.handsim.mesh.TriangleMesh;
  *       pairs if larger; for a sphere dipping into a plane it converges to the disc πr²;</li>
  *   <li>the triangles of A and of B it touched, and the number of triangle pairs.</li>
  * </ul>
- * Never a NaN normal: when the object's weighted normals cancel (|Σ aᵢnᵢ| ≤ 1e-6·Σ aᵢ; e.g. a
- * box sunk face-first into another, whose side faces alone cross the other surface), the
- * other mesh's triangles are used instead (with the sign that keeps "out of B"),
- * {@link NormalSource#OTHER_SIDE}; if they cancel too, the normal of the largest object triangle
+ * Never a NaN normal: when the chosen side's weighted normals cancel (|Σ aᵢnᵢ| ≤ 1e-6·Σ aᵢ;
+ * with {@link NormalSide#OBJECT} e.g. a box sunk face-first into another, whose side faces
+ * alone cross the other surface), the other mesh's triangles are used instead (with the sign
+ * that keeps "out of B"), {@link NormalSource#OTHER_SIDE}; if they cancel too, the normal of the largest object triangle
  * in the patch, {@link NormalSource#LARGEST_TRIANGLE}; if every triangle has zero area, +z,
  * {@link NormalSource#AXIS}.
  *
@@ -71,10 +80,48 @@ public final class ContactPatches {
     /** Which mesh's triangles the contact normal is taken from. */
     public enum ObjectSide { A, B }
 
+    /**
+     * Which side of a patch gives its normal. A contact is defined by the surface that is
+     * smooth there: where the cube's edge lies on a link's flat face, the face's normal is the
+     * contact's, whatever the angle of the cube's two faces (turning the cube about the edge
+     * does not change the contact), while the object's normals there are an edge's — two faces
+     * 90° apart whose weighted sum leans with the cube (31.45° off the link face's normal in the
+     * paper's experiment).
+     */
+    public enum NormalSide {
+        /** Always the object's triangles (the paper's rule); the other side's only when the object's cancel. */
+        OBJECT,
+        /**
+         * The side whose weighted normals spread least ({@link #spread}): a flat side (coplanar
+         * triangles, spread 0) against an edge or a vertex gives the flat side's normal, signed
+         * out of the object as always; when both sides spread alike (within {@value #SPREAD_TIE},
+         * e.g. two faces flat against each other) the object's.
+         */
+        LEAST_SPREAD
+    }
+
+    /**
+     * How much one side's weighted unit normals spread: 1 − |Σ wᵢnᵢ| / Σ wᵢ, 0 when they are
+     * all parallel (a flat face), about 0.29 for an edge between two faces at 90° weighted
+     * equally, 1 when they cancel. The weights are the {@link NormalRule}'s.
+     */
+    public static double spread(double sumX, double sumY, double sumZ, double weight) {
+        if (!(weight > 0)) return 1;
+        return Math.max(0, 1 - Math.sqrt(sumX * sumX + sumY * sumY + sumZ * sumZ) / weight);
+    }
+
+    /** Spreads closer than this count as equal ({@link NormalSide#LEAST_SPREAD} then keeps the object's normal). */
+    public static final double SPREAD_TIE = 1e-9;
+
     /** Where a contact normal came from. */
     public enum NormalSource {
         /** The object's triangles (the paper's rule). */
         OBJECT,
+        /**
+         * The other mesh's triangles, because their normals spread less than the object's
+         * ({@link NormalSide#LEAST_SPREAD}: e.g. a link's flat face under the object's edge).
+         */
+        FLATTER_SIDE,
         /** The object's normals cancelled; the other mesh's triangles, sign adjusted. */
         OTHER_SIDE,
         /** Both sums cancelled; the largest object triangle in the patch. */
@@ -100,6 +147,7 @@ public final class ContactPatches {
 
     private ObjectSide objectSide = ObjectSide.B;
     private NormalRule rule = NormalRule.CURVE;
+    private NormalSide normalSide = NormalSide.LEAST_SPREAD;
     private final double[] sumA = new double[12], sumB = new double[12];
     private double tolerance = Double.NaN;
     private TriangleMesh tolA, tolB;        // the meshes defaultTol was computed for
@@ -142,6 +190,16 @@ public final class ContactPatches {
 
     /** @return the normal rule in use */
     public NormalRule normalRule() { return rule; }
+
+    /** Sets which side gives the normal (default {@link NormalSide#LEAST_SPREAD}); returns this. */
+    public ContactPatches normalSide(NormalSide side) {
+        if (side == null) throw new IllegalArgumentException("normalSide must not be null");
+        normalSide = side;
+        return this;
+    }
+
+    /** @return which side gives the normal */
+    public NormalSide normalSide() { return normalSide; }
 
     /**
      * Fixes the chaining tolerance (metres, &gt; 0); NaN restores the default
@@ -306,16 +364,26 @@ public final class ContactPatches {
             Arrays.sort(triB, triBStart[q], nB);
             double cx = 0.5 * (bx0 + bx1), cy = 0.5 * (by0 + by1), cz = 0.5 * (bz0 + bz1);
             center[3 * q] = cx; center[3 * q + 1] = cy; center[3 * q + 2] = cz;
-            // normal, out of B: the object's sum (negated for A), else the other side's
+            // normal, out of B: the object's sum (negated for A) or, when it spreads more than the
+            // other side's (an edge or a vertex on a flat face), the other side's; if the chosen
+            // sum cancels, the other one
             int use = rule == NormalRule.AREA ? 0 : (anyCoplanar ? 4 : 8);
             double sgnObj = objectSide == ObjectSide.B ? 1 : -1;
             double[] obj = objectSide == ObjectSide.B ? wb : wa, oth = objectSide == ObjectSide.B ? wa : wb;
             double ox = sgnObj * obj[use], oy = sgnObj * obj[use + 1], oz = sgnObj * obj[use + 2], os = obj[use + 3];
             double tx = -sgnObj * oth[use], ty = -sgnObj * oth[use + 1], tz = -sgnObj * oth[use + 2], ts = oth[use + 3];
-            NormalSource src = NormalSource.OBJECT;
+            NormalSource src = NormalSource.OBJECT, fallback = NormalSource.OTHER_SIDE;
+            if (normalSide == NormalSide.LEAST_SPREAD
+                && spread(tx, ty, tz, ts) < spread(ox, oy, oz, os) - SPREAD_TIE) {
+                double x = ox, y = oy, z = oz, w = os;
+                ox = tx; oy = ty; oz = tz; os = ts;
+                tx = x; ty = y; tz = z; ts = w;
+                src = NormalSource.FLATTER_SIDE;
+                fallback = NormalSource.OBJECT;
+            }
             double len = Math.sqrt(ox * ox + oy * oy + oz * oz);
             if (!(len > CANCEL_RATIO * os) || os == 0) {
-                src = NormalSource.OTHER_SIDE;
+                src = fallback;
                 ox = tx; oy = ty; oz = tz;
                 len = Math.sqrt(ox * ox + oy * oy + oz * oz);
                 if (!(len > CANCEL_RATIO * ts) || ts == 0) {

@@ -25,10 +25,10 @@ import org.handsim.hand.LinkInertia;
  * {@link #dof()} entries, one per active joint, in chain order.
  *
  * <p><b>Mass properties</b> are those of {@link LinkInertia} (paper Table III, DESIGN.md):
- * centre of mass r̄_j in frame {j}, inertia tensor I_j about the centre of mass with axes
- * parallel to {j}, matrix entries (Ixy is the matrix element, i.e. −∫xy dm). The Lagrange–Euler
- * pseudo-inertia about the frame origin (Fu–Gonzalez–Lee §3.2) follows by the
- * parallel-axis rule, see {@link #pseudoInertia(int, double[], int)}.
+ * centre of mass r̄_j in frame {j}, inertia tensor I_j about the origin of {j} with the axes of
+ * {j}, matrix entries (Ixy is the matrix element, i.e. −∫xy dm). The Lagrange–Euler
+ * pseudo-inertia about the frame origin (Fu–Gonzalez–Lee §3.2) follows from it without a
+ * parallel-axis shift, see {@link #pseudoInertia(int, double[], int)}.
  *
  * <p>Immutable and thread-safe.
  */
@@ -163,10 +163,11 @@ public final class LinkChain {
      *       [ m·x̄  m·ȳ  m·z̄  m   ]
      * </pre>
      * as 16 row-major values into {@code out[off..off+15]} (kg, kg·m, kg·m²). The second moments
-     * about the frame origin are {@code Σ = Σc + m·r̄·r̄ᵀ} (parallel-axis rule), where the second
-     * moments about the centre of mass follow from the inertia tensor I (matrix entries, about
-     * the centre of mass) by {@code Σc = ½·tr(I)·E − I}; e.g. {@code Σc,xx = (−Ixx + Iyy + Izz)/2}
-     * and {@code Σc,xy = −Ixy} (FGL §3.2 writes the same with products of inertia).
+     * about the frame origin follow from the inertia tensor I about that origin (matrix entries,
+     * {@link LinkInertia}) by {@code Σ = ½·tr(I)·E − I}; e.g. {@code Σxx = ∫x² dm =
+     * (−Ixx + Iyy + Izz)/2} and {@code Σxy = ∫xy dm = −Ixy} (FGL §3.2 writes the same with products
+     * of inertia, there about the centre of mass plus the parallel-axis term m·r̄·r̄ᵀ: Table III is
+     * about the origin already).
      */
     public void pseudoInertia(int j, double[] out, int off) {
         System.arraycopy(pseudo, 16 * j, out, off, 16);
@@ -180,9 +181,9 @@ public final class LinkChain {
         double iyy = t[LinkInertia.YY], iyz = t[LinkInertia.YZ], izz = t[LinkInertia.ZZ];
         double half = 0.5 * (ixx + iyy + izz);
         double[] s = {
-            half - ixx + m * c[0] * c[0], -ixy + m * c[0] * c[1], -ixz + m * c[0] * c[2],
-            -ixy + m * c[1] * c[0], half - iyy + m * c[1] * c[1], -iyz + m * c[1] * c[2],
-            -ixz + m * c[2] * c[0], -iyz + m * c[2] * c[1], half - izz + m * c[2] * c[2]};
+            half - ixx, -ixy, -ixz,
+            -ixy, half - iyy, -iyz,
+            -ixz, -iyz, half - izz};
         for (int r = 0; r < 3; r++) {
             for (int k = 0; k < 3; k++) out[o + 4 * r + k] = s[3 * r + k];
             out[o + 4 * r + 3] = m * c[r];

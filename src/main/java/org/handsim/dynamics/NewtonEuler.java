@@ -8,8 +8,10 @@ import org.handsim.math.RigidTransform;
  * Recursive Newton–Euler inverse dynamics (Luh, Walker and Paul 1980; Fu–Gonzalez–Lee §3.3,
  * "efficient" form with every vector in its own link frame): the independent cross-check of
  * {@link LagrangeEuler}. It shares nothing with it beyond the chain data and the DH transform
- * ({@link RigidTransform#dhInto}): it uses the inertia tensor about the centre of mass directly
- * (no pseudo-inertia) and propagates velocities and forces instead of differentiating T.
+ * ({@link RigidTransform#dhInto}): it uses the inertia tensor about the centre of mass
+ * ({@link LinkInertia#inertiaAboutCentreOfMass()}: Table III's tensor about the frame origin
+ * less m·(|s̄|²·E − s̄·s̄ᵀ)) instead of the pseudo-inertia, and propagates velocities and forces
+ * instead of differentiating T.
  *
  * <h2>The recursion</h2>
  * Quantities of link j are expressed in its frame {j}; {@code R_j} is the rotation of
@@ -87,7 +89,7 @@ public final class NewtonEuler implements ChainDynamics {
             mass[j] = l.mass();
             double[] c = l.com();
             System.arraycopy(c, 0, com, 3 * j, 3);
-            double[] t = l.inertia();
+            double[] t = l.inertiaAboutCentreOfMass();
             double[] full = {
                 t[LinkInertia.XX], t[LinkInertia.XY], t[LinkInertia.XZ],
                 t[LinkInertia.XY], t[LinkInertia.YY], t[LinkInertia.YZ],

@@ -15,7 +15,8 @@ import org.handsim.util.JsonObject;
  * any file of the same form, e.g. a hand with modified parameters for a study.
  *
  * <p>Validation: a missing field, a non-finite number, a negative or zero mass or length, or
- * an inertia tensor that is not positive definite is a {@link HandDescriptionException}
+ * an inertia tensor that no body has (not positive definite about its centre of mass, or
+ * breaking the triangle inequality there) is a {@link HandDescriptionException}
  * naming the file and the field path (e.g. {@code mass_properties.links[1].inertia_kgm2}).
  *
  * <p>Units inside: metres, radians, kg. The file holds degrees and encoder counts (the edges,
@@ -146,21 +147,30 @@ public final class HandDescription {
         return new double[] {rad(r[0]), rad(r[1])};
     }
 
+    /**
+     * One link of Table III: the tensor about the origin of {kj} with the products as printed,
+     * +∫xy dm (the CAD sign), negated here into matrix entries ({@link LinkInertia}). A link must
+     * be a physical body: its second moments about the centre of mass
+     * ({@link LinkInertia#secondMomentsAboutCentreOfMass()}) positive definite, which is the
+     * tensor about the centre of mass positive definite and within the triangle inequality.
+     */
     private static LinkInertia linkInertia(JsonObject l) {
         double m = l.number("mass_kg");
         if (!(m > 0)) throw l.error("mass_kg", "must be > 0, got " + m);
         double[] com = l.numbers("com_m", 3);
         JsonObject in = l.object("inertia_kgm2");
-        double[] t = {in.number("xx"), in.number("xy"), in.number("xz"), in.number("yy"), in.number("yz"), in.number("zz")};
+        double[] t = {in.number("xx"), -in.number("xy"), -in.number("xz"), in.number("yy"), -in.number("yz"), in.number("zz")};
+        LinkInertia link = new LinkInertia(m, com, t);
         // Positive definite by Sylvester's criterion (leading principal minors > 0).
-        double m1 = t[0];
-        double m2 = t[0] * t[3] - t[1] * t[1];
-        double m3 = t[0] * (t[3] * t[5] - t[4] * t[4]) - t[1] * (t[1] * t[5] - t[4] * t[2]) + t[2] * (t[1] * t[4] - t[3] * t[2]);
+        double[] s = link.secondMomentsAboutCentreOfMass();
+        double m1 = s[0];
+        double m2 = s[0] * s[3] - s[1] * s[1];
+        double m3 = s[0] * (s[3] * s[5] - s[4] * s[4]) - s[1] * (s[1] * s[5] - s[4] * s[2]) + s[2] * (s[1] * s[4] - s[3] * s[2]);
         if (!(m1 > 0 && m2 > 0 && m3 > 0)) {
-            throw l.error("inertia_kgm2", "is not positive definite (leading minors "
-                + m1 + ", " + m2 + ", " + m3 + ")");
+            throw l.error("inertia_kgm2", "is not a physical body: about the centre of mass it is not positive definite"
+                + " or breaks the triangle inequality (leading minors of the second moments " + m1 + ", " + m2 + ", " + m3 + ")");
         }
-        return new LinkInertia(m, com, t);
+        return link;
     }
 
     public String name() { return name; }

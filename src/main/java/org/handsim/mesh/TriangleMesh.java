@@ -188,6 +188,36 @@ public final class TriangleMesh {
     }
 
     /**
+     * The second moments of the solid the mesh bounds about the origin of the mesh's frame, per
+     * unit density: {@code (∫x², ∫xy, ∫xz, ∫y², ∫yz, ∫z²) dV} in m⁵, by the divergence theorem as
+     * {@link #centroid()} (signed tetrahedra (0, a, b, c) of volume d/6, d = a·(b × c), each
+     * contributing {@code d/120·(Σ_v v_i v_j + s_i s_j)} with s = a + b + c; Tonon 2004). Times a
+     * density ρ this is {@code Σ = ∫ r rᵀ dm} and the inertia tensor about the origin is
+     * {@code tr(Σ)·E − Σ}. Meaningful only for a closed surface with outward faces.
+     */
+    public double[] secondMoments() {
+        double[] v = vertices;
+        double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+        for (int t = 0; t < triangles.length; t += 3) {
+            int a = 3 * triangles[t], b = 3 * triangles[t + 1], c = 3 * triangles[t + 2];
+            double d = v[a] * (v[b + 1] * v[c + 2] - v[b + 2] * v[c + 1])
+                - v[a + 1] * (v[b] * v[c + 2] - v[b + 2] * v[c])
+                + v[a + 2] * (v[b] * v[c + 1] - v[b + 1] * v[c]);
+            double ax = v[a], ay = v[a + 1], az = v[a + 2];
+            double bx = v[b], by = v[b + 1], bz = v[b + 2];
+            double cx = v[c], cy = v[c + 1], cz = v[c + 2];
+            double sx = ax + bx + cx, sy = ay + by + cy, sz = az + bz + cz;
+            xx += d * (ax * ax + bx * bx + cx * cx + sx * sx);
+            xy += d * (ax * ay + bx * by + cx * cy + sx * sy);
+            xz += d * (ax * az + bx * bz + cx * cz + sx * sz);
+            yy += d * (ay * ay + by * by + cy * cy + sy * sy);
+            yz += d * (ay * az + by * bz + cy * cz + sy * sz);
+            zz += d * (az * az + bz * bz + cz * cz + sz * sz);
+        }
+        return new double[] {xx / 120, xy / 120, xz / 120, yy / 120, yz / 120, zz / 120};
+    }
+
+    /**
      * A mesh is closed when every undirected edge is used by exactly two triangles, once in
      * each direction (an oriented 2-manifold without boundary). Vertices are compared by index,
      * so a mesh must share its vertices (welded) to be closed.

@@ -19,8 +19,10 @@ import org.handsim.util.JsonWriter;
  * scenario until every finger has stalled or its profile ends, and evaluate the grasp
  * ({@link GraspAssessment}: force closure, ε, volume, minimum hold). The scenario run here is
  * exactly the one {@link #scenarioJson} writes for {@code best/NN.json} but for its outputs: no
- * trace, no charts, no joint torques (the clutch, the contacts and the evaluation do not use
- * them: the contacts carry the torque the clutch transmits, DESIGN.md), and it stops as soon
+ * trace, no charts, no joint torques (the contacts and the evaluation do not use them: the
+ * contacts carry the torque the clutch transmits, DESIGN.md; the clutch's breakaway needs the
+ * inner joint's τ_dyn, which the model computes while a finger is BLOCKED whether or not torques
+ * are asked for, so the breakaway is the one {@code handsim run} finds), and it stops as soon
  * as all three fingers are STALLED — after that nothing in the model changes, so
  * {@code handsim run} on the written scenario ends in the same grasp.
  *

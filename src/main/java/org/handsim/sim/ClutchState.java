@@ -6,8 +6,9 @@ package org.handsim.sim;
  *   <li>{@link #FREE}: coupled, θk2 = q_Mk/125°, θk3 = q_Mk/375° (eqs 3, 4);</li>
  *   <li>{@link #BLOCKED}: closing and the inner link touches: θk2, θk3 hold while the motor
  *       winds the Belleville springs, τk2 = τ_dyn + k_clutch·(q_Mk − q_Mk,contact)/125°;</li>
- *   <li>{@link #BROKEN}: τk2 exceeded τ_break: θk2 stays, θk3 turns at 4/375° per count (eq 10,
- *       written from the outer joint's angle at the breakaway so that it does not jump);</li>
+ *   <li>{@link #BROKEN}: the torque through the clutch, τk2, exceeded τ_break: the clutch
+ *       free-wheels, the worm holds θk2, θk3 turns at 4/375° per count (eq 10, written from the
+ *       outer joint's angle at the breakaway so that it does not jump);</li>
  *   <li>{@link #STALLED}: the outer link is blocked (or the outer joint is at its limit): the
  *       finger stops and the motor stalls.</li>
  * </ul>

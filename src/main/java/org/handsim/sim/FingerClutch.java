@@ -22,6 +22,7 @@ public final class FingerClutch {
     private double theta3AtBreak;
     private double tauAtBreak;
     private double motor;
+    private boolean atLimit;          // the last stall was at the outer joint's limit
 
     /**
      * @param tr          the transmission (eqs 3, 4, 10)
@@ -42,6 +43,7 @@ public final class FingerClutch {
         beforeStall = ClutchState.FREE;
         qContact = qBreak = qStall = Double.NaN;
         tauAtBreak = 0;
+        atLimit = false;
         motor = q;
     }
 
@@ -54,6 +56,51 @@ public final class FingerClutch {
     public boolean engaged() {
         return state == ClutchState.FREE || state == ClutchState.BLOCKED
             || (state == ClutchState.STALLED && beforeStall != ClutchState.BROKEN);
+    }
+
+    /**
+     * Whether the inner joint is held by its self-locking worm rather than driven, so that the
+     * torque the contacts put on it is the worm's reaction (DESIGN.md, "Which torques the contacts
+     * carry"): after a breakaway (BROKEN, STALLED after it: the TorqueSwitch's gear free-wheels and
+     * the inner link "remains motionless", Barrett) and when the finger stalled before any
+     * breakaway ({@link #innerHeldByWorm}). In FREE and BLOCKED the drive sets its torque.
+     */
+    public boolean innerHeld() {
+        return state == ClutchState.BROKEN || state == ClutchState.STALLED;
+    }
+
+    /**
+     * The torque the TorqueSwitch transmits, N·m at the inner joint, given the inner joint's
+     * τ_dyn (eq 8: what moving the link and holding it against gravity take): while the clutch
+     * drives the inner link (FREE, BLOCKED, STALLED before any breakaway) the inner joint's whole
+     * torque, τ_dyn + the spring's {@link #transmittedTorque}; after a breakaway 0 — the gear
+     * free-wheels on its threaded shaft (Barrett, BH8 manual, "TorqueSwitch operation") and the
+     * worm holds the link. The clutch breaks away when this reaches τ_break (eq 9's torque, the
+     * paper's 1.26 N·m), whatever share of it gravity and inertia take.
+     */
+    public double clutchTorque(double tauDynInner) {
+        if (!engaged()) return 0;
+        return tauDynInner + (state == ClutchState.BLOCKED ? Math.max(0, kClutch * (motor - qContact) * tr.innerRadPerCount()) : 0);
+    }
+
+    /**
+     * The motor count at which a BLOCKED clutch transmits {@code tau} when the inner joint's
+     * τ_dyn is {@code tauDynInner}: the springs are wound linearly from q_contact, so this is
+     * q_contact + (τ − τ_dyn)/(k_clutch · rad per count) — exact, no interpolation.
+     */
+    public double countsWhereClutchTorqueIs(double tau, double tauDynInner) {
+        return qContact + (tau - tauDynInner) / (kClutch * tr.innerRadPerCount());
+    }
+
+    /** The motor count where the inner link met the object (BLOCKED and after), NaN before. */
+    public double contactCounts() { return qContact; }
+
+    /**
+     * Whether the finger stalled because its outer joint reached its limit (not on the object):
+     * the joint's stop then holds the stalled motor's torque.
+     */
+    public boolean stalledAtOuterLimit() {
+        return state == ClutchState.STALLED && atLimit;
     }
 
     /**
@@ -113,7 +160,12 @@ public final class FingerClutch {
             default:
                 throw new IllegalStateException();
         }
-        if (state == ClutchState.BROKEN && outerAngleRaw() > theta3Max) stall(qAtOuterLimit());
+        if (state == ClutchState.BROKEN && outerAngleRaw() > theta3Max) stallAtLimit();
+    }
+
+    private void stallAtLimit() {
+        stall(qAtOuterLimit());
+        atLimit = true;
     }
 
     private double qStallMotorLimit() {
@@ -159,14 +211,16 @@ public final class FingerClutch {
         heldTheta2 = theta2For(q);
         heldTheta3 = Math.min(theta3Max, theta3For(q));
         beforeStall = state;
+        atLimit = false;
         qStall = q;
         motor = Math.min(motor, qStallMotorLimit());
         state = ClutchState.STALLED;
     }
 
     /**
-     * BLOCKED → BROKEN at motor count qb (the interpolated crossing of τ_break), keeping
-     * the transmitted torque at its breakaway value.
+     * BLOCKED → BROKEN at motor count qb (where the clutch torque reaches τ_break), keeping the
+     * transmitted torque — the contacts' share of τ_break, τ_break − τ_dyn — at its breakaway
+     * value: the load the worm keeps on the held inner link.
      */
     public void breakAway(double qb, double tauAtBreak) {
         if (state != ClutchState.BLOCKED) return;
@@ -174,7 +228,7 @@ public final class FingerClutch {
         theta3AtBreak = heldTheta3;
         this.tauAtBreak = tauAtBreak;
         state = ClutchState.BROKEN;
-        if (outerAngleRaw() > theta3Max) stall(qAtOuterLimit());
+        if (outerAngleRaw() > theta3Max) stallAtLimit();
     }
 
     private double clampCounts(double q) {
@@ -225,9 +279,10 @@ public final class FingerClutch {
     /**
      * The torque the clutch transmits to the object through the held links, beyond what moving
      * the links takes (N·m), into out[0] (inner joint) and out[1] (outer joint).
-     * BLOCKED: k_clutch·(q − q_contact)/125° on the inner joint; BROKEN: the inner joint stays
-     * jammed with the torque it had at the breakaway; STALLED: the motor winds the blocked
-     * joint through the same spring up to the stall torque.
+     * BLOCKED: k_clutch·(q − q_contact)/125° on the inner joint; BROKEN (and STALLED after a
+     * breakaway): the load the clutch left on the inner link at the breakaway, which its worm
+     * keeps (τ_break less gravity's share); STALLED: the motor winds the blocked outer joint
+     * through the same spring up to the stall torque.
      */
     public void transmittedTorque(double[] out) {
         out[0] = 0;

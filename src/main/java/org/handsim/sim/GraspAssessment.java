@@ -26,8 +26,12 @@ import org.handsim.util.Decimal;
  *                 which it equals when the joints' limits allow that much or more
  * @param holdMinN the smallest of {@code holdN}
  * @param contacts every contact of the three fingers, finger by finger
+ * @param torqueResidualNm per finger (index 0..2) how far its contact forces are from carrying
+ *                 its joint torques, N·m ({@link HandModel#torqueResidual}): 0 up to rounding
+ *                 when the forces are a static equilibrium of the finger's state
  */
-public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN, double holdMinN, List<Contact> contacts) {
+public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN, double holdMinN, List<Contact> contacts,
+                              double[] torqueResidualNm) {
     /** The disturbance directions of {@link #holdN()}, as the JSON keys of {@code hold_N}. */
     public static final List<String> DIRECTIONS = List.of("+x", "-x", "+y", "-y", "+z", "-z");
 
@@ -57,15 +61,18 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
      * @param hand              the hand's description (joint limits)
      * @param centroidAndRadius the object's centroid and R {cx, cy, cz, R}, m, or null when the
      *                          scene has no object geometry ({@link HandModel#objectCentroidAndRadius()})
+     * @param torqueResidualNm  per finger the contact forces' torque residual ({@link HandModel#torqueResidual}), N·m
      */
     public record Input(double timeS, List<Contact> contacts, double[][] framesWorld, boolean[] clutchEngaged,
-                        HandDescription hand, double[] centroidAndRadius) {
+                        HandDescription hand, double[] centroidAndRadius, double[] torqueResidualNm) {
         /** Copies what {@link GraspAssessment#of(Input, double, int)} needs from the model as it is now (its thread only). */
         public static Input of(HandModel model) {
             List<Contact> contacts = new ArrayList<>();
             double[][] frames = new double[3][];
             boolean[] engaged = new boolean[3];
+            double[] residual = new double[3];
             for (int k = 1; k <= 3; k++) {
+                residual[k - 1] = model.torqueResidual(k);
                 ContactSet cs = model.contacts(k);
                 for (int i = 0; i < cs.size(); i++) {
                     double[] n = cs.normal(i);
@@ -75,7 +82,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
                 frames[k - 1] = model.framesWorld(k);
                 engaged[k - 1] = model.clutchEngaged(k);
             }
-            return new Input(model.time(), List.copyOf(contacts), frames, engaged, model.hand(), model.objectCentroidAndRadius());
+            return new Input(model.time(), List.copyOf(contacts), frames, engaged, model.hand(), model.objectCentroidAndRadius(), residual);
         }
     }
 
@@ -104,7 +111,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         FrictionCone.checkEdges(edges);
         List<Contact> contacts = in.contacts();
         int n = contacts.size();
-        if (n == 0) return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, List.of());
+        if (n == 0) return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, List.of(), in.torqueResidualNm().clone());
         double[] points = new double[3 * n], normals = new double[3 * n];
         for (int i = 0; i < n; i++) {
             System.arraycopy(contacts.get(i).point(), 0, points, 3 * i, 3);
@@ -117,7 +124,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         double[] hold = hold(in, contacts, mu, edges, c, cr[3]).holdSix();
         double min = hold[0];
         for (double h : hold) min = Math.min(min, h);
-        return new GraspAssessment(in.timeS(), q, hold, min, contacts);
+        return new GraspAssessment(in.timeS(), q, hold, min, contacts, in.torqueResidualNm().clone());
     }
 
     /** The hold LP of the model's grasp as it is now ({@link #hold(Input, List, double, int, double[], double)}). */
@@ -185,7 +192,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     /**
      * The JSON object of {@code handsim grasp} (and {@code "grasp"} in summary.json): keys
      * {@code time_s, contacts[{finger, link, point, normal, force_N}], force_closure, epsilon,
-     * volume, hold_N{+x, −x, +y, −y, +z, −z}, hold_min_N}.
+     * volume, hold_N{+x, −x, +y, −y, +z, −z}, hold_min_N, torque_residual_Nm[finger 1, 2, 3]}.
      */
     public Map<String, Object> toJson() {
         Map<String, Object> m = new LinkedHashMap<>();
@@ -209,6 +216,8 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         for (int d = 0; d < 6; d++) h.put(DIRECTIONS.get(d), holdN[d]);
         m.put("hold_N", h);
         m.put("hold_min_N", holdMinN);
+        // a torque error: rounding noise below 1e-12 N·m written as 0, like the trace's residual columns
+        m.put("torque_residual_Nm", Decimal.clean(torqueResidualNm));
         return m;
     }
 }

@@ -21,7 +21,9 @@ import org.handsim.util.StepClock;
  *       motor set-points q_Mk(t) → clutch state machine → joint angles, velocities and
  *       accelerations → forward kinematics → link meshes placed → collision with the object →
  *       patches → point contacts → joint torques (Lagrange–Euler plus the clutch spring) →
- *       contact forces (eq 11 as least squares) → breakaway test (eq 9) → next state.</li>
+ *       contact forces (eq 11: the driven joints' torques carried, a held joint's reaction
+ *       within its bounds, the residual where no forces do) → breakaway test (the torque
+ *       through the clutch against τ_break) → next state.</li>
  *   <li><b>Fixed relations</b> — the private methods {@link #placeFinger}, {@link #collide},
  *       {@link #torquesAndForces} that the step calls.</li>
  * </ol>
@@ -78,11 +80,21 @@ public final class HandModel {
     private final double[][][] linkCollidedAt = new double[3][3][3];    // joints of each link's last query
     private final double[][] dynAt = new double[3][9];        // q, qd, qdd of the last dynamics call
     private final double[][] lastInput = new double[3][7];    // what drives each finger at its last update (idle)
-    // breakaway bookkeeping: the last (t, q, τ_eq9) sample of a BLOCKED finger
-    private final double[] lastT = new double[3], lastQ = new double[3], lastTau = new double[3];
+    // breakaway bookkeeping: the last (t, q) sample of a BLOCKED finger
+    private final double[] lastT = new double[3], lastQ = new double[3];
     // results
     private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3], contactQ = new double[3];
     private final double[] maxForce = new double[3];
+    // how far the contact forces are from carrying the joint torques (ContactForces.residual), per finger:
+    // now, the largest of the run, and the stretch of steps above RESIDUAL_WARN_NM now going on
+    private final double[] residual = new double[3], maxResidual = new double[3];
+    private final double[] episodeStart = new double[3], episodeEnd = new double[3], episodeMax = new double[3];
+    private final java.util.List<String> residualWarnings = new java.util.ArrayList<>();
+    private final int[] episodes = new int[3];
+    private final double[] moreEpisodesMax = new double[3];
+    /** Stretches without equilibrium warned about one by one, per finger; the rest are counted in one line. */
+    static final int MAX_EPISODE_WARNINGS = 20;
+    private final double[] clutchTorque = new double[3];
     private final long[] counters = new long[Counter.values().length];
     private final int[] contactsAtStart = new int[3];
 
@@ -92,6 +104,7 @@ public final class HandModel {
     private final double[] eventJoints = new double[3];
     private boolean lazy = true;
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
+    private final double[] bounds = new double[2], boundScratch = new double[2];
     private final double mu;                         // Coulomb coefficient of the contacts (0: the frictionless solve)
     private final int coneEdges;
     private final double[][] cones = {new double[0], new double[0], new double[0]};      // per finger: cone edges, 3·m per contact
@@ -99,6 +112,13 @@ public final class HandModel {
     private final int[] conesCount = new int[3];
     private final double[][] forceKey = {new double[0], new double[0], new double[0]};   // per finger: the last force solve's inputs
     private final int[] forceKeyLength = new int[3];
+
+    /**
+     * A finger whose contact forces miss its joint torques by more than this (N·m, {@link
+     * #torqueResidual}) has no static equilibrium in its state: {@link #warnings()} says so, once
+     * per stretch of such steps.
+     */
+    public static final double RESIDUAL_WARN_NM = 1e-6;
 
     /** Work counters, for the savings table (issue 8). */
     public enum Counter {
@@ -153,6 +173,9 @@ public final class HandModel {
     public void initialise() {
         step = 0;
         t = 0;
+        residualWarnings.clear();
+        java.util.Arrays.fill(episodes, 0);
+        java.util.Arrays.fill(moreEpisodesMax, 0);
         if (recorder != null) recorder.clear();
         java.util.Arrays.fill(counters, 0);
         sampleSpread(0);
@@ -179,6 +202,10 @@ public final class HandModel {
             breakQ[i] = Double.NaN;
             contactQ[i] = Double.NaN;
             maxForce[i] = 0;
+            residual[i] = 0;
+            maxResidual[i] = 0;
+            episodeStart[i] = Double.NaN;
+            clutchTorque[i] = 0;
             updateFinger(k, false);
             contactsAtStart[i] = contacts[i].size();
         }
@@ -231,6 +258,7 @@ public final class HandModel {
         int i = k - 1;
         if (events && lazy && idle(k)) {
             counters[Counter.FINGERS_IDLE.ordinal()]++;
+            watchResidual(i);                  // an idle finger keeps its residual (and its stretch goes on)
             return;
         }
         counters[Counter.FINGER_UPDATES.ordinal()]++;
@@ -247,7 +275,39 @@ public final class HandModel {
             torquesAndForces(k);
         }
         maxForce[i] = Math.max(maxForce[i], contacts[i].forceSum());
+        clutchTorque[i] = clutch[i].clutchTorque(tauDyn[i][1]);
         guard(k);
+        watchResidual(i);
+    }
+
+    /**
+     * Keeps the largest residual of the run, and turns each stretch of steps in which finger i's
+     * forces miss its torques by more than {@link #RESIDUAL_WARN_NM} into one warning (its
+     * start, end and largest residual), so a long run in such a state warns once, not per step.
+     */
+    private void watchResidual(int i) {
+        double r = residual[i];
+        maxResidual[i] = Math.max(maxResidual[i], r);
+        if (r > RESIDUAL_WARN_NM) {
+            if (Double.isNaN(episodeStart[i])) { episodeStart[i] = t; episodeMax[i] = 0; }
+            episodeEnd[i] = t;
+            episodeMax[i] = Math.max(episodeMax[i], r);
+        } else if (!Double.isNaN(episodeStart[i])) {
+            endEpisode(i);
+        }
+    }
+
+    private void endEpisode(int i) {
+        // a long run that keeps cycling through such a state says so a bounded number of times
+        if (++episodes[i] <= MAX_EPISODE_WARNINGS) residualWarnings.add(episodeWarning(i));
+        else moreEpisodesMax[i] = Math.max(moreEpisodesMax[i], episodeMax[i]);
+        episodeStart[i] = Double.NaN;
+    }
+
+    private String episodeWarning(int i) {
+        return String.format(java.util.Locale.ROOT, "finger %d: the contact forces cannot carry its joint torques from t = %s s"
+            + " to %s s (largest residual %.3g N*m): no static equilibrium in that state", i + 1,
+            org.handsim.util.Decimal.format(episodeStart[i]), org.handsim.util.Decimal.format(episodeEnd[i]), episodeMax[i]);
     }
 
     /**
@@ -399,7 +459,6 @@ public final class HandModel {
             if (Double.isNaN(contactQ[i])) contactQ[i] = hi;
             lastT[i] = tTouch;
             lastQ[i] = hi;
-            lastTau[i] = 0;
         } else {
             c.outerContact(hi);
         }
@@ -429,15 +488,20 @@ public final class HandModel {
 
     /**
      * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
-     * the contact forces that carry the transmitted part over the flexion joints k2, k3 — over
-     * k3 alone while the inner joint is held by its worm ({@link FingerClutch#innerHeldByWorm}:
-     * STALLED before a breakaway, when the torque the contacts put on k2 is the worm's reaction):
-     * eq (11) as non-negative least squares without friction, the least-norm forces in the
-     * friction cones with it ({@link ContactForces#solveWithFriction}, DESIGN.md).
+     * the contact forces that carry the transmitted part (DESIGN.md, "Which torques the contacts
+     * carry"): the torques the drive sets are carried exactly — k2 and k3 while the clutch drives
+     * the inner link (FREE, BLOCKED), k3 alone when the inner joint is held by its worm
+     * ({@link FingerClutch#innerHeld}: after a breakaway, or stalled before one) — and the held
+     * inner joint's reaction stays within what its holder resists ({@link #innerBounds}); eq (11)
+     * as non-negative least squares without friction, the least-norm forces in the friction cones
+     * with it ({@link ContactForces#solveHeld}). Where no forces do that, {@link #torqueResidual}
+     * says by how much. τ_dyn is computed when the scenario asks for torques, and always while the
+     * finger is BLOCKED: the torque through the clutch, which decides the breakaway, includes it.
      */
     private void torquesAndForces(int k) {
         int i = k - 1;
-        if (scenario.computeTorques()) {
+        FingerClutch c = clutch[i];
+        if (scenario.computeTorques() || c.state() == ClutchState.BLOCKED) {
             double[] a = dynAt[i];
             boolean same = lazy;
             for (int j = 0; j < 3 && same; j++) {
@@ -450,11 +514,16 @@ public final class HandModel {
                 counters[Counter.DYNAMICS_CALLS.ordinal()]++;
                 for (int j = 0; j < 3; j++) { a[j] = q[i][j]; a[3 + j] = qd[i][j]; a[6 + j] = qdd[i][j]; }
             }
+        } else if (tauDyn[i][0] != 0 || tauDyn[i][1] != 0 || tauDyn[i][2] != 0) {
+            // no torques asked for: the clutch's τ_dyn of a BLOCKED phase is not carried over
+            java.util.Arrays.fill(tauDyn[i], 0);
+            java.util.Arrays.fill(dynAt[i], Double.NaN);
         }
-        clutch[i].transmittedTorque(transmitted);
+        c.transmittedTorque(transmitted);
         tauContact[0] = 0;
         tauContact[1] = transmitted[0];
-        tauContact[2] = transmitted[1];
+        // stalled at the outer joint's limit: its stop, not the contacts, holds the stalled motor's torque
+        tauContact[2] = c.stalledAtOuterLimit() ? 0 : transmitted[1];
         tau[i][0] = tauDyn[i][0];
         tau[i][1] = tauDyn[i][1] + transmitted[0];
         tau[i][2] = tauDyn[i][2] + transmitted[1];
@@ -462,39 +531,75 @@ public final class HandModel {
         int n = cs.size();
         ContactForces solver = solvers[i];
         if (n > 0) {
+            boolean held = c.innerHeld();
+            if (held) innerBounds(k, bounds);
+            else { bounds[0] = Double.NaN; bounds[1] = Double.NaN; }
             // the same inputs as finger k's last solve (a held link, the same transmitted torque):
             // its solver still holds the answer
-            // the joints whose torque the drive determines: k2 and k3, or k3 alone while the inner
-            // joint is held by its worm (STALLED before a breakaway: its torque is a reaction)
-            int first = clutch[i].innerHeldByWorm() ? 2 : 1;
-            if (!(lazy && sameForceInputs(i, cs, first))) {
-                if (mu == 0) {
-                    solver.solve(framesWorld[i], first, tauContact, n, cs.points, cs.pushDirs, cs.links);
+            if (!(lazy && sameForceInputs(i, cs, held ? 1 : 0))) {
+                double[] coneEdges = mu == 0 ? null : conesOf(i, cs);
+                if (held) {
+                    solver.solveHeld(framesWorld[i], 1, tauContact, bounds[0], bounds[1], n, cs.points, cs.pushDirs, cs.links,
+                        coneEdges, this.coneEdges);
+                } else if (coneEdges == null) {
+                    solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
                 } else {
-                    solver.solveWithFriction(framesWorld[i], first, tauContact, n, cs.points, cs.pushDirs, cs.links, conesOf(i, cs), coneEdges);
+                    solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, coneEdges, this.coneEdges);
                 }
             }
-            for (int c = 0; c < n; c++) {
-                cs.forces[c] = solver.force(c);
-                solver.forceVector(c, cs.forceVectors, 3 * c);
-                cs.undetermined[c] = solver.undetermined(c);
+            for (int j = 0; j < n; j++) {
+                cs.forces[j] = solver.force(j);
+                solver.forceVector(j, cs.forceVectors, 3 * j);
+                cs.undetermined[j] = solver.undetermined(j);
             }
+            residual[i] = solver.residual();
+        } else {
+            // nothing touches: a held link's torque goes into the drive train (or the outer stop), and a
+            // driven torque with no contact to carry it would be a contact the collision missed
+            residual[i] = c.innerHeld() ? tauContact[2] : Math.max(Math.abs(tauContact[1]), Math.abs(tauContact[2]));
         }
     }
 
     /**
-     * True when the contact-force solve of finger i would get what its last one got — which
-     * joints carry a known torque ({@code first}), the torques on k2, k3, the frames of joints
+     * What finger k's held inner joint resists, [lo, hi] N·m on the torque the contacts put on
+     * it, into out[0..1] (DESIGN.md, "Which torques the contacts carry"). It is held by its
+     * self-locking worm, which no load on the link back-drives and whose load never reaches the
+     * clutch: hi is the worm's limit of the hold LP ({@link GraspAssessment#jointLimit} of a joint
+     * its worm holds: the finger rating's torque, decision 6). After a breakaway the joint keeps
+     * at least the load the clutch had put on it (the worm does not let the link back off, so the
+     * preload stays, and τk2 stays at τ_break as in the paper's Fig. 7): lo = that load. Stalled
+     * before any breakaway nothing preloads it: lo = −hi.
+     */
+    private void innerBounds(int k, double[] out) {
+        FingerClutch c = clutch[k - 1];
+        double worm = GraspAssessment.jointLimit(hand, k, 2, false);
+        out[1] = worm;
+        if (c.innerHeldByWorm()) {
+            out[0] = -worm;
+        } else {
+            c.transmittedTorque(boundScratch);
+            out[0] = Math.min(boundScratch[0], worm);
+        }
+    }
+
+    /**
+     * True when the contact-force solve of finger i would get what its last one got — whether
+     * k2 is held ({@code held}) and its bounds, the torques on k2, k3, the frames of joints
      * 1–3 and every contact's link, point and push direction — and records them otherwise (for
      * the next call). No allocation once the key array has grown to the contact count.
      */
-    private boolean sameForceInputs(int i, ContactSet cs, int first) {
-        int n = cs.size(), len = 4 + 36 + 7 * n;
+    private boolean sameForceInputs(int i, ContactSet cs, int held) {
+        int n = cs.size(), len = 6 + 36 + 7 * n;
         double[] key = forceKey[i];
         if (key.length < len) key = forceKey[i] = java.util.Arrays.copyOf(key, Math.max(len, 2 * key.length));
         boolean same = forceKeyLength[i] == len;
         int o = 0;
-        same &= key[o] == first; key[o++] = first;
+        same &= key[o] == held; key[o++] = held;
+        for (int j = 0; j < 2; j++, o++) {
+            double b = bounds[j];
+            same &= key[o] == b || (Double.isNaN(key[o]) && Double.isNaN(b));
+            key[o] = b;
+        }
         for (int j = 0; j < 3; j++, o++) { same &= key[o] == tauContact[j]; key[o] = tauContact[j]; }
         double[] f = framesWorld[i];
         for (int j = 0; j < 36; j++, o++) { same &= key[o] == f[j]; key[o] = f[j]; }
@@ -530,38 +635,42 @@ public final class HandModel {
     }
 
     /**
-     * Eq (9): the torque the contacts on the inner link put on joint k2; above τ_break a BLOCKED
-     * finger breaks away. The crossing is interpolated linearly (the torque rises linearly with
-     * the motor count). Returns true if the state changed.
+     * The one clutch criterion (DESIGN.md decision 1): a BLOCKED finger breaks away when the
+     * torque through its clutch ({@link FingerClutch#clutchTorque}: τ_dyn2 + the spring's,
+     * eq (9)'s torque when the contacts carry it) exceeds τ_break, whatever share gravity and
+     * inertia take. The springs wind linearly with the motor count and the held link's τ_dyn is
+     * that of a still pose, so the crossing count is exact ({@link
+     * FingerClutch#countsWhereClutchTorqueIs}); its time is interpolated linearly between the
+     * step's samples. Returns true if the state changed.
      */
     private boolean breakawayTest(int k) {
         int i = k - 1;
         FingerClutch c = clutch[i];
         if (c.state() != ClutchState.BLOCKED) return false;
-        ContactSet cs = contacts[i];
-        double tauK2 = 0, forceInner = 0;
-        for (int j = 0; j < cs.size(); j++) {
-            if (cs.links[j] != 2) continue;
-            tauK2 += solvers[i].jointTorque(j, 1);
-            forceInner += cs.forces[j];
-        }
+        double tauDyn2 = tauDyn[i][1];
+        double now = c.clutchTorque(tauDyn2);
         double qm = c.motor();
-        if (tauK2 > hand.tauBreak()) {
-            double frac = (hand.tauBreak() - lastTau[i]) / (tauK2 - lastTau[i]);
-            frac = Math.max(0, Math.min(1, frac));
-            double qb = lastQ[i] + frac * (qm - lastQ[i]);
+        if (now > hand.tauBreak()) {
+            double qb = c.countsWhereClutchTorqueIs(hand.tauBreak(), tauDyn2);
+            qb = Math.max(lastQ[i], Math.min(qm, qb));
+            double frac = qm > lastQ[i] ? (qb - lastQ[i]) / (qm - lastQ[i]) : 1;
             breakTime[i] = lastT[i] + frac * (t - lastT[i]);
             breakTorque[i] = hand.tauBreak();
-            breakForce[i] = forceInner * hand.tauBreak() / tauK2;
-            // the forces grow with the transmitted torque: at the crossing they are τ_break/τ of now's
-            maxForce[i] = Math.max(maxForce[i], cs.forceSum() * hand.tauBreak() / tauK2);
+            // the contact forces carry the spring's share, which grows linearly with the count:
+            // at the crossing they are (τ_break − τ_dyn2)/(now − τ_dyn2) of now's
+            double share = hand.tauBreak() - tauDyn2, shareNow = now - tauDyn2;
+            double scale = shareNow > 0 ? Math.max(0, share) / shareNow : 0;
+            ContactSet cs = contacts[i];
+            double forceInner = 0;
+            for (int j = 0; j < cs.size(); j++) if (cs.links[j] == 2) forceInner += cs.forces[j];
+            breakForce[i] = forceInner * scale;
+            maxForce[i] = Math.max(maxForce[i], cs.forceSum() * scale);
             breakQ[i] = qb;
-            c.breakAway(qb, hand.tauBreak());
+            c.breakAway(qb, Math.max(0, share));
             return true;
         }
         lastT[i] = t;
         lastQ[i] = qm;
-        lastTau[i] = tauK2;
         return false;
     }
 
@@ -593,6 +702,7 @@ public final class HandModel {
             recorder.set(k, Recorder.TAU3, tau[i][2]);
             recorder.setState(k, clutch[i].state());
             recorder.setContacts(k, contacts[i].size(), contacts[i].forceSum());
+            recorder.setClutchAndResidual(k, clutchTorque[i], residual[i]);
         }
         recorder.setSpread(spread);
     }
@@ -675,6 +785,38 @@ public final class HandModel {
     public double breakawayTorque(int k) { return breakTorque[k - 1]; }
     public double breakawayForce(int k) { return breakForce[k - 1]; }
     public double maxContactForce(int k) { return maxForce[k - 1]; }
+    /**
+     * How far finger k's contact forces are from carrying its joint torques now, N·m
+     * ({@link ContactForces#residual}: the largest |τ − τ_dyn − Jᵀf| over the joints the drive
+     * sets, and how far a held joint's reaction lies outside what holds it); 0 up to rounding
+     * when the state has a static equilibrium.
+     */
+    public double torqueResidual(int k) { return residual[k - 1]; }
+    /** The largest {@link #torqueResidual} of finger k since {@link #initialise()}, N·m. */
+    public double maxTorqueResidual(int k) { return maxResidual[k - 1]; }
+    /** The torque through finger k's clutch now ({@link FingerClutch#clutchTorque}), N·m. */
+    public double clutchTorque(int k) { return clutchTorque[k - 1]; }
+
+    /**
+     * Everything the user should know before trusting the run so far, one sentence each: the
+     * {@link #startWarnings()}, then each stretch of steps whose contact forces missed the joint
+     * torques by more than {@link #RESIDUAL_WARN_NM}, in the order they ended (one warning per
+     * stretch, naming the finger, its start and end time and its largest residual; a stretch
+     * still going on ends now, last).
+     */
+    public java.util.List<String> warnings() {
+        java.util.List<String> w = startWarnings();
+        w.addAll(residualWarnings);
+        for (int k = 1; k <= 3; k++) {
+            int i = k - 1;
+            if (episodes[i] > MAX_EPISODE_WARNINGS) {
+                w.add(String.format(java.util.Locale.ROOT, "finger %d: %d more stretches without a static equilibrium (largest residual %.3g N*m)",
+                    k, episodes[i] - MAX_EPISODE_WARNINGS, moreEpisodesMax[i]));
+            }
+            if (!Double.isNaN(episodeStart[i])) w.add(episodeWarning(i));
+        }
+        return w;
+    }
     /** Motor count of finger k's (first) breakaway, NaN if none. */
     public double breakawayCounts(int k) { return breakQ[k - 1]; }
     /** Motor count where finger k's inner link (first) met the object, NaN if never. */

@@ -15,7 +15,10 @@ import org.handsim.util.Decimal;
  * "Outputs"): {@code t_s}, then per finger k = 1, 2, 3:
  * {@code qM{k}_counts, theta{k}1_rad, theta{k}2_rad, theta{k}3_rad, dtheta{k}2_rad_s,
  * dtheta{k}3_rad_s, ddtheta{k}2_rad_s2, ddtheta{k}3_rad_s2, tau{k}2_Nm, tau{k}3_Nm, state{k},
- * contacts{k}, force{k}_N}, then {@code qM4_counts}. Numbers are written by
+ * contacts{k}, force{k}_N}, then {@code qM4_counts}, then {@code clutch1_Nm, clutch2_Nm,
+ * clutch3_Nm} (the torque through each finger's clutch, {@link HandModel#clutchTorque}) and
+ * {@code residual1_Nm, residual2_Nm, residual3_Nm} (how far each finger's contact forces are
+ * from carrying its joint torques, {@link HandModel#torqueResidual}). Numbers are written by
  * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
  * ({@link Decimal#clean}).
  *
@@ -60,6 +63,7 @@ public final class Recorder implements AutoCloseable {
     private int[][] contacts = new int[3][1024];
     private double[][] force = new double[3][1024];
     private double[] spread = new double[1024];
+    private double[][] clutch = new double[3][1024], residual = new double[3][1024];
 
     /** A recorder that keeps every row in memory. */
     public Recorder() {
@@ -96,6 +100,8 @@ public final class Recorder implements AutoCloseable {
             h.add("force" + k + "_N");
         }
         h.add("qM4_counts");
+        for (int k = 1; k <= 3; k++) h.add("clutch" + k + "_Nm");
+        for (int k = 1; k <= 3; k++) h.add("residual" + k + "_Nm");
         return String.join(",", h);
     }
 
@@ -135,11 +141,16 @@ public final class Recorder implements AutoCloseable {
             to[i++] = contacts[k][r];
             to[i++] = force[k][r];
         }
-        to[i] = spread[r];
+        to[i++] = spread[r];
+        for (int k = 0; k < 3; k++) to[i++] = clutch[k][r];
+        for (int k = 0; k < 3; k++) to[i++] = residual[k][r];
     }
 
-    /** Width of a row of numbers: t, per finger 10 numbers, state, contacts, force, then the spread. */
-    static final int WIDTH = 1 + 3 * (NF + 3) + 1;
+    /**
+     * Width of a row of numbers: t, per finger 10 numbers, state, contacts, force, then the
+     * spread, then per finger the clutch torque, then per finger the residual.
+     */
+    static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6;
 
     /** One trace.csv line from a row of {@link #WIDTH} numbers (the one place the format is written). */
     static void format(double[] row, StringBuilder sb) {
@@ -152,7 +163,9 @@ public final class Recorder implements AutoCloseable {
             sb.append(',').append((long) row[i++]);
             Decimal.append(sb.append(','), Decimal.clean(row[i++]));
         }
-        Decimal.append(sb.append(','), Decimal.clean(row[i])).append('\n');
+        Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        for (int c = 0; c < 6; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        sb.append('\n');
     }
 
     /**
@@ -161,7 +174,7 @@ public final class Recorder implements AutoCloseable {
      * a fixed pool and hands full chunks over (one hand-over per {@value #CHUNK} rows, so the
      * threads rarely wake each other); it allocates nothing and waits only when the writer is a
      * whole pool behind. The pool holds the whole run up to {@value #MAX_BUFFERED} rows
-     * (21 MB), so a run of that length never waits for its trace.
+     * (25 MB), so a run of that length never waits for its trace.
      */
     private static final class RowWriter extends Thread {
         static final int CHUNK = 256;
@@ -290,6 +303,8 @@ public final class Recorder implements AutoCloseable {
             state[k] = Arrays.copyOf(state[k], n);
             contacts[k] = Arrays.copyOf(contacts[k], n);
             force[k] = Arrays.copyOf(force[k], n);
+            clutch[k] = Arrays.copyOf(clutch[k], n);
+            residual[k] = Arrays.copyOf(residual[k], n);
         }
     }
 
@@ -305,6 +320,12 @@ public final class Recorder implements AutoCloseable {
 
     public void setSpread(double q4) { spread[rows - 1] = q4; }
 
+    /** Finger k's clutch torque and contact-force residual (N·m) in the current row. */
+    public void setClutchAndResidual(int k, double clutchNm, double residualNm) {
+        clutch[k - 1][rows - 1] = clutchNm;
+        residual[k - 1][rows - 1] = residualNm;
+    }
+
     /** Rows in memory: all rows, or for a bounded recorder every {@link #stride()}-th and the last. */
     public int rows() { return rows; }
     /** Rows recorded in all (the rows of trace.csv). */
@@ -317,6 +338,10 @@ public final class Recorder implements AutoCloseable {
     public int contacts(int k, int row) { return contacts[k - 1][row]; }
     public double force(int k, int row) { return force[k - 1][row]; }
     public double spread(int row) { return spread[row]; }
+    /** Finger k's clutch torque in a row in memory, N·m. */
+    public double clutch(int k, int row) { return clutch[k - 1][row]; }
+    /** Finger k's contact-force residual in a row in memory, N·m. */
+    public double residual(int k, int row) { return residual[k - 1][row]; }
     /** Whether finger k's motor count ever differed from its first row's (over every row recorded). */
     public boolean moved(int k) {
         if (rows == 0) return false;

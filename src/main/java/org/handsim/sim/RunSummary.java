@@ -11,7 +11,8 @@ import java.util.Map;
  * "Outputs"). Keys: {@code scenario, sim_time_s, steps, dt_s, wall_time_s, steps_per_s,
  * realtime_factor, fingers[{finger, final_state, breakaway_time_s|null, breakaway_torque_Nm|null,
  * breakaway_force_N|null, contact_counts|null, breakaway_counts|null, final_joints_rad,
- * max_contact_force_N}], lazy, counters{...}}.
+ * max_contact_force_N, torque_residual_Nm}], lazy, counters{...}}; {@code torque_residual_Nm} is the
+ * largest {@link HandModel#torqueResidual} of the run.
  */
 public final class RunSummary {
     private RunSummary() {}
@@ -42,6 +43,7 @@ public final class RunSummary {
             f.put("breakaway_counts", orNull(m.breakawayCounts(k)));
             f.put("final_joints_rad", Decimal.clean(m.joints(k)));   // README: |x| < 1e-12 written as 0
             f.put("max_contact_force_N", m.maxContactForce(k));
+            f.put("torque_residual_Nm", m.maxTorqueResidual(k));
             fingers.add(f);
         }
         s.put("fingers", fingers);

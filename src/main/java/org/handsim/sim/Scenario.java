@@ -514,7 +514,7 @@ public final class Scenario implements Cloneable {
         return c;
     }
 
-    /** A copy with torques computed or not (the clutch does not need them). */
+    /** A copy with torques computed or not (off: only a BLOCKED finger's, which its clutch torque includes). */
     public Scenario withTorques(boolean on) {
         Scenario c = copy();
         c.computeTorques = on;

@@ -206,7 +206,9 @@ public final class TessellationStudy implements Study {
         final List<RigidTransform> placed = new ArrayList<>();
         private final TreeQuery q = new TreeQuery();
         private final CollisionResult res = new CollisionResult();
-        private final ContactPatches cp = new ContactPatches();
+        // the object's own normals: against the flat plate the simulator's default
+        // (LEAST_SPREAD) takes the plate's, which is exact and says nothing of the tessellation
+        private final ContactPatches cp = new ContactPatches().normalSide(ContactPatches.NormalSide.OBJECT);
 
         Probe(Shape shape, int divisions) {
             mesh = shape.mesh(divisions);

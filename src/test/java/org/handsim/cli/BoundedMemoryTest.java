@@ -70,7 +70,7 @@ class BoundedMemoryTest {
     }
 
     /**
-     * Out of memory for real (a 24 MB heap: the 10⁶-step run's 21 MB trace-writer pool does not fit
+     * Out of memory for real (a 24 MB heap: the 10⁶-step run's 25 MB trace-writer pool does not fit
      * beside the scene): one line naming the cause and the remedy, exit 1, no output left.
      */
     @Test

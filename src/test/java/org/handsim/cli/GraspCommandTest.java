@@ -21,7 +21,8 @@ import org.junit.jupiter.api.Test;
  */
 class GraspCommandTest {
     static final String MUG = Home.scenarios().resolve("mug-grasp.json").toString();
-    static final List<String> KEYS = List.of("time_s", "contacts", "force_closure", "epsilon", "volume", "hold_N", "hold_min_N");
+    static final List<String> KEYS = List.of("time_s", "contacts", "force_closure", "epsilon", "volume", "hold_N", "hold_min_N",
+        "torque_residual_Nm");
 
     @SuppressWarnings("unchecked")
     static Map<String, Object> json(String text) {
@@ -39,6 +40,9 @@ class GraspCommandTest {
         double min = Double.POSITIVE_INFINITY;
         for (Object v : hold.values()) min = Math.min(min, ((Number) v).doubleValue());
         assertEquals(min, ((Number) g.get("hold_min_N")).doubleValue());
+        List<Object> residual = (List<Object>) g.get("torque_residual_Nm");
+        assertEquals(3, residual.size(), "one residual per finger");
+        for (Object v : residual) assertTrue(((Number) v).doubleValue() >= 0);
     }
 
     @Test
@@ -53,6 +57,9 @@ class GraspCommandTest {
         assertEquals(true, g.get("force_closure"));
         assertTrue(((Number) g.get("epsilon")).doubleValue() > 0);
         assertTrue(((Number) g.get("volume")).doubleValue() > 0);
+        for (Object v : (List<Object>) g.get("torque_residual_Nm")) {
+            assertTrue(((Number) v).doubleValue() <= 1e-9, "the forces carry every finger's torques: " + v);
+        }
 
         CliTesting.Run r0 = CliTesting.run("grasp", MUG, "--friction", "0");
         assertEquals(0, r0.code(), r0.err());

@@ -73,6 +73,32 @@ class IdCommandTest {
         for (int i = 0; i < 3; i++) assertEquals(tau[i], tauNe[i], 1e-12 * 0.05);
     }
 
+    /**
+     * Finger 1 at rest, q = 0, no gravity: D's diagonal is Pinocchio's, (1.25577e-3, 3.42415e-4,
+     * 2.55485e-5) kg·m² to the six digits given, and its full value in the reference file
+     * ({@code tools/dynamics/pinocchio_reference.py}: D11 = 1.255772807353028e-3, D22 =
+     * 3.424152480848599e-4, D33 = 2.554845134857281e-5) to 1e-6 relative, by both methods. (Table
+     * III about each link frame's origin; about the centres of mass it was 1.40949e-3, 4.72587e-4,
+     * 7.07261e-5.)
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void theMassMatrixAtRestHasPinocchiosDiagonal() {
+        double[] sixDigits = {1.25577e-3, 3.42415e-4, 2.55485e-5};
+        double[] pinocchio = {1.255772807353028e-3, 3.424152480848599e-4, 2.554845134857281e-5};
+        for (String method : new String[] {"le", "ne"}) {
+            assertEquals(0, run("id", "--finger", "1", "--q", "0,0,0", "--qd", "0,0,0", "--qdd", "0,0,0", "--gravity", "0,0,0",
+                "--method", method), err);
+            List<Object> rows = (List<Object>) ((java.util.Map<String, Object>) Json.parse("out", out)).get("D");
+            for (int i = 0; i < 3; i++) {
+                double d = vector(rows.get(i))[i];
+                assertEquals(pinocchio[i], d, 1e-6 * pinocchio[i], method + " D" + (i + 1) + (i + 1));
+                assertEquals(sixDigits[i], new java.math.BigDecimal(d).round(new java.math.MathContext(6)).doubleValue(),
+                    method + " D" + (i + 1) + (i + 1) + " = " + d);
+            }
+        }
+    }
+
     @Test
     @SuppressWarnings("unchecked")
     void fingerThreeHasTwoJointsAndNoSpread() {

@@ -283,6 +283,104 @@ class ContactForcesFrictionTest {
     }
 
     /**
+     * A held inner joint with friction (ContactForces.solveHeld): on 300 seeded finger poses with
+     * 1–5 contacts, torques made by random forces in the cones, the outer joint driven at its
+     * torque and the inner joint's reaction bounded by a seeded interval around the torque those
+     * forces put on it (so the problem is feasible, while the reaction of the least-norm forces
+     * for k3 alone may lie outside): the forces agree with an independent quadratic program —
+     * minimise Σ|f_i|² over edge weights λ ≥ 0 with k3's row equal to τ3 and lo ≤ k2's row ≤ hi
+     * (ojAlgo) — to 1e-6 relative, the reaction lies in [lo, hi] and k3 is carried (residual ≤
+     * 1e-9).
+     */
+    @Test
+    void aHeldJointsLeastNormForcesAgreeWithAQuadraticProgram() {
+        Random rnd = new Random(20260501);
+        ContactForces cf = new ContactForces();
+        int compared = 0, clamped = 0;
+        for (int trial = 0; trial < 300; trial++) {
+            double[] frames = new double[48];
+            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
+                Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
+            int n = 1 + rnd.nextInt(5);
+            double mu = 0.1 + 0.9 * rnd.nextDouble();
+            double[] p = new double[3 * n], d = new double[3 * n];
+            int[] links = new int[n];
+            randomContacts(rnd, frames, n, p, d, links);
+            double[] cones = cones(d, n, mu);
+            double[] tau = new double[3];
+            for (int i = 0; i < n; i++) {
+                for (int e = 0; e < M; e++) {
+                    double w = rnd.nextDouble() < 0.5 ? 0 : 10 * rnd.nextDouble();
+                    for (int jm = 1; jm < links[i]; jm++) tau[jm] += w * torqueDir(frames, jm, p, i, cones, 3 * M * i + 3 * e);
+                }
+            }
+            double lo = tau[1] - 0.3 * rnd.nextDouble() * Math.abs(tau[1]), hi = tau[1] + 0.3 * rnd.nextDouble() * Math.abs(tau[1]);
+            cf.solveHeld(frames, 1, tau, lo, hi, n, p, d, links, cones, M);
+            double[] ref = heldQuadraticProgram(frames, tau[2], lo, hi, n, p, links, cones, cf);
+            if (ref == null) continue;
+            double scale = 1e-6 * (1 + norm(ref));
+            double[] f = new double[3];
+            double t2 = 0, t3 = 0;
+            for (int i = 0; i < n; i++) {
+                cf.forceVector(i, f, 0);
+                for (int c = 0; c < 3; c++) assertEquals(ref[3 * i + c], f[c], scale, "trial " + trial + " contact " + i + " component " + c);
+                t2 += cf.jointTorque(i, 1);
+                t3 += cf.jointTorque(i, 2);
+            }
+            assertTrue(cf.residual() <= 1e-9 * (1 + Math.abs(tau[2])), "trial " + trial + ": residual " + cf.residual());
+            assertEquals(t2, cf.heldTorque(), 1e-12 * (1 + Math.abs(t2)), "trial " + trial);
+            assertTrue(t2 >= lo - 1e-9 && t2 <= hi + 1e-9, "trial " + trial + ": reaction " + t2 + " in [" + lo + ", " + hi + "]");
+            assertEquals(tau[2], t3, 1e-9 * (1 + Math.abs(tau[2])), "trial " + trial);
+            if (Math.abs(t2 - lo) < 1e-9 || Math.abs(t2 - hi) < 1e-9) clamped++;
+            compared++;
+        }
+        assertTrue(compared > 250, "compared " + compared);
+        assertTrue(clamped > 50, "cases where a bound holds the reaction: " + clamped);
+    }
+
+    /**
+     * The held-joint reference: minimise Σ|f|² over λ ≥ 0 with k3's row = τ3 (when some
+     * determined contact loads it) and lo ≤ k2's row ≤ hi (contacts the solver left undetermined
+     * held at 0); null if ojAlgo does not report an optimum.
+     */
+    private static double[] heldQuadraticProgram(double[] frames, double tau3, double lo, double hi, int n, double[] p, int[] links,
+                                                 double[] cones, ContactForces cf) {
+        ExpressionsBasedModel model = new ExpressionsBasedModel();
+        Variable[] lam = new Variable[n * M];
+        for (int v = 0; v < n * M; v++) lam[v] = model.addVariable("l" + v).lower(0);
+        Expression obj = model.addExpression("objective").weight(1);
+        for (int i = 0; i < n; i++) {
+            if (cf.undetermined(i) && links[i] == 3) { for (int e = 0; e < M; e++) lam[i * M + e].upper(0); }
+            for (int a = 0; a < M; a++) {
+                for (int b = 0; b < M; b++) {
+                    int ea = 3 * M * i + 3 * a, eb = 3 * M * i + 3 * b;
+                    obj.set(lam[i * M + a], lam[i * M + b], cones[ea] * cones[eb] + cones[ea + 1] * cones[eb + 1] + cones[ea + 2] * cones[eb + 2]);
+                }
+            }
+        }
+        Expression k2 = model.addExpression("tau1").lower(lo).upper(hi);
+        boolean k3used = false;
+        for (int i = 0; i < n; i++) k3used |= links[i] == 3 && !cf.undetermined(i);
+        Expression k3 = k3used ? model.addExpression("tau2").level(tau3) : null;
+        for (int i = 0; i < n; i++) {
+            for (int e = 0; e < M; e++) {
+                k2.set(lam[i * M + e], torqueDir(frames, 1, p, i, cones, 3 * M * i + 3 * e));
+                if (k3 != null && links[i] == 3) k3.set(lam[i * M + e], torqueDir(frames, 2, p, i, cones, 3 * M * i + 3 * e));
+            }
+        }
+        Optimisation.Result r = model.minimise();
+        if (!r.getState().isOptimal()) return null;
+        double[] f = new double[3 * n];
+        for (int i = 0; i < n; i++) {
+            for (int e = 0; e < M; e++) {
+                double w = lam[i * M + e].getValue().doubleValue();
+                for (int c = 0; c < 3; c++) f[3 * i + c] += w * cones[3 * M * i + 3 * e + c];
+            }
+        }
+        return f;
+    }
+
+    /**
      * n contacts on links 2 and 3 of the finger at {@code frames}: on the link's closing side
      * (link frame {kj}: x along the link, back to the joint), pushing roughly along its y axis,
      * tilted at random.

@@ -116,6 +116,45 @@ class ContactForcesTest {
         assertEquals(0, cf.residual(), 1e-12);
     }
 
+    /**
+     * A held inner joint (ContactForces.solveHeld): the geometry of {@link #twoContactsTwoJoints}
+     * (A on link 2, arm 0.05 m about k2; B on link 3, arms 0.03 m about k2 and k3), the outer
+     * joint driven at τ3 = 0.3 N·m, the inner joint's reaction free within [lo, hi]. By hand:
+     * B alone carries τ3 (fB = 10 N) and puts 0.3 N·m on k2. (a) [0, 1] holds that: A stays at
+     * 0, the reaction is 0.3. (b) [1.3, 2]: the reaction must rise to 1.3, which A's push gives
+     * (fA = 20 N). (c) [−0.1, 0.1]: B's 0.3 N·m on k2 is too much and A can only add: no forces
+     * carry both; the least squares of k2 at 0.1 and k3 at 0.3 over fA, fB ≥ 0 has fA = 0,
+     * fB = (0.03·0.1 + 0.03·0.3)/(2·0.03²) = 6.667 N, which carries 0.2 of k3's 0.3 and puts 0.2
+     * on k2: residual 0.1 both ways.
+     */
+    @Test
+    void aHeldJointsReactionStaysWithinItsBoundsOrTheResidualSaysSo() {
+        double[] f = new double[48];
+        FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(90 - 2.46), Math.toRadians(90 - 50)}, f);
+        double[] p = {0.05, 0, 0.05, 0.02, 0, 0.07};
+        double[] d = {-1, 0, 0, 0, 0, -1};
+        int[] links = {2, 3};
+        double[] tau = {0, Double.NaN, 0.3};   // the held joint's entry is not read
+        ContactForces cf = new ContactForces();
+        cf.solveHeld(f, 1, tau, 0, 1, 2, p, d, links, null, 0);
+        assertEquals(0, cf.force(0), 1e-12);
+        assertEquals(10, cf.force(1), 1e-9);
+        assertEquals(0.3, cf.heldTorque(), 1e-12);
+        assertEquals(0, cf.residual(), 1e-12);
+
+        cf.solveHeld(f, 1, tau, 1.3, 2, 2, p, d, links, null, 0);
+        assertEquals(20, cf.force(0), 1e-9);
+        assertEquals(10, cf.force(1), 1e-9);
+        assertEquals(1.3, cf.heldTorque(), 1e-12);
+        assertEquals(0, cf.residual(), 1e-12);
+
+        cf.solveHeld(f, 1, tau, -0.1, 0.1, 2, p, d, links, null, 0);
+        assertEquals(0, cf.force(0), 1e-12);
+        assertEquals(0.02 / 0.003, cf.force(1), 1e-9);
+        assertEquals(0.2, cf.heldTorque(), 1e-12);
+        assertEquals(0.1, cf.residual(), 1e-12);
+    }
+
     /** Many identical contacts: the least-squares answer carries the torque, none negative. */
     @Test
     void redundantContactsStayNonNegative() {

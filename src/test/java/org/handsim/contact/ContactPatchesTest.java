@@ -137,7 +137,11 @@ class ContactPatchesTest {
     private double[] spherePlane(int segments, double h, double x0, double y0, RigidTransform spin, ContactPatches.NormalRule rule) {
         TriangleMesh sphere = TestMeshes.uvSphere(segments, R);
         RigidTransform pose = RigidTransform.translation(x0, y0, R - h).compose(spin);
-        ContactPatches cp = contacts(slab(2), sphere, pose, ContactPatches.ObjectSide.B, rule);
+        // the sphere's own normals: against the flat slab the default (LEAST_SPREAD) takes the slab's, exactly
+        KdopTree ta = KdopTree.build(slab(2), 18), tb = KdopTree.build(sphere, 18);
+        query.collide(ta, tb, pose, result);
+        ContactPatches cp = new ContactPatches().normalRule(rule).normalSide(ContactPatches.NormalSide.OBJECT);
+        cp.build(result, slab(2), sphere, pose);
         assertEquals(1, cp.patchCount(), "one patch");
         double[] c = cp.center(0, new double[3]), n = cp.normal(0, new double[3]);
         return new double[] {dist(c, new double[] {x0, y0, 0}), angleDeg(n, new double[] {0, 0, -1}), cp.area(0)};
@@ -200,9 +204,17 @@ class ContactPatchesTest {
             assertTrue(dist(c, new double[] {x0, y0, 0}) < 1e-12, "centre " + java.util.Arrays.toString(c));
             assertTrue(angleDeg(n, new double[] {0, 0, -1}) < 1e-9, side + " normal " + java.util.Arrays.toString(n));
             assertEquals(0.02 * 0.02, cp.area(0), 1e-12, "the cube's footprint");
-            // B's four side faces cancel: the slab's face gives the normal
-            assertEquals(side == ContactPatches.ObjectSide.B ? ContactPatches.NormalSource.OTHER_SIDE : ContactPatches.NormalSource.OBJECT,
+            // B's four side faces spread (and cancel): the slab's flat face gives the normal
+            assertEquals(side == ContactPatches.ObjectSide.B ? ContactPatches.NormalSource.FLATTER_SIDE : ContactPatches.NormalSource.OBJECT,
                 cp.normalSource(0));
+            // the paper's rule (the object's normals) falls back to the slab's because the cube's cancel
+            KdopTree ta = KdopTree.build(slab(1), 18), tb = KdopTree.build(cube, 18);
+            query.collide(ta, tb, pose, result);
+            ContactPatches paper = new ContactPatches().objectSide(side).normalSide(ContactPatches.NormalSide.OBJECT);
+            paper.build(result, slab(1), cube, pose);
+            assertEquals(side == ContactPatches.ObjectSide.B ? ContactPatches.NormalSource.OTHER_SIDE : ContactPatches.NormalSource.OBJECT,
+                paper.normalSource(0));
+            assertTrue(angleDeg(paper.normal(0, new double[3]), new double[] {0, 0, -1}) < 1e-9);
         }
     }
 
@@ -220,8 +232,43 @@ class ContactPatchesTest {
             ce * 1e3, ne, cp.area(0) * 1e6, 0.02 * 2 * h * 1e6);
         assertTrue(ce < 1e-9, "centre error " + ce);
         assertTrue(ne < 1e-6, "normal error " + ne);
-        assertEquals(ContactPatches.NormalSource.OBJECT, cp.normalSource(0));
+        assertEquals(ContactPatches.NormalSource.FLATTER_SIDE, cp.normalSource(0), "the slab's flat face, not the cube's edge");
         assertEquals(0.02 * 2 * h, cp.area(0), 1e-9);
+    }
+
+    /**
+     * An edge on a flat face (DESIGN.md decision 3): the cube's lowest edge 1 µm into the slab,
+     * the cube turned 35°, 45° and 55° about that edge (its faces 10° either way): the same
+     * contact, and the default rule gives the slab's normal for all three to 1e-6 (exactly −z,
+     * out of the cube), while the cube's own normals (the paper's rule) lean with the cube by
+     * the 10° it turned. The spread of the slab's normals is 0, the cube's edge's about 0.3.
+     */
+    @Test
+    void anEdgeOnAFaceTakesTheFacesNormalWhateverTheEdgesAngle() {
+        TriangleMesh cube = TestMeshes.box(0.01, 0.01, 0.01, 1);
+        double h = 1e-6, x0 = 0.003, y0 = -0.004, half = 0.01;
+        double[] objectRule = new double[3];
+        for (int turn = -1; turn <= 1; turn++) {
+            double a = Math.PI / 4 + turn * Math.toRadians(10);
+            // the cube's edge at (y, z) = (−half, −half), turned by a about x (its lowest edge), lands at (y0, −h)
+            double ey = -half * Math.cos(a) + half * Math.sin(a), ez = -half * Math.sin(a) - half * Math.cos(a);
+            RigidTransform pose = RigidTransform.translation(x0, y0 - ey, -h - ez).compose(RigidTransform.rotX(a));
+            ContactPatches cp = contacts(slab(1), cube, pose, ContactPatches.ObjectSide.B);
+            assertEquals(1, cp.patchCount(), "turn " + turn);
+            double[] n = cp.normal(0, new double[3]);
+            assertEquals(ContactPatches.NormalSource.FLATTER_SIDE, cp.normalSource(0));
+            assertEquals(0, angleDeg(n, new double[] {0, 0, -1}), 1e-6 * 180 / Math.PI, "turn " + turn + ": " + java.util.Arrays.toString(n));
+            KdopTree ta = KdopTree.build(slab(1), 18), tb = KdopTree.build(cube, 18);
+            query.collide(ta, tb, pose, result);
+            ContactPatches paper = new ContactPatches().normalSide(ContactPatches.NormalSide.OBJECT);
+            paper.build(result, slab(1), cube, pose);
+            double[] m = paper.normal(0, new double[3]);
+            if (turn == -1) objectRule = m;
+            if (turn == 1) assertEquals(20, angleDeg(m, objectRule), 0.5, "the cube's own normals turn with it");
+        }
+        assertEquals(0, ContactPatches.spread(0, 0, 2, 2), 1e-15, "a flat face");
+        assertEquals(1 - Math.sqrt(0.5), ContactPatches.spread(1, 1, 0, 2), 1e-15, "an edge of two faces at 90 degrees, equal weights");
+        assertEquals(1, ContactPatches.spread(1, 0, 0, 0), 1e-15, "no weight");
     }
 
     /**

@@ -59,7 +59,7 @@ class ClosedFormFingerTest extends AbstractChainDynamicsTest {
             for (int j = 0; j < 3; j++) {
                 dh[j] = new DhRow(0.02 + 0.1 * r.nextDouble(), j == 0 ? Math.PI / 2 : 0, 0, r.nextDouble() - 0.5);
                 double ixx = 1e-5 + 1e-4 * r.nextDouble(), iyy = 1e-5 + 1e-4 * r.nextDouble(), izz = 1e-5 + 1e-4 * r.nextDouble();
-                links[j] = new LinkInertia(0.01 + 0.2 * r.nextDouble(),
+                links[j] = LinkInertia.aboutCentreOfMass(0.01 + 0.2 * r.nextDouble(),
                     new double[] {0.05 * r.nextGaussian(), 0.02 * r.nextGaussian(), 0.02 * r.nextGaussian()},
                     new double[] {ixx, 1e-6 * r.nextGaussian(), 1e-6 * r.nextGaussian(), iyy, 1e-6 * r.nextGaussian(), izz});
             }

@@ -27,7 +27,7 @@ class PlanarArmTest {
     private static final double G0 = 9.81;
 
     private static LinkInertia link(double m, double lc, double l, double izz) {
-        return new LinkInertia(m, new double[] {lc - l, 0, 0},
+        return LinkInertia.aboutCentreOfMass(m, new double[] {lc - l, 0, 0},
             new double[] {0.3 * izz, 0.01 * izz, -0.02 * izz, 0.8 * izz, 0.03 * izz, izz});
     }
 

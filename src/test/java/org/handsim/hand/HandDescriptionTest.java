@@ -36,7 +36,9 @@ class HandDescriptionTest {
         assertEquals(2, h.finger(3).activeJoints());
         assertEquals(0.16252678, h.finger(1).link(0).mass());
         assertEquals(-0.03629026, h.finger(3).link(2).com()[0]);
-        assertEquals(0.0000572, h.finger(2).link(0).inertia()[LinkInertia.XY]);
+        // Table III prints +∫xy dm = 0.0000572 (about the origin of {k1}); the matrix entry is its negative
+        assertEquals(-0.0000572, h.finger(2).link(0).inertia()[LinkInertia.XY]);
+        assertEquals(0.0000658, h.finger(2).link(0).inertia()[LinkInertia.XX]);
         assertEquals(1.26, h.tauBreak());
         assertEquals(17500, h.fingerCountsMax());
         assertEquals(3150, h.spreadCountsMax());
@@ -77,6 +79,18 @@ class HandDescriptionTest {
         String t = resourceText().replace("\"xx\": 0.0000047", "\"xx\": -0.0000047");
         String m = messageFor(t);
         assertTrue(m.contains("mass_properties.links[1].inertia_kgm2") && m.contains("positive definite"), m);
+    }
+
+    /**
+     * Link 1's listed product with the other sign (as if +5.72e-5 were the matrix element) is no
+     * body about the centre of mass (an eigenvalue of −5.44e-5 kg·m², TableThreeReadingTest):
+     * refused, naming the link.
+     */
+    @Test
+    void aTensorNoBodyHasIsNamed() throws IOException {
+        String t = resourceText().replace("\"xy\": 0.0000572", "\"xy\": -0.0000572");
+        String m = messageFor(t);
+        assertTrue(m.contains("mass_properties.links[0].inertia_kgm2") && m.contains("not a physical body"), m);
     }
 
     @Test

@@ -67,7 +67,7 @@ class InverseKinematicsTest {
         InverseKinematics ik = InverseKinematics.of(2);
         // a curled pose near the spread axis: both spread branches (ψ and ψ + π, r = ±ρ) are
         // within the arm's reach, each with two elbow branches
-        double[] target = ik.forward().fingertip(new double[] {0.8, 2.0, 1.2});
+        double[] target = ik.forward().fingertip(new double[] {0.8, 2.0, 0.7});
         IkResult r = ik.solve(target);
         assertEquals(4, r.branches().size());
         long inside = r.branches().stream().filter(IkSolution::withinLimits).count();
@@ -81,14 +81,16 @@ class InverseKinematicsTest {
     @Test
     void targetOnTheSpreadAxis() {
         InverseKinematics ik = InverseKinematics.of(2);
-        // pick θ2 = 120° and solve A1 + A2 cos φ2 + A3 cos(φ2 + φ3) = 0 for θ3 by bisection
-        double t2 = Math.toRadians(120), p2 = t2 + Math.toRadians(2.46);
+        // pick θ2 = 85° and solve A1 + A2 cos φ2 + A3 cos(φ2 + φ3) = 0 for θ3 by bisection
+        // (a root near 24°, inside the outer joint's range [0, 48°])
+        double t2 = Math.toRadians(85), p2 = t2 + Math.toRadians(2.46);
         double lo = T3[0], hi = T3[1];
         for (int i = 0; i < 200; i++) {
             double mid = 0.5 * (lo + hi);
             double r = 0.05 + 0.07 * Math.cos(p2) + 0.056 * Math.cos(p2 + mid + Math.toRadians(50));
-            if (r < 0) lo = mid; else hi = mid; // r grows with θ3 here
+            if (r > 0) lo = mid; else hi = mid; // r falls with θ3 here
         }
+        assertTrue(lo > T3[0] + 0.1 && lo < T3[1] - 0.1, "a root inside the range: " + lo);
         double[] target = ik.forward().fingertip(new double[] {0, t2, lo});
         target[0] = 0; // exactly on the axis (the bisection leaves ~1e-18)
         target[1] = 0;

@@ -78,9 +78,10 @@ class HandModelPlaneTest {
         double armAtTip = 0.07 * Math.cos(Math.asin(0.05 / 0.07));
         assertEquals(1.26 / armAtTip, m.breakawayForce(3), 1e-3);
         assertEquals(1.26, m.breakawayTorque(3), 1e-12);
-        // after the breakaway the outer link turns at 4/375 deg per count up to its 98° limit
+        // after the breakaway the outer link turns at 4/375 deg per count up to its 48° limit
+        // (the hand file's joint_limits_deg.theta3), where the finger stalls
         assertEquals(ClutchState.STALLED, m.state(3));
-        assertEquals(Math.toRadians(98), m.joints(3)[2], 1e-12);
+        assertEquals(Math.toRadians(48), m.joints(3)[2], 1e-12);
         Recorder r = m.recorder();
         Transmission tr = Transmission.barrettHand();
         int rows = r.rows();

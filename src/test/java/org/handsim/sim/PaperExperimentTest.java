@@ -67,7 +67,7 @@ class PaperExperimentTest {
         assertEquals(1.26, model.breakawayTorque(3), 0.01);
         // 18 N is τ_break/A2 (a contact at the tip); our cube edge meets the inner link 62 mm
         // from joint 32 (the scenario's notes): with the default friction the force follows the
-        // link's motion, 1.26/0.0627 = 20.1 N (frictionless: the edge normal's arm, 58 mm, 21.6 N)
+        // link's motion, 1.26/0.0627 = 20.1 N (frictionless: the link face normal's arm, 61.74 mm, 20.41 N)
         assertEquals(18, model.breakawayForce(3), 4.0);
         int broken = firstRow(ClutchState.BROKEN);
         assertEquals(1.26, r.get(3, Recorder.TAU2, broken), 0.01);

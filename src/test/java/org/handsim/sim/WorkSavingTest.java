@@ -98,13 +98,18 @@ class WorkSavingTest {
         assertTrue(walks * 10 < fullWalks, walks + " walks with coherence, " + fullWalks + " without");
     }
 
-    /** Dynamics only when torques are asked for: the clutch and the contacts do not need it. */
+    /**
+     * Dynamics only when torques are asked for, and at the held pose of a BLOCKED finger, whose
+     * clutch torque includes it: the events and forces are the same as with torques.
+     */
     @Test
     void torquesOffSkipsTheDynamicsAndChangesNoEvent() {
         Scenario s = Scenario.load(Home.paperScenario());
         HandModel with = run(s, true), without = run(s.withTorques(false), true);
-        assertEquals(0, without.counter(HandModel.Counter.DYNAMICS_CALLS));
-        assertTrue(with.counter(HandModel.Counter.DYNAMICS_CALLS) > 0);
+        // without torques the dynamics runs only where the clutch needs it: at the held pose of each
+        // BLOCKED phase (the torque through the clutch includes gravity's share) — the closing and the re-engaging
+        assertEquals(2, without.counter(HandModel.Counter.DYNAMICS_CALLS));
+        assertTrue(with.counter(HandModel.Counter.DYNAMICS_CALLS) > 1000);
         assertEquals(Double.valueOf(with.breakawayTime(3)), Double.valueOf(without.breakawayTime(3)));
         assertEquals(with.maxContactForce(3), without.maxContactForce(3), 1e-9);
     }
