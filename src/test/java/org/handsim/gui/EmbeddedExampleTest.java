@@ -34,8 +34,8 @@ class EmbeddedExampleTest {
             "-Dhandsim.home=" + TestPaths.root(), "-cp", System.getProperty("java.class.path"), EmbeddedExample.class.getName(),
             TestPaths.root().resolve("scenarios/paper-breakaway.json").toString(), "--screenshot", shot.toString());
         pb.environment().put("DISPLAY", GuiWindowTest.display());
-        String xauth = System.getenv("XAUTHORITY") != null ? System.getenv("XAUTHORITY") : System.getProperty("handsim.xauthority");
-        if (xauth != null && !xauth.isEmpty()) pb.environment().put("XAUTHORITY", xauth);
+        String xauth = GuiWindowTest.xauthority();
+        if (xauth != null) pb.environment().put("XAUTHORITY", xauth);
         Path log = dir.resolve("log.txt");
         pb.redirectErrorStream(true).redirectOutput(log.toFile());
         Process p = pb.start();

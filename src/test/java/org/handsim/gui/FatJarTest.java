@@ -47,8 +47,8 @@ class FatJarTest {
         pb.environment().remove("HANDSIM_SHARED");
         if (display) {
             pb.environment().put("DISPLAY", GuiWindowTest.display());
-            String xauth = System.getenv("XAUTHORITY") != null ? System.getenv("XAUTHORITY") : System.getProperty("handsim.xauthority");
-            if (xauth != null && !xauth.isEmpty()) pb.environment().put("XAUTHORITY", xauth);
+            String xauth = GuiWindowTest.xauthority();
+            if (xauth != null) pb.environment().put("XAUTHORITY", xauth);
         }
         Path log = dir.resolve("log-" + (args.length == 0 ? "none" : args[0]) + ".txt");
         pb.redirectOutput(log.toFile());
