@@ -59,6 +59,7 @@ class SparkEngineTest {
     }
 
     @Test
+    @Tag("slow")   // a Spark context starts: about 10 s; ./test --all (CI)
     void embeddedLocal2GivesTheLocalTable() throws Exception {
         PlanSpec s = spec(10);
         List<String> rows = new ArrayList<>();
