@@ -24,7 +24,8 @@ import org.jfree.data.xy.XYDataset;
 
 /**
  * Points and lines as {@link XYLineAndShapeRenderer} draws them, with item labels placed where
- * they collide with nothing: before a drawing, every point's marker is reserved; each label then
+ * they collide with nothing: before a drawing, every point's marker and every drawn line
+ * segment is reserved; each label then
  * takes the first free place among eight directions round its point (above, below, right, left,
  * the diagonals) at growing distances — beyond the nearest ring a thin leader line joins it to
  * its point — inside the plot. A label that finds no free place is left out, except a default
@@ -44,6 +45,8 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
     private final transient List<double[]> rings = new ArrayList<>();
     private final transient List<Rectangle2D> taken = new ArrayList<>();
     private final transient List<Rectangle2D> labels = new ArrayList<>();
+    /** The drawn lines (a Pareto front's segments), px: a label crosses none of them. */
+    private final transient List<Line2D> segments = new ArrayList<>();
     private transient Rectangle2D area;
 
     /** Draws item {@code item} of series {@code series} with its own marker shape (the study's setting). */
@@ -68,7 +71,17 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
         labels.clear();
         rings.clear();
         area = dataArea;
+        segments.clear();
         for (int s = 0; s < data.getSeriesCount(); s++) {
+            if (getItemLineVisible(s, 0)) {
+                for (int i = 1; i < data.getItemCount(s); i++) {
+                    segments.add(new Line2D.Double(
+                        plot.getDomainAxis().valueToJava2D(data.getXValue(s, i - 1), dataArea, RectangleEdge.BOTTOM),
+                        plot.getRangeAxis().valueToJava2D(data.getYValue(s, i - 1), dataArea, RectangleEdge.LEFT),
+                        plot.getDomainAxis().valueToJava2D(data.getXValue(s, i), dataArea, RectangleEdge.BOTTOM),
+                        plot.getRangeAxis().valueToJava2D(data.getYValue(s, i), dataArea, RectangleEdge.LEFT)));
+                }
+            }
             if (!getItemShapeVisible(s, 0)) continue;
             for (int i = 0; i < data.getItemCount(s); i++) {
                 double x = plot.getDomainAxis().valueToJava2D(data.getXValue(s, i), dataArea, RectangleEdge.BOTTOM);
@@ -119,6 +132,7 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
                         break;
                     }
                 }
+                for (int n = 0; free && n < segments.size(); n++) free = !segments.get(n).intersects(c);
                 if (free) {
                     place = c;
                     placedRadius = r;
@@ -148,6 +162,9 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
 
     /** The boxes of the labels drawn in the last drawing, px (for tests). */
     List<Rectangle2D> labelBoxes() { return new ArrayList<>(labels); }
+
+    /** The line segments of the last drawing, px (for tests). */
+    List<Line2D> segmentsDrawn() { return new ArrayList<>(segments); }
 
     /** The plot area of the last drawing, px. */
     Rectangle2D dataArea() { return area; }

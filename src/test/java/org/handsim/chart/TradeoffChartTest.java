@@ -88,6 +88,9 @@ class TradeoffChartTest {
             for (int j = i + 1; j < boxes.size(); j++) {
                 assertTrue(!boxes.get(i).intersects(boxes.get(j)), "labels " + boxes.get(i) + " and " + boxes.get(j) + " overlap");
             }
+            for (java.awt.geom.Line2D l : r.segmentsDrawn()) {
+                assertTrue(!l.intersects(boxes.get(i)), "label " + boxes.get(i) + " crosses a Pareto front's line");
+            }
         }
         // the x axis ends on a labelled decade: half its label must fit right of the plot
         LogAxis x = (LogAxis) c.getXYPlot().getDomainAxis();
