@@ -159,6 +159,20 @@ public final class PaperCharts {
         return a;
     }
 
+    /**
+     * A Fig. 7 of a few made-up rows, built as the real ones are: what {@link ChartSet#start}
+     * draws and throws away to set up fonts, Java2D and JFreeChart while a run goes on.
+     */
+    public static JFreeChart warmUp() {
+        Recorder r = new Recorder();
+        for (int i = 0; i < 8; i++) {
+            r.beginRow(i * 0.1);
+            for (int c = Recorder.Q; c <= Recorder.TAU3; c++) r.set(1, c, Math.sin(i + c));
+            r.setContacts(1, i % 3, i);
+        }
+        return figure7(r, 1, 0.35, "Joints 12 and 13 (warm-up)");
+    }
+
     /** A recorded value against time, thinned to every n-th row (at most {@value #MAX_POINTS}), keeping the last. */
     private static XYSeries series(Recorder r, String name, IntToDoubleFunction valueAtRow) {
         XYSeries s = new XYSeries(name, false, true);

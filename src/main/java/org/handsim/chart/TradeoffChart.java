@@ -42,10 +42,13 @@ public final class TradeoffChart {
 
     private TradeoffChart() {}
 
+    /** Size of the chart, pixels. */
+    public static final int WIDTH = 1000, HEIGHT = 700;
+
     /** Writes {@code dir/<id>.png}, {@code .svg} and {@code .csv}. */
     public static void write(StudyTable table, Path dir) throws IOException {
         table.writeCsv(dir.resolve(table.id() + ".csv"));
-        ChartExport.write(create(table), dir.resolve(table.id()), 1000, 700);
+        ChartExport.write(create(table), dir.resolve(table.id()), WIDTH, HEIGHT);
     }
 
     public static JFreeChart create(StudyTable t) {

@@ -1,10 +1,15 @@
 package org.handsim.cli;
 
-import org.handsim.util.SafeText;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
-import org.handsim.util.Decimal;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.UnitRule;
+import org.handsim.util.Decimal;
+import org.handsim.util.OutputSet;
+import org.handsim.util.SafeText;
 
 /** Parsing of the comma-separated numeric arguments the sub-commands share. */
 final class Args {
@@ -88,5 +93,47 @@ final class Args {
     static String csv(double d) {
         if (!Double.isFinite(d)) throw new IllegalStateException("refusing to write non-finite value " + d);
         return Decimal.format(d);
+    }
+
+    /** Exit 2 unless an output option names something ({@code --out ''} would write into the current folder). */
+    static Path outputPath(String option, Path p) {
+        if (p != null && p.toString().isEmpty()) throw CliError.usage("handsim: " + option + " must name a " + (option.equals("--out") ? "folder" : "file") + ", got ''");
+        return p;
+    }
+
+    /** Exit 2 unless a file output option names a file: not '', not a folder. */
+    static Path outputFile(String option, Path p) {
+        outputPath(option, p);
+        if (p != null && Files.isDirectory(p)) throw CliError.usage("handsim: " + option + " " + p + " is a folder, not a file");
+        return p;
+    }
+
+    /**
+     * Opens the output set of a command in {@code dir} ({@link OutputSet}): waits for another
+     * writer of the folder, saying so once on standard error; exit 2 naming {@code option} if the
+     * folder cannot take the set.
+     */
+    static OutputSet outputSet(PrintWriter err, String option, Path dir, OutputSet.Layout layout) throws IOException {
+        outputPath(option, dir);
+        try {
+            return OutputSet.open(dir, layout, msg -> {
+                err.println("handsim: " + msg);
+                err.flush();
+            });
+        } catch (OutputSet.Refused e) {
+            throw CliError.usage("handsim: " + option + " " + dir + ": " + e.getMessage());
+        }
+    }
+
+    /** Exit 2 if an output names the same file as the input (links resolved): the input would be overwritten. */
+    static void notTheInput(Path input, String inputName, Path output, String option) {
+        if (input == null || output == null) return;
+        try {
+            if (Files.exists(output) && Files.exists(input) && Files.isSameFile(input, output)) {
+                throw CliError.usage("handsim: " + option + " " + output + " is the input " + inputName + " " + input + ": refusing to overwrite it");
+            }
+        } catch (IOException e) {
+            // cannot tell: the write itself will report any problem
+        }
     }
 }

@@ -35,6 +35,8 @@ final class BulkCsv {
         if (input == null || output == null) throw CliError.usage("handsim: bulk mode needs both --input and --output");
         if (others) throw CliError.usage("handsim: --input/--output cannot be combined with " + othersNames);
         if (!Files.isRegularFile(input)) throw new CliError(CliError.LOAD, "handsim: " + NotFound.message(input));
+        Args.outputFile("--output", output);
+        Args.notTheInput(input, "--input", output, "--output");
         int rows = 0;
         int inColumns = inHeader.split(",").length;
         try (CsvInput in = new CsvInput(input, inHeader); AtomicFile af = new AtomicFile(output)) {

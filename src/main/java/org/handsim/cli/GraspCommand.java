@@ -1,12 +1,13 @@
 package org.handsim.cli;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.GraspChart;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
@@ -17,6 +18,7 @@ import org.handsim.sim.SimulationException;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.Decimal;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -71,6 +73,8 @@ public final class GraspCommand implements Callable<Integer> {
         scenario = withFriction(scenario, friction, edges);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
+        Args.outputPath("--chart", chart);
+        if (chart != null && chart.getFileName() == null) throw CliError.usage("handsim: --chart must name a file base, got '" + chart + "'");
         if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + Args.typed(spec, "--every"));
         double mu = scenario.friction();
         int m = scenario.coneEdges();
@@ -101,7 +105,7 @@ public final class GraspCommand implements Callable<Integer> {
         GraspAssessment g = GraspAssessment.of(model, mu, m);
         if (chart != null) {
             if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
-            writeChart(chart, samples, model, scenario.name());
+            writeChart(spec.commandLine().getErr(), chart, samples, model, scenario.name());
         }
         spec.commandLine().getOut().println(JsonWriter.write(g.toJson()));
         return 0;
@@ -118,11 +122,24 @@ public final class GraspCommand implements Callable<Integer> {
         return s;
     }
 
-    private static void writeChart(Path base, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+    /** BASE.csv, BASE.png and BASE.svg, published together ({@link OutputSet} of BASE's folder). */
+    private static void writeChart(PrintWriter err, Path chart, List<GraspAssessment> samples, HandModel model, String name) throws IOException {
+        Path folder = chart.toAbsolutePath().getParent();
+        String stem = chart.getFileName().toString();
+        OutputSet.Layout layout = new OutputSet.Layout(null, java.util.regex.Pattern.quote(stem) + "\\.(png|svg|csv)");
+        try (OutputSet set = Args.outputSet(err, "--chart", folder, layout)) {
+            writeChartFiles(set.dir().resolve(stem), samples, model, name, err);
+            set.publish();
+        }
+    }
+
+    private static void writeChartFiles(Path base, List<GraspAssessment> samples, HandModel model, String name, PrintWriter err) throws IOException {
         double[] breakaways = {model.breakawayTime(1), model.breakawayTime(2), model.breakawayTime(3)};
-        ChartExport.write(GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
+        ChartSet set = ChartSet.start(null);
+        set.add(base, 900, 650, () -> GraspChart.epsilonAndHold(samples, breakaways, model.hand().handRatingN(),
             "Grasp quality and hold against time (" + name + ", μ = " + model.scenario().friction() + ", "
-            + model.scenario().coneEdges() + " cone edges)"), base, 900, 650);
+            + model.scenario().coneEdges() + " cone edges)"));
+        Charts.finish(set, err);   // without the chart, its table (BASE.csv) is still written
         try (AtomicFile f = new AtomicFile(Path.of(base + ".csv"))) {
             Writer w = f.writer();
             w.write(CHART_HEADER);

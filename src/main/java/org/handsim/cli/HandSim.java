@@ -74,8 +74,8 @@ public final class HandSim implements Runnable {
     public static int execute(PrintWriter out, PrintWriter err, String... args) {
         int code;
         try {
-            prepareHeadless();
-            CommandLine cl = commandLine();
+            prepareHeadless(args.length > 0 ? args[0] : null);
+            CommandLine cl = commandLine(args.length > 0 ? args[0] : null);
             cl.setOut(out);
             cl.setErr(err);
             cl.setParameterExceptionHandler((ex, a) -> {
@@ -94,9 +94,28 @@ public final class HandSim implements Runnable {
 
     /** The command line with every sub-command and the help layout. */
     static CommandLine commandLine() {
+        return commandLine(null);
+    }
+
+    /**
+     * The command line for arguments that start with {@code first}: when that names a
+     * sub-command (by the convention {@code XxxCommand} is {@code xxx}), with that one alone —
+     * picocli reads every registered command's annotations, which for all of them was a good part
+     * of a short command's start-up — else, or if the convention does not hold, with every one.
+     */
+    static CommandLine commandLine(String first) {
         CommandLine cl = new CommandLine(new HandSim());
-        for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
-        cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
+        Class<?> only = null;
+        for (Class<?> c : SUBCOMMANDS) {
+            if (first != null && (first.toLowerCase(java.util.Locale.ROOT) + "command").equals(c.getSimpleName().toLowerCase(java.util.Locale.ROOT))) only = c;
+        }
+        if (only != null) {
+            cl.addSubcommand(only);
+            if (!cl.getSubcommands().containsKey(first)) return commandLine(null);
+        } else {
+            for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+            cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
+        }
         cl.setUsageHelpWidth(HELP_WIDTH);
         cl.setUsageHelpAutoWidth(false);
         applySynopsis(cl);
@@ -222,8 +241,22 @@ public final class HandSim implements Runnable {
 
     /**
      * Java3D's VirtualUniverse throws HeadlessException without a display unless the no-op
-     * renderer is chosen before the first Java3D class loads (DESIGN.md, "Headless").
+     * renderer is chosen before the first Java3D class loads (DESIGN.md, "Headless"). Every
+     * command but {@code gui} runs headless whether or not there is a display: none of them
+     * shows anything, and with a display they could not use (DISPLAY set, the X server refusing
+     * the connection) loading a VRML file died in Java3D's renderer set-up and charts in AWT's.
+     * Properties set on the command line are kept.
      */
+    static void prepareHeadless(String command) {
+        if (!"gui".equals(command)) {
+            if (System.getProperty("java.awt.headless") == null) System.setProperty("java.awt.headless", "true");
+            if (System.getProperty("j3d.rend") == null) System.setProperty("j3d.rend", "noop");
+            return;
+        }
+        prepareHeadless();
+    }
+
+    /** For the window: headless (and Java3D's no-op renderer) only when there is no display. */
     static void prepareHeadless() {
         if (System.getProperty("j3d.rend") == null
             && (GraphicsEnvironment.isHeadless() || System.getenv("DISPLAY") == null)) {

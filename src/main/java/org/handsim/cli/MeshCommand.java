@@ -101,6 +101,8 @@ public final class MeshCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         if (divisions < 3 || divisions > 100_000) throw CliError.usage("handsim mesh: --divisions must be in 3..100000, got " + divisions);
         if (!(scale > 0) || !Double.isFinite(scale)) throw CliError.usage("handsim mesh: --scale must be a positive finite number, got " + Args.typed(spec, "--scale"));
+        Args.notTheInput(file, "FILE", Args.outputFile("--obj", obj), "--obj");
+        Args.notTheInput(file, "FILE", Args.outputFile("--stl", stl), "--stl");
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Scenario.Units chosen = Args.units(units);

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.plan.PlanJob;
@@ -16,6 +16,10 @@ import org.handsim.plan.TrialRunner;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.UnitRule;
 import org.handsim.sim.ScenarioException;
+import org.handsim.util.AtomicFile;
+import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
+import org.handsim.util.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -38,6 +42,9 @@ import picocli.CommandLine.Model.CommandSpec;
         "  standoff_m,contacts,force_closure,epsilon,volume,hold_min_N,final_state1,",
         "  final_state2,final_state3,sim_time_s,wall_s,error"})
 public final class PlanCommand implements Callable<Integer> {
+    /** The files of a plan's folder: plan.json is published last. */
+    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("plan.json",
+        "plan\\.csv|plan\\.json|best/[0-9][0-9]\\.json|epsilon-(histogram|directions)\\.(png|svg)", "best");
     @Spec CommandSpec spec;
 
     @Parameters(index = "0", paramLabel = "TARGET", description = {"an object file (any format scenarios read), or a",
@@ -88,7 +95,7 @@ public final class PlanCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
         }
-        Path dir = out != null ? out : Path.of("out", "plan-" + planSpec.name());
+        Path dir = out != null ? Args.outputPath("--out", out) : Path.of("out", "plan-" + planSpec.name());
         if (unit == null) {
             boolean json = target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json");
             String notice = json ? Scenario.load(target).unitNotice("handsim plan")
@@ -98,17 +105,26 @@ public final class PlanCommand implements Callable<Integer> {
         ProgressBar bar = new ProgressBar(err, "handsim plan " + planSpec.name());
         long t0 = System.nanoTime();
         Map<String, Object> summary;
-        PlanOutput output = new PlanOutput(dir, runner, rows -> bar.accept(rows / (double) trials));
-        try (output) {
-            try {
-                eng.engine().run(new PlanJob(planSpec), trials, eng.settings("handsim plan " + planSpec.name()), output);
-            } catch (Exception e) {
-                throw eng.failed("plan " + planSpec.name(), e);
+        PlanOutput output;
+        boolean charts;
+        // every file goes to the set's private folder; the folder gets them all, or none, at the end
+        try (OutputSet set = Args.outputSet(err, "--out", dir, LAYOUT)) {
+            Phase.reach("opened");
+            java.util.function.DoubleConsumer progress = Phase.atHalf("half-trials", bar);
+            output = new PlanOutput(set.dir(), dir, runner, rows -> progress.accept(rows / (double) trials));
+            try (output) {
+                try {
+                    eng.engine().run(new PlanJob(planSpec), trials, eng.settings("handsim plan " + planSpec.name()), output);
+                } catch (Exception e) {
+                    throw eng.failed("plan " + planSpec.name(), e);
+                }
+                double wall = (System.nanoTime() - t0) / 1e9;
+                summary = output.finish(wall, engine);
             }
-            double wall = (System.nanoTime() - t0) / 1e9;
-            summary = output.finish(wall, engine);
+            charts = writeCharts(output, planSpec, set.dir(), summary, err);
+            Phase.reach("charts");
+            set.publish();
         }
-        writeCharts(output, planSpec, dir);
         TrialResult best = output.bestFirst().isEmpty() ? null : output.bestFirst().get(0);
         stdout.println(String.format(Locale.ROOT, "plan-%s: %d trials (%d failed), %d with force closure, best epsilon %s%s;"
                 + " %.2f s wall, %.1f trials/s (%s engine, %s)",
@@ -116,19 +132,30 @@ public final class PlanCommand implements Callable<Integer> {
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
         stdout.println("wrote " + dir + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
-            + ".json, epsilon-histogram.png/.svg, epsilon-directions.png/.svg}");
+            + ".json" + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
         return output.failed() == trials ? 1 : 0;
     }
 
-    static void writeCharts(PlanOutput o, PlanSpec s, Path dir) throws java.io.IOException {
+    /**
+     * Draws and writes the two charts; when they cannot be drawn, the warning and plan.json
+     * rewritten with {@code charts_missing} (every table is written already). Returns whether
+     * the charts were written.
+     */
+    static boolean writeCharts(PlanOutput o, PlanSpec s, Path dir, Map<String, Object> summary, PrintWriter err) throws java.io.IOException {
         var h = o.histogram();
         int used = h.usedBins();
         long[] counts = java.util.Arrays.copyOf(h.counts(), used);
-        ChartExport.write(PlanCharts.epsilonHistogram("Grasp quality over " + s.trials() + " trials (" + s.name() + ", seed " + s.seed() + ")",
-            h.width(), counts, h.noClosure(), o.failed()), dir.resolve("epsilon-histogram"), 900, 550);
         var d = o.directions();
-        ChartExport.write(PlanCharts.directionMap("Best ε by approach direction (" + s.name() + ", " + s.trials() + " trials)", d),
-            dir.resolve("epsilon-directions"), 1000, 560);
+        ChartSet set = ChartSet.start(null);
+        set.add(dir.resolve("epsilon-histogram"), 900, 550, () -> PlanCharts.epsilonHistogram("Grasp quality over " + s.trials()
+            + " trials (" + s.name() + ", seed " + s.seed() + ")", h.width(), counts, h.noClosure(), o.failed()));
+        set.add(dir.resolve("epsilon-directions"), 1000, 560, () -> PlanCharts.directionMap("Best ε by approach direction ("
+            + s.name() + ", " + s.trials() + " trials)", d));
+        String missing = Charts.finish(set, err);
+        if (missing == null) return true;
+        summary.put(Charts.MISSING_KEY, missing);
+        AtomicFile.writeString(dir.resolve("plan.json"), JsonWriter.pretty(summary));
+        return false;
     }
 
     private static String fmt(double v) {

@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.handsim.chart.ChartExport;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.PaperCharts;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandModel;
@@ -22,6 +22,8 @@ import org.handsim.sim.SimulationException;
 import org.handsim.tradeoff.Resolution;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
+import org.handsim.util.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -34,8 +36,11 @@ import picocli.CommandLine.Model.CommandSpec;
         "SCENARIO defaults to the paper's breakaway experiment,",
         "scenarios/paper-breakaway.json. Writes trace.csv (streamed as the run goes),",
         "summary.json and fig7/fig8 (PNG and SVG) into out/<scenario name>/",
-        "(or --out DIR). Nothing is written if the run fails."})
+        "(or --out DIR), all at once when every file is complete; a run that fails or",
+        "is stopped leaves the folder as it was."})
 public final class RunCommand implements Callable<Integer> {
+    /** The files of a run's folder: summary.json is published last. */
+    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("summary.json", "trace\\.csv|summary\\.json|fig[78]_finger[1-3]\\.(png|svg)");
     @Spec CommandSpec spec;
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENARIO", description = "scenario JSON file")
@@ -90,80 +95,97 @@ public final class RunCommand implements Callable<Integer> {
                     Resolution.mm(c.expectedErrorM()), Resolution.mm(c.sizeM()));
             }
         }
-        Path dir = out != null ? out : Path.of("out", scenario.name());
+        Path dir = out != null ? Args.outputPath("--out", out) : Path.of("out", scenario.name());
         boolean charts = scenario.writeCharts() && !noCharts;
+        ChartSet chartSet = charts ? ChartSet.start(PaperCharts::warmUp) : null;   // fonts and Java2D set up while the run goes on
         if (noCharts && !scenario.writeCharts()) err.println("handsim: --no-charts has no effect: the scenario writes no charts (outputs.charts is false)");
         List<String> written = new ArrayList<>();
         Map<String, Object> summary;
         HandModel model;
         double wall, setup, chartSeconds = 0;
-        List<Path> created = SwingCommand.missingDirectories(dir);   // removed again if the run fails
-        boolean ok = false;
-        // memory stays flat in the number of steps: the trace streams to its file as the run
-        // goes, and memory keeps only the rows the charts draw (Recorder.bounded)
-        try (Recorder rec = scenario.writeTrace() || charts
-            ? Recorder.bounded(scenario.writeTrace() ? dir.resolve("trace.csv") : null, HandModel.totalSteps(scenario) + 1) : null) {
-            long t0 = System.nanoTime();
-            try {
-                model = Simulation.model(scenario, rec).lazy(!noLazy);
-            } catch (ScenarioException e) {   // the object or a hand model cannot be loaded
-                throw new CliError(CliError.LOAD, e.getMessage());
-            }
-            setup = (System.nanoTime() - t0) / 1e9;
-            List<String> warnings = model.startWarnings();
-            for (String w : warnings) err.println("handsim: warning: " + w);
-            long t1 = System.nanoTime();
-            try {
-                model.run(new ProgressBar(err, "handsim run " + scenario.name()));
-            } catch (SimulationException e) {
-                throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
-            }
-            wall = (System.nanoTime() - t1) / 1e9;
-            // and what the run found: stretches without a static equilibrium (once each, not per step)
-            List<String> found = model.warnings().subList(warnings.size(), model.warnings().size());
-            for (String w : found) err.println("handsim: warning: " + w);
-            warnings = model.warnings();
-            summary = RunSummary.of(model, wall);
-            summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
-            summary.put("setup_time_s", setup);
-            summary.put("warnings", warnings);
-            if (toleranceM != null) {
-                summary.put("tolerance_m", toleranceM);
-                if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
-            }
-            if (scenario.writeTrace()) written.add("trace.csv");
-            long t3 = System.nanoTime();
-            if (charts) {
-                for (int k = 1; k <= 3; k++) {
-                    if (!rec.moved(k)) continue;
-                    String name = "finger " + k + ", " + scenario.name();
-                    ChartExport.write(PaperCharts.figure7(rec, k, model.breakawayTime(k), "Joints " + k + "2 and " + k + "3 (" + name + ")"),
-                        dir.resolve("fig7_finger" + k), 900, 1100);
-                    ChartExport.write(PaperCharts.figure8(rec, k, model.breakawayTime(k), "Contact force on finger " + k + " (" + scenario.name() + ")"),
-                        dir.resolve("fig8_finger" + k), 900, 450);
-                    written.add("fig7_finger" + k + ".png/.svg");
-                    written.add("fig8_finger" + k + ".png/.svg");
+        // every file goes to the set's private folder; the folder gets them all, or none, at the end
+        try (OutputSet set = Args.outputSet(err, "--out", dir, LAYOUT)) {
+            Path stage = set.dir();
+            Phase.reach("opened");
+            // memory stays flat in the number of steps: the trace streams to its file as the run
+            // goes, and memory keeps only the rows the charts draw (Recorder.bounded)
+            try (Recorder rec = scenario.writeTrace() || charts
+                ? Recorder.bounded(scenario.writeTrace() ? stage.resolve("trace.csv") : null, HandModel.totalSteps(scenario) + 1) : null) {
+                long t0 = System.nanoTime();
+                try {
+                    model = Simulation.model(scenario, rec).lazy(!noLazy);
+                } catch (ScenarioException e) {   // the object or a hand model cannot be loaded
+                    throw new CliError(CliError.LOAD, e.getMessage());
                 }
+                setup = (System.nanoTime() - t0) / 1e9;
+                List<String> warnings = model.startWarnings();
+                for (String w : warnings) err.println("handsim: warning: " + w);
+                Phase.reach("loaded");
+                long t1 = System.nanoTime();
+                try {
+                    model.run(Phase.atHalf("half-run", new ProgressBar(err, "handsim run " + scenario.name())));
+                } catch (SimulationException e) {
+                    throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
+                }
+                wall = (System.nanoTime() - t1) / 1e9;
+                // and what the run found: stretches without a static equilibrium (once each, not per step)
+                List<String> found = model.warnings().subList(warnings.size(), model.warnings().size());
+                for (String w : found) err.println("handsim: warning: " + w);
+                warnings = model.warnings();
+                Phase.reach("ran");
+                long t3 = System.nanoTime();
+                // the charts are drawn on the set's workers while the grasp is evaluated
+                List<String> chartFiles = chartSet != null ? addCharts(chartSet, rec, model, stage) : List.of();
+                summary = RunSummary.of(model, wall);
+                summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
+                summary.put("setup_time_s", setup);
+                summary.put("warnings", warnings);
+                if (toleranceM != null) {
+                    summary.put("tolerance_m", toleranceM);
+                    if (scenario.object() != null) summary.put("divisions", scenario.object().divisions());
+                }
+                if (scenario.writeTrace()) written.add("trace.csv");
+                String missing = chartSet != null ? Charts.finish(chartSet, err) : null;   // the charts were drawn meanwhile
+                if (missing != null) summary.put(Charts.MISSING_KEY, missing);
+                else written.addAll(chartFiles);
+                Phase.reach("chart");
+                chartSeconds = (System.nanoTime() - t3) / 1e9;
+                // the trace writer worked on its own thread during the run and the charts; now it completes
+                if (rec != null) rec.finish();
+                Phase.reach("trace");
+                Map<String, Object> phases = new java.util.LinkedHashMap<>();
+                phases.put("load_s", setup);
+                phases.put("run_s", wall);
+                phases.put("trace_s", rec != null ? rec.writeSeconds() : 0.0);
+                phases.put("charts_s", chartSeconds);
+                summary.put("phase_times", phases);
             }
-            chartSeconds = (System.nanoTime() - t3) / 1e9;
-            // the trace writer worked on its own thread during the run and the charts; now it completes and is renamed
-            if (rec != null) rec.finish();
-            ok = true;
-            Map<String, Object> phases = new java.util.LinkedHashMap<>();
-            phases.put("load_s", setup);
-            phases.put("run_s", wall);
-            phases.put("trace_s", rec != null ? rec.writeSeconds() : 0.0);
-            phases.put("charts_s", chartSeconds);
-            summary.put("phase_times", phases);
-        } finally {
-            if (!ok) SwingCommand.removeEmpty(created);   // the trace's temporary file is gone (Recorder.close): leave no empty folder
+            AtomicFile.writeString(stage.resolve("summary.json"), JsonWriter.pretty(summary));
+            written.add("summary.json");
+            set.publish();
         }
-        AtomicFile.writeString(dir.resolve("summary.json"), JsonWriter.pretty(summary));
-        written.add("summary.json");
         if (toleranceLine != null) stdout.println(toleranceLine);
         stdout.println(headline(model, wall));
         stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
         return 0;
+    }
+
+    /** Queues Fig. 7 and Fig. 8 of every finger that moved (drawn on the set's workers); returns their names for the "wrote" line. */
+    private static List<String> addCharts(ChartSet set, Recorder rec, HandModel model, Path dir) {
+        List<String> files = new ArrayList<>();
+        String scenario = model.scenario().name();
+        for (int k = 1; k <= 3; k++) {
+            if (!rec.moved(k)) continue;
+            int f = k;
+            double tb = model.breakawayTime(k);
+            set.add(dir.resolve("fig7_finger" + k), 900, 1100,
+                () -> PaperCharts.figure7(rec, f, tb, "Joints " + f + "2 and " + f + "3 (finger " + f + ", " + scenario + ")"));
+            set.add(dir.resolve("fig8_finger" + k), 900, 450,
+                () -> PaperCharts.figure8(rec, f, tb, "Contact force on finger " + f + " (" + scenario + ")"));
+            files.add("fig7_finger" + k + ".png/.svg");
+            files.add("fig8_finger" + k + ".png/.svg");
+        }
+        return files;
     }
 
     /** {@code --tolerance} as metres; exit 2 naming the value if it is not a length. */

@@ -6,6 +6,8 @@ import java.util.Locale;
 import org.handsim.plan.IndexedJob;
 import org.handsim.sim.Sweep;
 import org.handsim.util.AtomicFile;
+import org.handsim.util.OutputSet;
+import org.handsim.util.Phase;
 import org.handsim.util.SafeText;
 
 /**
@@ -16,6 +18,8 @@ import org.handsim.util.SafeText;
  */
 final class SweepJob implements IndexedJob<String> {
     private static final long serialVersionUID = 1L;
+    /** A sweep's folder holds one file, its table. */
+    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("summary.csv", "summary\\.csv");
     private final String file;
     private final Double friction;
     private final Integer edges;
@@ -45,33 +49,41 @@ final class SweepJob implements IndexedJob<String> {
     static int run(SweepCommand c, Sweep sweep, int defaultThreads) throws Exception {
         EngineChoice eng = EngineChoice.of(c.engine, c.master, c.threads, defaultThreads);
         int runs = sweep.runs().size();
-        Path dir = c.out != null ? c.out : Path.of("out", sweep.name());
+        Path dir = c.out != null ? Args.outputPath("--out", c.out) : Path.of("out", sweep.name());
         long t0 = System.nanoTime();
         int[] failed = {0}, done = {0};
         java.io.PrintWriter err = c.spec.commandLine().getErr();
-        try (AtomicFile f = new AtomicFile(dir.resolve("summary.csv"))) {
-            Writer w = f.writer();
-            w.write(SweepCommand.HEADER);
-            w.write('\n');
-            try {
-                eng.engine().run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, eng.settings("handsim sweep " + sweep.name()), row -> {
-                    try {
-                        if (row.contains(",failed,")) failed[0]++;
-                        w.write(row);
-                        w.write('\n');
-                    } catch (java.io.IOException e) {
-                        throw new java.io.UncheckedIOException(e);
-                    }
-                    err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", ++done[0], runs, SafeText.line(sweep.runs().get(done[0] - 1).label()),
-                        (System.nanoTime() - t0) / 1e9));
-                    err.flush();
-                });
-            } catch (java.io.UncheckedIOException e) {
-                throw e.getCause();
-            } catch (Exception e) {
-                throw eng.failed("sweep " + sweep.name(), e);
+        try (OutputSet set = Args.outputSet(err, "--out", dir, LAYOUT)) {
+            Phase.reach("opened");
+            try (AtomicFile f = new AtomicFile(set.dir().resolve("summary.csv"))) {
+                Writer w = f.writer();
+                w.write(SweepCommand.HEADER);
+                w.write('\n');
+                try {
+                    eng.engine().run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, eng.settings("handsim sweep " + sweep.name()), row -> {
+                        try {
+                            if (row.contains(",failed,")) failed[0]++;
+                            w.write(row);
+                            w.write('\n');
+                        } catch (java.io.IOException e) {
+                            throw new java.io.UncheckedIOException(e);
+                        }
+                        err.println(String.format(Locale.ROOT, "[%d/%d] %s (%.1f s)", ++done[0], runs, SafeText.line(sweep.runs().get(done[0] - 1).label()),
+                            (System.nanoTime() - t0) / 1e9));
+                        err.flush();
+                        if (done[0] == 1) Phase.reach("first-row");
+                        if (done[0] == (runs + 1) / 2) Phase.reach("half-rows");
+                        if (done[0] == runs) Phase.reach("last-row");
+                    });
+                } catch (java.io.UncheckedIOException e) {
+                    throw e.getCause();
+                } catch (Exception e) {
+                    throw eng.failed("sweep " + sweep.name(), e);
+                }
+                f.commit();
             }
-            f.commit();
+            Phase.reach("table");
+            set.publish();
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         c.spec.commandLine().getOut().println(String.format(Locale.ROOT, "%s: %d runs (%d failed) on %s in %.2f s; wrote %s",

@@ -25,6 +25,7 @@ import org.handsim.dynamics.IntegrationStoppedException;
 import org.handsim.dynamics.LinkChain;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -52,6 +53,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "finite, a step fails, or the energy grows by more than 50 %% of the",
         "energy scale (the largest kinetic energy the finger can reach)."})
 public final class SwingCommand implements Callable<Integer> {
+    /** The files of a swing's folder: swing.json is published last. */
+    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("swing.json", "swing\\.(csv|json)");
     static final String HEADER = "t_s,q1_rad,q2_rad,q3_rad,qd1_rad_s,qd2_rad_s,qd3_rad_s,energy_J";
     static final List<String> JSON_KEYS = List.of("finger", "integrator", "dt_s", "steps", "duration_s", "energy_initial_J",
         "energy_final_J", "energy_drift_rel", "wall_time_s");
@@ -123,12 +126,10 @@ public final class SwingCommand implements Callable<Integer> {
         Integrator in = integrator(integrator, n);
         FingerDynamicsOde ode = new FingerDynamicsOde(dyn, g, FingerDynamicsOde.Torques.ZERO);
 
-        Path csv = out.resolve("swing.csv"), json = out.resolve("swing.json");
-        List<Path> created = missingDirectories(out);
         FreeSwing.Result result;
         double wall;
-        boolean ok = false;
-        try (AtomicFile csvFile = new AtomicFile(csv)) {
+        try (OutputSet set = Args.outputSet(err, "--out", out, LAYOUT); AtomicFile csvFile = new AtomicFile(set.dir().resolve("swing.csv"))) {
+            Path json = set.dir().resolve("swing.json");
             Writer w = csvFile.writer();
             w.write(HEADER);
             w.write('\n');
@@ -174,9 +175,7 @@ public final class SwingCommand implements Callable<Integer> {
                 csvFile.commit();
                 jsonFile.commit();
             }
-            ok = true;
-        } finally {
-            if (!ok) removeEmpty(created);
+            set.publish();
         }
         stdout.println(String.format(Locale.ROOT,
             "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %s J -> %s J (relative drift %.3g)",
@@ -200,22 +199,5 @@ public final class SwingCommand implements Callable<Integer> {
         String what = kind == IntegratorKind.RK4 ? in.name() : kind.label();
         String alt = kind == IntegratorKind.RK4 ? "dopri or a smaller --dt" : "rk4 or a smaller --dt";
         return " (" + what + " is unstable at dt = " + dt + " s; try " + alt + ")";
-    }
-
-    /** The folders of {@code dir} that do not exist yet, deepest first (to remove again if the run fails). */
-    static List<Path> missingDirectories(Path dir) {
-        List<Path> missing = new ArrayList<>();
-        for (Path p = dir.toAbsolutePath(); p != null && !Files.exists(p); p = p.getParent()) missing.add(p);
-        return missing;
-    }
-
-    static void removeEmpty(List<Path> created) {
-        for (Path p : created) {
-            try {
-                Files.deleteIfExists(p);
-            } catch (IOException e) {
-                return; // not empty (someone else wrote there) or not ours to remove: leave it
-            }
-        }
     }
 }

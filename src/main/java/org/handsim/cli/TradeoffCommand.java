@@ -11,12 +11,15 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
+import org.handsim.chart.ChartSet;
 import org.handsim.chart.StudyTable;
 import org.handsim.chart.TradeoffChart;
 import org.handsim.tradeoff.Studies;
 import org.handsim.tradeoff.Study;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.OutputSet;
+import org.handsim.util.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -35,7 +38,8 @@ import picocli.CommandLine.Model.CommandSpec;
         "resolution against analytic contacts), 3-kdop (k of the k-DOPs and brute",
         "force, the hand grasping each vrml/objects model), 4-integrators (energy",
         "drift of a free finger). The full run takes about a minute (48 s on 2",
-        "cores); --quick runs fewer settings (a smoke test)."})
+        "cores); --quick runs fewer settings (a smoke test). DIR holds one run's",
+        "files: --only removes those of the studies it did not run."})
 public final class TradeoffCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 
@@ -53,30 +57,51 @@ public final class TradeoffCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
+        Args.outputPath("--out", out);
         List<Study> chosen = choose();
         Map<String, Object> summary = new LinkedHashMap<>();
         summary.put("quick", quick);
         Map<String, Object> perStudy = new LinkedHashMap<>();
         summary.put("studies", perStudy);
         long start = System.nanoTime();
-        for (Study s : chosen) {
-            long t0 = System.nanoTime();
-            StudyTable table = s.run(quick, new ProgressBar(err, "handsim tradeoff " + s.id()));
-            TradeoffChart.write(table, out);
-            double secs = (System.nanoTime() - t0) / 1e9;
-            Map<String, Object> m = new LinkedHashMap<>();
-            m.put("rows", table.rows().size());
-            m.put("wall_time_s", secs);
-            m.put("files", List.of(s.id() + ".png", s.id() + ".svg", s.id() + ".csv"));
-            m.put("notes", new ArrayList<>(table.notes().values()));   // the chart's caption: for the docs, not under the plot
-            perStudy.put(s.id(), m);
-            stdout.println(String.format(Locale.ROOT, "%s: %d settings in %.1f s -> %s/%s.{png,svg,csv}",
-                s.id(), table.rows().size(), secs, out, s.id()));
-            stdout.flush();
+        String missing = null;   // once the charts cannot be drawn, the other studies write their tables only
+        // every file goes to the set's private folder; the folder gets them all, or none, at the end
+        try (OutputSet set = Args.outputSet(err, "--out", out, layout())) {
+            Phase.reach("opened");
+            for (Study s : chosen) {
+                long t0 = System.nanoTime();
+                StudyTable table = s.run(quick, Phase.atHalf("half-" + s.id(), new ProgressBar(err, "handsim tradeoff " + s.id())));
+                table.writeCsv(set.dir().resolve(s.id() + ".csv"));
+                if (missing == null) {
+                    ChartSet charts = ChartSet.start(null);   // drawn before the next study starts: its timings see an idle machine
+                    charts.add(set.dir().resolve(s.id()), TradeoffChart.WIDTH, TradeoffChart.HEIGHT, () -> TradeoffChart.create(table));
+                    missing = Charts.finish(charts, err);
+                }
+                double secs = (System.nanoTime() - t0) / 1e9;
+                Map<String, Object> m = new LinkedHashMap<>();
+                m.put("rows", table.rows().size());
+                m.put("wall_time_s", secs);
+                m.put("files", missing == null ? List.of(s.id() + ".png", s.id() + ".svg", s.id() + ".csv") : List.of(s.id() + ".csv"));
+                m.put("notes", new ArrayList<>(table.notes().values()));   // the chart's caption: for the docs, not under the plot
+                perStudy.put(s.id(), m);
+                stdout.println(String.format(Locale.ROOT, "%s: %d settings in %.1f s -> %s/%s.%s",
+                    s.id(), table.rows().size(), secs, out, s.id(), missing == null ? "{png,svg,csv}" : "csv"));
+                stdout.flush();
+                Phase.reach("study-" + s.id());
+            }
+            summary.put("wall_time_s", (System.nanoTime() - start) / 1e9);
+            if (missing != null) summary.put(Charts.MISSING_KEY, missing);
+            AtomicFile.writeString(set.dir().resolve("tradeoff.json"), JsonWriter.pretty(summary));
+            set.publish();
         }
-        summary.put("wall_time_s", (System.nanoTime() - start) / 1e9);
-        AtomicFile.writeString(out.resolve("tradeoff.json"), JsonWriter.pretty(summary));
         return 0;
+    }
+
+    /** The files of the tradeoff folder, every study's (a run of some studies removes the others'): tradeoff.json is published last. */
+    static OutputSet.Layout layout() {
+        List<String> ids = new ArrayList<>();
+        for (Supplier<Study> s : Studies.ALL) ids.add(java.util.regex.Pattern.quote(s.get().id()));
+        return new OutputSet.Layout("tradeoff.json", "tradeoff\\.json|(" + String.join("|", ids) + ")\\.(png|svg|csv)");
     }
 
     private List<Study> choose() {

@@ -52,6 +52,8 @@ public final class DynamicsPanel {
     private static final String[] GRAVITY = {"-z (palm up)", "-x (hand on its side)", "+z (palm down)", "-y", "+y", "+x", "none", "custom"};
     private static final double[][] GRAVITY_VECTORS = {{0, 0, -9.81}, {-9.81, 0, 0}, {0, 0, 9.81}, {0, -9.81, 0}, {0, 9.81, 0}, {9.81, 0, 0}, {0, 0, 0}};
     private static final String[] COLUMNS = {"k", "clutch", "τk1", "τk2", "τk3", "cont.", "force", "break"};
+    /** The widest texts each column shows (space-separated), for its width. */
+    private static final String[] WIDEST = {"3", "STALLED BLOCKED BROKEN", "-9.999", "-9.999", "-9.999", "99", "999.99", "10.0000"};
     /** Column names in {@link #tableLines()} (the script's log). */
     private static final String[] KEYS = {"finger", "clutch", "tau1_Nm", "tau2_Nm", "tau3_Nm", "contacts", "force_N", "breakaway_s"};
 
@@ -99,13 +101,20 @@ public final class DynamicsPanel {
         g.add(Widgets.button("dyn.applyGravity", "Apply gravity", this::applyGravity), Widgets.at(0, 2, 3));
         panel.add(g);
 
-        JTable t = new JTable(table);
+        JTable t = new JTable(table) {
+            private static final long serialVersionUID = 1L;
+
+            // fill the width when the columns fit, else keep their widths and scroll sideways
+            @Override
+            public boolean getScrollableTracksViewportWidth() {
+                return getParent() == null || getPreferredSize().width <= getParent().getWidth();
+            }
+        };
         t.setName("dyn.table");
         t.setFont(Widgets.small());
         t.getTableHeader().setFont(Widgets.small());
         t.setRowHeight(18);
-        int[] widths = {18, 64, 42, 42, 42, 50, 42, 62};
-        for (int c = 0; c < widths.length; c++) t.getColumnModel().getColumn(c).setPreferredWidth(widths[c]);
+        sizeColumns(t);
         JScrollPane sp = new JScrollPane(t);
         sp.setPreferredSize(new Dimension(340, 80));
         JPanel tp = Widgets.titled(new JPanel(new BorderLayout()), "Per finger (live): τ N·m, force N, breakaway s");
@@ -134,6 +143,26 @@ public final class DynamicsPanel {
         JPanel ep = Widgets.titled(new JPanel(new BorderLayout()), "Events");
         ep.add(new JScrollPane(events), BorderLayout.CENTER);
         panel.add(ep);
+    }
+
+    /**
+     * Sizes each column of the table for the widest text it shows — its header, or a sample of
+     * its widest value ("BLOCKED", "-9.999" N·m, "999.99" N, "10.0000" s) as the table's own
+     * renderers draw them — so that no value is cut to "-0.0…"; the eight columns need about
+     * 320 px, which the panel has.
+     */
+    static void sizeColumns(JTable t) {
+        for (int c = 0; c < COLUMNS.length; c++) {
+            javax.swing.table.TableCellRenderer head = t.getTableHeader().getDefaultRenderer();
+            int w = head.getTableCellRendererComponent(t, COLUMNS[c], false, false, -1, c).getPreferredSize().width;
+            for (String sample : WIDEST[c].split(" ")) {
+                w = Math.max(w, t.getDefaultRenderer(Object.class).getTableCellRendererComponent(t, sample, false, false, 0, c).getPreferredSize().width);
+            }
+            w += t.getIntercellSpacing().width + 1;   // the grid line, and a pixel of air
+            javax.swing.table.TableColumn col = t.getColumnModel().getColumn(c);
+            col.setMinWidth(w);
+            col.setPreferredWidth(w);
+        }
     }
 
     private static JLabel graspLabel(String name) {

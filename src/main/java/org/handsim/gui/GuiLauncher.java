@@ -49,6 +49,8 @@ public final class GuiLauncher {
         long start = System.nanoTime();
         ErrorLog errors = new ErrorLog().install();
         AtomicReference<HandSimWindow> ref = new AtomicReference<>();
+        // before the first window, so that a lost X server never meets JOGL's fatal handler
+        if (!X11Exit.prepare() && X11Exit.lastProblem() != null) err.println("handsim gui: " + X11Exit.lastProblem());
         try {
             MeshSource.Model[] hand = HandSimPanel.loadHand();   // off the EDT (MeshSource)
             ScriptRunner.edt(() -> {
@@ -67,7 +69,7 @@ public final class GuiLauncher {
         HandSimWindow w = ref.get();
         long deadline = System.currentTimeMillis() + FIRST_FRAME_TIMEOUT_MS;
         while (w.view().framesRendered() == 0 && System.currentTimeMillis() < deadline) Thread.sleep(5);
-        // JOGL is initialised now: a lost X server should end the program, not abort the JVM
+        // in case prepare() could not (JOGL initialised by Java3D only now): a lost X server should end the program, not abort the JVM
         if (!X11Exit.restoreIoErrorHandler()) err.println("handsim gui: " + X11Exit.lastProblem());
         if (w.view().framesRendered() == 0) {
             err.println("handsim gui: no frame was rendered within " + FIRST_FRAME_TIMEOUT_MS / 1000 + " s (OpenGL not working?)");
@@ -94,6 +96,8 @@ public final class GuiLauncher {
             return 0;
         }
         int code = 0;
+        // the model moves only while the script plays or waits (SimulationRunner.hold)
+        w.runner().hold(true);
         try {
             if (o.object() != null) runner.importObject(o.object().toAbsolutePath());
             if (o.script() != null) runner.run(o.script());

@@ -36,7 +36,9 @@ import org.handsim.sim.Scenario;
  * {@link #create} reads the hand's meshes and must not run on the event dispatch thread; every
  * other method runs on the event dispatch thread. Step listeners are called there too, each time
  * the view shows a newer state of the model (at most every {@value #TICK_MS} ms: the model may
- * have taken many steps in between; {@link SimulationRunner.State} says where it is).
+ * have taken many steps in between; {@link SimulationRunner.State} says where it is). The first
+ * state a listener sees may have no model yet ({@code s.snapshot() == null}, before the model
+ * thread has built it); {@code s.time()} is 0 then.
  * {@link #dispose()} stops the model's thread and Java3D's. The grasp of the model (force
  * closure, ε, volume, hold), evaluated live off both threads: {@code runner().grasp().latest()}
  * ({@link LiveGrasp}); the friction cones: {@code view().setVisible(SceneView.Part.CONES, true)}.
@@ -71,11 +73,14 @@ public class HandSimPanel extends JPanel {
 
     /**
      * Reads the hand's meshes and builds a panel showing {@code scenario} at t = 0 (paused).
-     * Call it from any thread but the event dispatch thread (the meshes are read here).
+     * Call it from any thread but the event dispatch thread (the meshes are read here). On X11
+     * it first initialises JOGL and replaces its fatal X I/O error handler
+     * ({@link X11Exit#prepare()}).
      *
      * @throws IOException naming the file if a hand mesh cannot be read
      */
     public static HandSimPanel create(Scenario scenario) throws IOException, InterruptedException {
+        X11Exit.prepare();   // before the first window: a lost X server must not abort the program
         MeshSource.Model[] hand = loadHand();
         try {
             return ScriptRunner.edt(() -> new HandSimPanel(scenario, hand));
@@ -193,6 +198,9 @@ public class HandSimPanel extends JPanel {
 
     boolean previewing() { return preview != null; }
 
+    /** The publication of the state the view and the listeners were last given (-1: none yet). */
+    long shownPublication() { return shownPublication; }
+
     /** Completes when the working scenario's object is in the view (at once if it already is). */
     public CompletableFuture<MeshSource.Model> objectReady() { return objectLoad; }
 
@@ -236,14 +244,36 @@ public class HandSimPanel extends JPanel {
         return done;
     }
 
-    /** One tick of the view: the newest state into the 3D view, then the listeners. */
+    /**
+     * One tick of the view: the newest state into the 3D view, then the listeners and hooks. An
+     * exception from one of them is reported (the thread's uncaught-exception handler: the
+     * window's error log) and the others still run: a coalescing {@code javax.swing.Timer}
+     * whose action throws is never fired again, which would freeze the view for good.
+     */
     void tick() {
         SimulationRunner.State s = runner.latest();
         if (s.publication() != shownPublication) {
             shownPublication = s.publication();
             if (s.snapshot() != null && preview == null && s.scenario() != null) view.show(Pose.of(s.snapshot(), s.scenario().worldFromPalm()));
-            for (StepListener l : listeners) l.stepped(s);
+            for (StepListener l : listeners) {
+                try {
+                    l.stepped(s);
+                } catch (RuntimeException e) {
+                    report(e);
+                }
+            }
         }
-        for (Runnable r : tickHooks) r.run();
+        for (Runnable r : tickHooks) {
+            try {
+                r.run();
+            } catch (RuntimeException e) {
+                report(e);
+            }
+        }
+    }
+
+    private static void report(RuntimeException e) {
+        Thread t = Thread.currentThread();
+        t.getUncaughtExceptionHandler().uncaughtException(t, e);
     }
 }

@@ -148,7 +148,7 @@ public final class HandSimWindow {
         sim.addStepListener(this::update);
         sim.addTickHook(this::tickCharts);
         sim.addTickHook(this::tickGrasp);
-        charts.setDuration(scenario.duration());
+        charts.setDuration(org.handsim.sim.HandModel.endTime(scenario));   // the time label's end, handsim run's
 
         frame = new JFrame("HandSim — BarrettHand simulator");
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
@@ -383,7 +383,7 @@ public final class HandSimWindow {
     public void load(Scenario s) {
         sim.load(s);
         sim.setSpeed(speedFactor());
-        charts.setDuration(s.duration());
+        charts.setDuration(org.handsim.sim.HandModel.endTime(s));
         objects.showPlacement(s.object());
         kinematics.previewChanged();
     }
@@ -479,10 +479,10 @@ public final class HandSimWindow {
         if (interactive) JOptionPane.showMessageDialog(frame, message, title, JOptionPane.ERROR_MESSAGE);
     }
 
-    /** Regions of the window (relative to its top-left corner) for screenshot checks: view, charts, status bar. */
+    /** Regions of the window (relative to its top-left corner) for screenshot checks: view, charts, status bar, tool panel. */
     public List<Rectangle> regions() {
         List<Rectangle> r = new ArrayList<>();
-        for (Component c : new Component[] {sim.view().canvas(), charts.panel(), status.getParent()}) {
+        for (Component c : new Component[] {sim.view().canvas(), charts.panel(), status.getParent(), toolPanel}) {
             java.awt.Point p = SwingUtilities.convertPoint(c.getParent(), c.getLocation(), frame);
             r.add(new Rectangle(p.x, p.y, c.getWidth(), c.getHeight()));
         }
@@ -653,14 +653,13 @@ public final class HandSimWindow {
     private void update(SimulationRunner.State s) {
         if (s.generation() != shownGeneration) {
             shownGeneration = s.generation();
-            charts.setDuration(s.scenario() != null ? s.scenario().duration() : 0);
+            charts.setDuration(s.scenario() != null ? org.handsim.sim.HandModel.endTime(s.scenario()) : 0);
             if (!s.warnings().isEmpty() && s.origin() == SimulationRunner.Origin.LOADED) warning(String.join("; ", s.warnings()));
         }
         dynamics.update(s);
         sim.runner().drainEvents(dynamics::event);
         kinematics.follow(s);
-        double duration = s.scenario() == null ? 0 : s.scenario().duration();
-        time.setText(String.format(Locale.ROOT, "t = %.3f s / %.3f s", Math.min(s.time(), duration), duration));
+        time.setText(timeText(s));
         runState.setText(runState(s));
         runState.setForeground(s.error() != null ? Widgets.ERROR : Color.DARK_GRAY);
         if (!Objects.equals(s.error(), shownError)) {
@@ -671,6 +670,15 @@ public final class HandSimWindow {
             shownNote = s.note();
             if (s.note() != null) status(s.note(), true);
         }
+    }
+
+    /**
+     * The time label: the model's time and the time its run ends, both step × dt in decimal and
+     * written as {@code handsim run} writes them ({@code t = 2.500 s / 8.947 s}).
+     */
+    static String timeText(SimulationRunner.State s) {
+        double end = s.scenario() == null ? 0 : org.handsim.sim.HandModel.endTime(s.scenario());
+        return String.format(Locale.ROOT, "t = %.3f s / %.3f s", s.time(), end);
     }
 
     /** The run state in words (the status bar's right end). */
@@ -698,6 +706,22 @@ public final class HandSimWindow {
     private void tickGrasp() {
         LiveGrasp.Result g = sim.runner().grasp().latest();
         if (g != null && g.serial() != shownGraspSerial && dynamics.grasp(g)) shownGraspSerial = g.serial();
+    }
+
+    /**
+     * Whether every readout shows the newest state of the model: the view, panels, labels and
+     * table were given the newest published state, and the Dynamics panel's Grasp box the
+     * newest evaluation — which, for a model at rest, must be of the state shown (its
+     * generation and time; {@link LiveGrasp} evaluates a resting model's grasp at its time).
+     * Scripts wait for it before a screenshot or a log ({@link ScriptRunner#settle()}).
+     */
+    boolean settled() {
+        SimulationRunner.State s = sim.state();
+        if (sim.shownPublication() != s.publication()) return false;
+        LiveGrasp.Result g = sim.runner().grasp().latest();
+        if (g != null && g.serial() != shownGraspSerial) return false;
+        if (s.playing() || s.snapshot() == null) return true;
+        return g != null && g.generation() == s.generation() && (g.assessment() == null || g.assessment().timeS() == s.time());
     }
 
     /** Runs the view update now and draws the charts (scripts call it before a screenshot). */

@@ -2,6 +2,8 @@ package org.handsim.gui;
 
 import java.awt.BorderLayout;
 import java.awt.GridBagLayout;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
@@ -34,8 +36,16 @@ import org.handsim.sim.trajectory.Hold;
  * field) recomputes the others, so a joint angle typed in is rounded to what the one motor can
  * do. The view shows the pose at once ({@link HandSimWindow#preview}, which pauses the
  * simulation); <i>Use as start pose</i> makes every motor hold these counts in the working
- * scenario. While the simulation plays, the sliders follow the motors (and show where they
- * ended when the run is over).
+ * scenario.
+ *
+ * <h2>Following the model</h2>
+ * Whenever the view shows a state of the model (while it plays, and after a pause, a step, a
+ * reset, a load or the end of the run) the panel shows that same state, finger by finger:
+ * the motor counts and spread of the published {@link org.handsim.sim.Snapshot}, and the joint
+ * angles the model has — not the coupled angles of the counts, which a finger whose clutch has
+ * broken away or stalled no longer has (after a breakaway θk2 stays where the link met the
+ * object while the motor winds θk3 on). Editing a value shows the FREE finger's pose of it
+ * again, as above, until the model is shown once more (Play, Step, Reset).
  *
  * <h2>Inverse: fingertip target → joints</h2>
  * A target in the palm frame {P} (metres) is solved in closed form with the joint limits
@@ -49,8 +59,8 @@ import org.handsim.sim.trajectory.Hold;
  * <p>Script names: {@code fk1.counts}, {@code fk1.theta2}, {@code fk1.theta3},
  * {@code fk1.slider} (and 2, 3), {@code fk.spread.counts}, {@code fk.spread.theta11},
  * {@code fk.spread.slider}, buttons {@code fk.apply}; {@code ik.finger}, {@code ik.x},
- * {@code ik.y}, {@code ik.z}, buttons {@code ik.solve}, {@code ik.apply}. Event dispatch thread
- * only.
+ * {@code ik.y}, {@code ik.z}, buttons {@code ik.solve}, {@code ik.apply}; the script's
+ * {@code log kinematics} prints the values shown ({@link #lines()}). Event dispatch thread only.
  *
  * <p>Every pose shown (forward or inverse) is collided with the object as the simulation would
  * collide it: its contacts are drawn and a pose that touches the object is warned about.
@@ -64,7 +74,10 @@ public final class KinematicsPanel {
     private final JTextField[] counts = new JTextField[4];
     private final JTextField[] theta2 = new JTextField[3], theta3 = new JTextField[3];
     private JTextField theta11;
+    /** Motor counts shown, M1..M4. */
     private final double[] q = new double[4];
+    /** Joint angles shown per finger, θk1..θk3 in radians (the model's, or the FREE finger's of q). */
+    private final double[][] angles = new double[3][];
     private boolean syncing;
     private final JComboBox<String> ikFinger = new JComboBox<>(new String[] {"1", "2", "3"});
     private final JTextField ikX, ikY, ikZ;
@@ -146,6 +159,7 @@ public final class KinematicsPanel {
         s.addChangeListener(e -> {
             if (syncing) return;
             q[m] = s.getValue();
+            coupled();
             showValues();
             showPose();
         });
@@ -154,10 +168,18 @@ public final class KinematicsPanel {
 
     private void setAll(Scenario s) {
         for (int m = 0; m < 4; m++) q[m] = s.startCounts(m);
+        coupled();
         showValues();
     }
 
-    /** Writes q into every slider and field without triggering their listeners. */
+    /** The angles of FREE fingers at the counts q (eqs 1–4): what an edited value moves the hand to. */
+    private void coupled() {
+        for (int k = 1; k <= 3; k++) {
+            angles[k - 1] = tr.joints(k, q[k - 1], q[3], null);
+        }
+    }
+
+    /** Writes q and the angles into every slider and field without triggering their listeners. */
     private void showValues() {
         syncing = true;
         try {
@@ -166,13 +188,29 @@ public final class KinematicsPanel {
                 counts[m].setText(Widgets.fmt(q[m], 0));
             }
             for (int m = 0; m < 3; m++) {
-                theta2[m].setText(Widgets.fmt(tr.innerDegrees(q[m]), 2));
-                theta3[m].setText(Widgets.fmt(tr.outerDegrees(q[m]), 2));
+                theta2[m].setText(degrees(angles[m][1]));
+                theta3[m].setText(degrees(angles[m][2]));
             }
-            theta11.setText(Widgets.fmt(Math.toDegrees(tr.spreadAngle(1, q[3])), 2));
+            theta11.setText(degrees(angles[0][0]));
         } finally {
             syncing = false;
         }
+    }
+
+    /**
+     * What the panel shows, one line per finger (the script's {@code log kinematics}):
+     * {@code finger 3: M3 9479 counts, θ31 0.00°, θ32 47.72°, θ33 30.06°} — the counts and
+     * θk2, θk3 as their fields show them; θk1 from the spread field (θ11 as shown, θ21 = −θ11,
+     * θ31 = 0).
+     */
+    public List<String> lines() {
+        List<String> out = new ArrayList<>();
+        for (int k = 1; k <= 3; k++) {
+            String spread = k == 1 ? theta11.getText() : degrees(angles[k - 1][0]);
+            out.add(String.format(Locale.ROOT, "finger %d: M%d %s counts, θ%d1 %s°, θ%d2 %s°, θ%d3 %s°", k, k, counts[k - 1].getText(),
+                k, spread, k, theta2[k - 1].getText(), k, theta3[k - 1].getText()));
+        }
+        return out;
     }
 
     private void commitCounts(int m) {
@@ -183,6 +221,7 @@ public final class KinematicsPanel {
             if (v < 0 || v > max) throw new IllegalArgumentException((m == 3 ? "spread" : "finger " + (m + 1)) + " counts must be in [0, " + (int) max + "], got " + v);
             if (counts[m].getText().trim().equals(Widgets.fmt(q[m], 0))) return;   // nothing edited
             q[m] = Math.round(v);
+            coupled();
             showValues();
             showPose();
         } catch (IllegalArgumentException e) {
@@ -201,9 +240,9 @@ public final class KinematicsPanel {
                 throw new IllegalArgumentException("θ" + (m + 1) + joint + " = " + deg + "° needs " + Math.round(c)
                     + " counts, outside [0, " + hand.fingerCountsMax() + "]");
             }
-            String shown = Widgets.fmt(joint == 2 ? tr.innerDegrees(q[m]) : tr.outerDegrees(q[m]), 2);
-            if (f.getText().trim().equals(shown)) return;   // nothing edited
+            if (f.getText().trim().equals(degrees(angles[m][joint - 1]))) return;   // nothing edited
             q[m] = Math.round(c);
+            coupled();
             showValues();
             showPose();
         } catch (IllegalArgumentException e) {
@@ -220,8 +259,9 @@ public final class KinematicsPanel {
             if (c < -1e-9 || c > hand.spreadCountsMax() + 1e-9) {
                 throw new IllegalArgumentException("θ11 = " + deg + "° needs " + Math.round(c) + " spread counts, outside [0, " + hand.spreadCountsMax() + "]");
             }
-            if (theta11.getText().trim().equals(Widgets.fmt(Math.toDegrees(tr.spreadAngle(1, q[3])), 2))) return;
+            if (theta11.getText().trim().equals(degrees(angles[0][0]))) return;   // nothing edited
             q[3] = Math.round(c);
+            coupled();
             showValues();
             showPose();
         } catch (IllegalArgumentException e) {
@@ -230,10 +270,16 @@ public final class KinematicsPanel {
         }
     }
 
+    /** The joint angles shown, radians (the FREE fingers' of q after an edit, the model's when following it). */
     private double[][] joints() {
         double[][] j = new double[3][];
-        for (int k = 1; k <= 3; k++) j[k - 1] = tr.joints(k, q[k - 1], q[3], null);
+        for (int k = 0; k < 3; k++) j[k] = angles[k].clone();
         return j;
+    }
+
+    /** An angle in radians as its field shows it: degrees, two decimals. */
+    private static String degrees(double rad) {
+        return Widgets.fmt(Math.toDegrees(rad), 2);
     }
 
     private void showPose() {
@@ -309,10 +355,18 @@ public final class KinematicsPanel {
         window.status("start pose set: every motor holds these counts (Path Planning plans from here)", false);
     }
 
-    /** Follows the motors while the simulation plays (called by the window's view update). */
+    /**
+     * Shows the model's state (called by the window's view update with each state the view
+     * shows, playing or not): each finger's motor counts and joint angles, the spread. Not while
+     * the panel's own pose is previewed.
+     */
     void follow(SimulationRunner.State s) {
-        if (s.snapshot() == null || !(s.playing() || s.finished()) || window.simulator().previewing()) return;
-        for (int k = 0; k < 3; k++) q[k] = s.snapshot().fingers()[k].motorCounts();
+        if (s.snapshot() == null || window.simulator().previewing()) return;
+        for (int k = 0; k < 3; k++) {
+            org.handsim.sim.Snapshot.FingerSnapshot f = s.snapshot().fingers()[k];
+            q[k] = f.motorCounts();
+            angles[k] = f.joints().clone();
+        }
         q[3] = s.snapshot().spreadCounts();
         showValues();
     }
@@ -367,6 +421,7 @@ public final class KinematicsPanel {
         }
         q[lastReachFinger - 1] = lastReach.qMk();
         if (lastReachFinger != 3) q[3] = lastReach.qM4();
+        coupled();
         showValues();
         showPose();
     }

@@ -26,7 +26,8 @@ import org.handsim.sim.HandModel;
  *       each about 1–15 ms), evaluates it, and publishes the result, an immutable
  *       {@link Result}, with a volatile write. The last copy offered is always evaluated (a
  *       trailing-edge throttle): when the run ends or pauses, what the panel shows is the grasp
- *       of the state shown, within ~0.1 s.</li>
+ *       of the state shown, within ~0.1 s, evaluated at its time (a model at rest is always
+ *       handed on, see {@link #offer(long, HandModel, double, int, boolean)}).</li>
  *   <li>The window reads {@link #latest()} on its timer and shows it when it is of the model
  *       generation on screen.</li>
  * </ol>
@@ -78,8 +79,22 @@ public final class LiveGrasp implements AutoCloseable {
      * @param edges      the scenario's friction-cone edges m
      */
     void offer(long generation, HandModel model, double mu, int edges) {
+        offer(generation, model, mu, edges, false);
+    }
+
+    /**
+     * Offers the model's grasp; {@code resting} says the model stopped here (paused, finished,
+     * stepped, reset, loaded): then the copy is handed on unless the last one was of this very
+     * state, so that what the panel shows is evaluated at the time shown — not at whichever
+     * publication first saw these contacts, which depends on how the run's steps were batched
+     * (scripted runs of one script then show one readout).
+     */
+    void offer(long generation, HandModel model, double mu, int edges, boolean resting) {
         Job j = new Job(generation, GraspAssessment.Input.of(model), mu, edges);
-        if (lastOffered != null && sameGrasp(lastOffered, j)) return;
+        if (lastOffered != null && sameGrasp(lastOffered, j)
+            && (!resting || Double.compare(lastOffered.input().timeS(), j.input().timeS()) == 0)) {
+            return;
+        }
         lastOffered = j;
         mailbox.set(j);
         LockSupport.unpark(thread);

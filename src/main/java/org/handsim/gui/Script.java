@@ -42,7 +42,8 @@ import org.handsim.sim.ClutchState;
  *                           end) and wait; if it is there already, pause there
  * speed FACTOR | max        simulation speed: 1 = real time, max = as fast as possible
  * wait MS                   wait MS milliseconds of wall time
- * screenshot FILE           save the whole window as PNG
+ * screenshot FILE           save the whole window as PNG, after waiting until every live readout
+ *                           shows the model's state (the Grasp box evaluated at the time shown)
  * show hand|object|contacts|normals|cones on|off   show or hide a part of the 3D scene (cones:
  *                           the friction cones at the contacts, as View ▸ Friction cones)
  * assert-state FINGER S1[|S2...]       fail unless finger 1..3's clutch is in one of the
@@ -59,8 +60,15 @@ import org.handsim.sim.ClutchState;
  *                                      evaluation of the state shown)
  * log contacts              print each contact of the state shown: finger, point (world, m)
  *                           and where the 3D view draws it (pixels in the window)
+ * log kinematics            print what the Kinematics panel shows, one line per finger:
+ *                           {@code kinematics: finger 3: M3 9479 counts, θ31 0.00°, θ32 47.72°, θ33 30.06°}
+ *                           (the model's state at the time shown; every log first waits, as a
+ *                           screenshot does, until the readouts show the model's state)
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
+ * While a script runs, the model moves only during {@code play} and {@code wait}: a button that
+ * starts a run (Path Planning's Run, Run with dynamics, the Space key) leaves it where it is
+ * until then ({@link SimulationRunner#hold}), so that a script gives one state on any machine.
  * Output lines start with {@code gui: }. An unknown verb or a bad argument is an error naming
  * the file and line ({@link ScriptException}; the command exits with code 2); a failing
  * {@code assert-*} or an action that cannot be done exits with code 1.
@@ -96,13 +104,19 @@ public final class Script {
         + "  play T|end           play until simulated time T s (or the end), and wait%n"
         + "  speed FACTOR|max     1 = real time, max = as fast as possible%n"
         + "  wait MS              wait MS milliseconds%n"
-        + "  screenshot FILE      save the whole window as PNG%n"
+        + "  screenshot FILE      save the whole window as PNG, once every readout shows%n"
+        + "                       the model's state (the Grasp box evaluated at its time)%n"
         + "  show hand|object|contacts|normals|cones on|off%n"
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
-        + "  log dynamics|state|events|ik|charts|grasp|contacts%n"
+        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics   print what a%n"
+        + "                       panel shows, once it shows the model's state%n"
+        + "                       (kinematics, per finger: 'M3 9479 counts, θ31 0.00°,%n"
+        + "                       θ32 47.72°, θ33 30.06°')%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
+        + "The model moves only while play or wait runs (a button that starts a run, e.g.%n"
+        + "press path.run, leaves it at t = 0 until then): one script, one state.%n"
         + "Exit codes: 0 done; 2 bad script (FILE:LINE named); 1 an action failed or an%n"
         + "exception reached the event dispatch thread; 4 the simulation stopped on its%n"
         + "numerical guard. Field and button names: the Javadoc of each panel class.";
@@ -283,8 +297,8 @@ public final class Script {
                 return List.of(p[0], p[1]);
             }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp or contacts, got '" + rest + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts or kinematics, got '" + rest + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

@@ -123,7 +123,16 @@ public final class ScriptRunner {
                 edt(() -> { window.setSpeed(f); return null; });
                 break;
             }
-            case WAIT: Thread.sleep(Long.parseLong(a.arg(0))); break;
+            case WAIT: {
+                boolean held = window.runner().held();
+                window.runner().hold(false);   // a playing model goes on meanwhile
+                try {
+                    Thread.sleep(Long.parseLong(a.arg(0)));
+                } finally {
+                    window.runner().hold(held);
+                }
+                break;
+            }
             case SCREENSHOT: screenshot(resolveOut(a.arg(0))); break;
             case SHOW: {
                 SceneView.Part p = SceneView.Part.valueOf(a.arg(0).toUpperCase(Locale.ROOT));
@@ -367,7 +376,20 @@ public final class ScriptRunner {
             hidden = b;
         }
         throw new ScriptFailure(hidden != null ? "the button '" + label + "' is not on screen (open its panel first)"
-            : "no button '" + label + "'", 1);
+            : "no button '" + label + "' (buttons on screen: " + String.join(", ", buttonNames(all)) + ")", 1);
+    }
+
+    /** The buttons on screen as {@code press} knows them: the label, and the name when it differs ("Solve (ik.solve)"). */
+    private static List<String> buttonNames(List<AbstractButton> all) {
+        List<String> names = new ArrayList<>();
+        for (AbstractButton b : all) {
+            if (!b.isShowing() || b instanceof javax.swing.JMenu) continue;
+            String text = b.getText() == null ? "" : b.getText().trim(), name = b.getName();
+            String shown = text.isEmpty() ? name : name == null || name.equalsIgnoreCase(text) || name.equalsIgnoreCase("tool." + text) ? text
+                : text + " (" + name + ")";
+            if (shown != null && !names.contains(shown)) names.add(shown);
+        }
+        return names;
     }
 
     private void set(String name, String value) throws ScriptFailure {
@@ -437,6 +459,18 @@ public final class ScriptRunner {
         long frames0 = window.view().framesRendered(), wall0 = System.nanoTime();
         edt(() -> { window.playUntil(target); return null; });
         r.sync();
+        boolean held = r.held();
+        r.hold(false);
+        try {
+            playing(r, wall0, frames0);
+        } finally {
+            r.hold(held);
+        }
+    }
+
+    /** Waits while the model plays, then says where it stopped. */
+    private void playing(SimulationRunner r, long wall0, long frames0) throws Exception {
+        r.sync();   // after hold(false)'s re-anchoring
         long deadline = System.currentTimeMillis() + PLAY_TIMEOUT_MS;
         SimulationRunner.State s = r.latest();
         // probe the event dispatch thread: how late does a posted event run while the model plays?
@@ -459,9 +493,33 @@ public final class ScriptRunner {
             s.time(), s.finished() ? " (end of the scenario)" : "", wall, frames, frames / wall, worstLatency.get() / 1e6, probes));
     }
 
+    /** How long {@link #settle()} waits for the readouts before the action fails. */
+    static final long SETTLE_TIMEOUT_MS = 60_000;
+
+    /**
+     * Waits until every live readout shows the model's newest state ({@link HandSimWindow#settled()}):
+     * the model's queued commands done, every grasp offered evaluated ({@link LiveGrasp}, at
+     * most 10 a second on its own thread), the view, panels, time label, Dynamics table and
+     * Grasp box updated with them, the charts drawn. Screenshots and logs of one script then
+     * show one state whatever the machine's speed.
+     */
+    void settle() throws Exception {
+        SimulationRunner r = window.runner();
+        long deadline = System.currentTimeMillis() + SETTLE_TIMEOUT_MS;
+        while (true) {
+            r.sync();
+            r.grasp().awaitIdle();
+            if (edt(() -> { window.refreshNow(); return window.settled(); })) break;
+            if (System.currentTimeMillis() > deadline) {
+                throw new ScriptFailure("the window's readouts did not catch up with the model within " + SETTLE_TIMEOUT_MS / 1000 + " s", 1);
+            }
+            Thread.sleep(10);
+        }
+        window.charts().awaitDrawn();
+    }
+
     private void log(String what) throws Exception {
-        window.runner().sync();
-        edt(() -> { window.refreshNow(); return null; });
+        settle();
         switch (what) {
             case "dynamics":
                 for (String l : edt(() -> window.dynamics().tableLines())) say("dynamics: " + l);
@@ -473,9 +531,10 @@ public final class ScriptRunner {
                 for (String l : edt(() -> window.kinematics().ikText()).split("\n")) say("ik: " + l);
                 break;
             case "grasp":
-                window.runner().grasp().awaitIdle();
-                edt(() -> { window.refreshNow(); return null; });
                 say("grasp: " + edt(() -> window.dynamics().graspLine()));
+                break;
+            case "kinematics":
+                for (String l : edt(() -> window.kinematics().lines())) say("kinematics: " + l);
                 break;
             case "contacts": {
                 List<String> lines = edt(this::contactLines);
@@ -484,7 +543,6 @@ public final class ScriptRunner {
                 break;
             }
             case "charts": {
-                window.charts().awaitDrawn();
                 double[] r = window.charts().timeRange();
                 StringBuilder shown = new StringBuilder();
                 for (int k = 1; k <= 3; k++) if (window.charts().fingerVisible(k)) shown.append(shown.length() == 0 ? "" : ",").append(k);
@@ -505,14 +563,13 @@ public final class ScriptRunner {
     }
 
     /**
-     * Saves the whole window as PNG (atomically) and prints its size and the regions of the 3D
-     * view and the charts in window coordinates: {@code gui: screenshot FILE WxH view=x,y,w,h
-     * charts=x,y,w,h}.
+     * Saves the whole window as PNG (atomically), once every readout shows the model's state
+     * ({@link #settle()}), and prints its size and the regions of the 3D view, the charts, the
+     * status bar and the tool panel on the left in window coordinates: {@code gui: screenshot
+     * FILE WxH view=x,y,w,h charts=x,y,w,h status=x,y,w,h panel=x,y,w,h}.
      */
     public void screenshot(Path file) throws Exception {
-        window.runner().sync();
-        edt(() -> { window.refreshNow(); return null; });
-        window.charts().awaitDrawn();
+        settle();
         edt(() -> {
             window.frame().toFront();
             window.frame().getRootPane().paintImmediately(window.frame().getRootPane().getBounds());
@@ -529,8 +586,8 @@ public final class ScriptRunner {
         List<Rectangle> regions = edt(window::regions);
         BufferedImage img = window.capture();
         HandSimWindow.writePng(img, file);
-        say(String.format(Locale.ROOT, "screenshot %s %dx%d view=%s charts=%s status=%s", file, img.getWidth(), img.getHeight(),
-            rect(regions.get(0)), rect(regions.get(1)), rect(regions.get(2))));
+        say(String.format(Locale.ROOT, "screenshot %s %dx%d view=%s charts=%s status=%s panel=%s", file, img.getWidth(), img.getHeight(),
+            rect(regions.get(0)), rect(regions.get(1)), rect(regions.get(2)), rect(regions.get(3))));
     }
 
     private static String rect(Rectangle r) {

@@ -102,7 +102,7 @@ public final class SimulationRunner implements AutoCloseable {
     private final ConcurrentLinkedQueue<double[]> trace = new ConcurrentLinkedQueue<>();
     private final LiveGrasp grasp = new LiveGrasp();
     private volatile State latest;
-    private volatile boolean closed;
+    private volatile boolean closed, held;
 
     // simulation-thread state
     private Scenario scenario;
@@ -182,6 +182,21 @@ public final class SimulationRunner implements AutoCloseable {
         });
     }
 
+    /**
+     * Holds a playing model where it is ({@code true}) or lets it go on ({@code false}); commands
+     * still run (load, reset, step, play's target). A scripted window holds its model between
+     * actions so that it moves only while the script plays or waits: a button that starts a run
+     * (Path Planning's Run) then cannot carry the model past the time the next {@code play T}
+     * names, however slow the machine — one script, one state. Any thread.
+     */
+    public void hold(boolean on) {
+        held = on;
+        if (!on) commands.add(this::anchor);   // real-time pacing starts again from here, not from before the hold
+    }
+
+    /** Whether the model is held ({@link #hold}). */
+    public boolean held() { return held; }
+
     /** The newest published state (never null). */
     public State latest() { return latest; }
 
@@ -244,12 +259,12 @@ public final class SimulationRunner implements AutoCloseable {
     private void loop() {
         try {
             while (!closed) {
-                Runnable c = playing ? commands.poll() : commands.poll(100, TimeUnit.MILLISECONDS);
+                Runnable c = playing && !held ? commands.poll() : commands.poll(100, TimeUnit.MILLISECONDS);
                 while (c != null) {
                     c.run();
                     c = commands.poll();
                 }
-                if (playing) turn();
+                if (playing && !held) turn();
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -375,7 +390,7 @@ public final class SimulationRunner implements AutoCloseable {
             for (int k = 1; k <= 3; k++) br[k - 1] = model.breakawayTime(k);
             finished = !model.running();
             // before the state: whoever sees this state and then awaits the grasp gets its grasp
-            grasp.offer(generation, model, model.scenario().friction(), model.scenario().coneEdges());
+            grasp.offer(generation, model, model.scenario().friction(), model.scenario().coneEdges(), !playing);
         }
         latest = new State(generation, publication, scenario, snap, br, playing, finished, error, note, warnings, origin,
             model != null && model.recorder() != null);

@@ -31,6 +31,10 @@
  *   <li><b>Nothing slow on the EDT.</b> Stepping, the grasp evaluation, and reading VRML files
  *       run on other threads; the EDT never waits for the model. Scripts run on their own thread and reach the EDT
  *       with {@code invokeAndWait}.</li>
+ *   <li><b>Scripts see one state.</b> A scripted window holds its model between actions
+ *       ({@link org.handsim.gui.SimulationRunner#hold}: it steps only during {@code play} and
+ *       {@code wait}), and a screenshot or log waits until every readout shows the newest state
+ *       ({@code ScriptRunner.settle}), so one script gives one picture on any machine.</li>
  *   <li><b>Errors are shown, not lost.</b> A {@code SimulationException} stops the run and
  *       appears in the status bar and a dialog; uncaught exceptions (on the EDT or elsewhere)
  *       are recorded by {@link org.handsim.gui.ErrorLog} and make a scripted run fail.</li>

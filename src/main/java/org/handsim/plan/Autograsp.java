@@ -85,11 +85,12 @@ public final class Autograsp {
         double[] c = hc.objectCentroid();
         double d0 = hc.objectReach() + hc.handReach(spreadCounts, fingerCounts) + 1e-3;
         int queries = 0;
+        double[] w = rot.toArray();          // the pose of each test: this rotation, the translation set per test
         double clear = d0, hit = Double.NaN;
         for (double d = d0 - STEP_M; ; d -= STEP_M) {
             if (d < 0) d = 0;
             queries++;
-            if (hc.touches(pose(c, a, r, d), spreadCounts, fingerCounts)) {
+            if (hc.touches(place(w, c, a, d), spreadCounts, fingerCounts)) {
                 hit = d;
                 break;
             }
@@ -101,7 +102,7 @@ public final class Autograsp {
             while (clear - hit > TOL_M) {
                 double mid = 0.5 * (clear + hit);
                 queries++;
-                if (hc.touches(pose(c, a, r, mid), spreadCounts, fingerCounts)) hit = mid; else clear = mid;
+                if (hc.touches(place(w, c, a, mid), spreadCounts, fingerCounts)) hit = mid; else clear = mid;
             }
         }
         double d = touched ? clear + standoff : 0;
@@ -111,5 +112,16 @@ public final class Autograsp {
 
     private static RigidTransform pose(double[] c, double[] a, double[] r, double d) {
         return RigidTransform.fromPose(c[0] - d * a[0], c[1] - d * a[1], c[2] - d * a[2], r[0], r[1], r[2]);
+    }
+
+    /**
+     * {@link #pose} into {@code w}, which holds its rotation already ({@link RigidTransform#fromPose}
+     * makes the rotation from r alone and stores the translation as given: the same 12 numbers).
+     */
+    private static double[] place(double[] w, double[] c, double[] a, double d) {
+        w[3] = c[0] - d * a[0];
+        w[7] = c[1] - d * a[1];
+        w[11] = c[2] - d * a[2];
+        return w;
     }
 }

@@ -14,6 +14,7 @@ import java.util.PriorityQueue;
 import java.util.function.Consumer;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
+import org.handsim.util.Phase;
 
 /**
  * The outputs of a plan (contracts, README), fed one {@link TrialResult} at a time in trial
@@ -33,6 +34,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         .thenComparingInt(TrialResult::index);
 
     private final Path dir;
+    private final Path published;
     private final TrialRunner scenarios;
     private final AtomicFile csv;
     private final Writer w;
@@ -49,7 +51,19 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
      * @param progress  told the number of rows written after each row (may be null)
      */
     public PlanOutput(Path dir, TrialRunner scenarios, Consumer<Integer> progress) throws IOException {
+        this(dir, dir, scenarios, progress);
+    }
+
+    /**
+     * @param dir       where the files are written (a private folder of {@link org.handsim.util.OutputSet})
+     * @param published the plan folder they will be read from: the best grasps name the object
+     *                  file relative to {@code published/best/}
+     * @param scenarios writes the best trials as scenarios (a runner of the same spec)
+     * @param progress  told the number of rows written after each row (may be null)
+     */
+    public PlanOutput(Path dir, Path published, TrialRunner scenarios, Consumer<Integer> progress) throws IOException {
         this.dir = dir;
+        this.published = published;
         this.scenarios = scenarios;
         this.progress = progress;
         this.directions = new DirectionMap(scenarios.spec().trials());   // cells sized to the trial count
@@ -95,21 +109,25 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         PlanSpec spec = scenarios.spec();
         if (rows != spec.trials()) throw new IllegalStateException(rows + " rows for " + spec.trials() + " trials");
         csv.commit();
+        Phase.reach("table");
         List<TrialResult> top = bestFirst();
         Path bestDir = dir.resolve("best");
         Files.createDirectories(bestDir);
-        try (DirectoryStream<Path> old = Files.newDirectoryStream(bestDir, "[0-9][0-9].json")) {
-            for (Path p : old) Files.delete(p);
+        if (dir.equals(published)) {   // written in place: the previous plan's best grasps go first
+            try (DirectoryStream<Path> old = Files.newDirectoryStream(bestDir, "[0-9][0-9].json")) {
+                for (Path p : old) Files.delete(p);
+            }
         }
+        String objectFile = published.resolve("best").toAbsolutePath().normalize().relativize(objectFile(spec)).toString();
         for (int i = 0; i < top.size(); i++) {
             TrialResult r = top.get(i);
             String nn = String.format("%02d", i + 1);
             Path file = bestDir.resolve(nn + ".json");
-            String objectFile = bestDir.toAbsolutePath().normalize().relativize(objectFile(spec)).toString();
             TrialParameters p = new TrialParameters(r.index(), r.approach(), r.roll(), r.spreadCounts(), r.standoff());
             AtomicFile.writeString(file, scenarios.scenarioJson(p, r.palmPosition(), r.palmRotation(),
                 "plan-" + spec.name() + "-best" + nn, true, objectFile));
         }
+        Phase.reach("best");
         Map<String, Object> json = new LinkedHashMap<>();
         json.put("target", spec.target());
         json.put("trials", spec.trials());

@@ -12,6 +12,7 @@ import org.handsim.grasp.FrictionCone;
 import org.handsim.sim.UnitRule;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
+import org.handsim.util.FileName;
 import org.handsim.util.Json;
 import org.handsim.util.JsonWriter;
 
@@ -158,7 +159,7 @@ public record PlanSpec(String name, String target, String templateJson, String t
         }
         if (dot > 0) n = n.substring(0, dot);
         n = n.replaceAll("[^A-Za-z0-9._-]", "_");
-        return n.isEmpty() ? "object" : n;
+        return FileName.problem(n) != null ? "object" : n;
     }
 
     /** The unit of the object file's coordinates the trials use (the template's {@code object.units}). */

@@ -4,21 +4,23 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.IntConsumer;
+import org.handsim.dynamics.HandDynamics;
 import org.handsim.sim.ClutchState;
 import org.handsim.sim.GraspAssessment;
 import org.handsim.sim.HandClearance;
 import org.handsim.sim.HandModel;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.Simulation;
+import org.handsim.sim.TorqueModel;
 import org.handsim.util.JsonWriter;
 
 /**
  * Runs trial i of a plan from its {@link PlanSpec} alone: sample its parameters
- * ({@link TrialSampler}), approach ({@link Autograsp}), write the trial as a scenario, run that
+ * ({@link TrialSampler}), approach ({@link Autograsp}), make the trial's scenario, run that
  * scenario until every finger has stalled or its profile ends, and evaluate the grasp
  * ({@link GraspAssessment}: force closure, ε, volume, minimum hold). The scenario run here is
- * exactly the one {@link #scenarioJson} writes for {@code best/NN.json} but for its outputs: no
+ * exactly the one {@link #scenarioJson} writes for {@code best/NN.json} (made directly, not
+ * through its text: {@link #trialScenario}) but for its outputs: no
  * trace, no charts, no joint torques (the contacts and the evaluation do not use them: the
  * contacts carry the torque the clutch transmits, DESIGN.md; the clutch's breakaway needs the
  * inner joint's τ_dyn, which the model computes while a finger is BLOCKED whether or not torques
@@ -32,8 +34,14 @@ import org.handsim.util.JsonWriter;
 public final class TrialRunner {
     private final PlanSpec spec;
     private final TrialSampler sampler;
-    private final Path templateFile;
     private final Map<String, Object> template;
+    /** The template as parsed once: each trial is a copy with the trial's pose and spread ({@link #trialScenario}). */
+    private final Scenario base;
+    /**
+     * The dynamics the models are given, one per runner (a model asks it only for a BLOCKED
+     * finger's inner-joint torque; it keeps nothing from one call to the next but scratch).
+     */
+    private final TorqueModel dynamics = HandDynamics.barrettHand()::inverseDynamics;
     private final HandClearance clearance;
     private final double[] startCounts = new double[3];
     private final IntConsumer fault;
@@ -54,9 +62,9 @@ public final class TrialRunner {
     public TrialRunner(PlanSpec spec, IntConsumer fault) {
         this.spec = spec;
         this.sampler = new TrialSampler(spec);
-        this.templateFile = Path.of(spec.templateFile());
         this.template = spec.template();
-        Scenario t = Scenario.parse(templateFile, spec.templateJson());
+        Scenario t = Scenario.parse(Path.of(spec.templateFile()), spec.templateJson());
+        this.base = t;
         this.clearance = new HandClearance(t.object());
         for (int k = 0; k < 3; k++) startCounts[k] = t.startCounts(k);
         this.fault = fault;
@@ -79,11 +87,10 @@ public final class TrialRunner {
 
     private TrialResult attempt(TrialParameters p, long t0) {
         Autograsp.Approach ap = Autograsp.approach(clearance, p.approach(), p.roll(), p.spreadCounts(), startCounts, p.standoff());
-        String text = scenarioJson(p, ap.position(), ap.rotation(), spec.name() + "-trial" + p.index(), false, null);
-        Scenario s = Scenario.parse(templateFile, text);
+        Scenario s = trialScenario(p, ap.position(), ap.rotation());
         SceneGeometry sg = s.object() == null ? null : new SceneGeometry(s.object(), SceneGeometry.DEFAULT_K, geometry);
         if (sg != null) geometry = sg;
-        HandModel m = Simulation.model(s, sg);
+        HandModel m = new HandModel(s, sg, dynamics, false);
         while (m.running() && !allStalled(m)) m.step();
         GraspAssessment g = GraspAssessment.of(m, spec.mu(), spec.edges());
         int contacts = 0;
@@ -96,6 +103,18 @@ public final class TrialRunner {
         return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), contacts,
             g.quality().forceClosure(), g.quality().epsilon(), g.quality().volume(), g.holdMinN(), states, m.time(), wall, "",
             ap.position(), ap.rotation());
+    }
+
+    /**
+     * The scenario trial {@code p.index()} runs: the one {@link #scenarioJson} writes for it
+     * ({@code best} false), made directly from the template parsed once — the same pose
+     * ({@link Scenario#withHandPose}, from the same position and rotation vector), the spread
+     * held ({@link Scenario#withSpreadHeld}), no trace, charts or torques — instead of writing
+     * and parsing that text for every trial. The same numbers (a test runs both).
+     */
+    Scenario trialScenario(TrialParameters p, double[] position, double[] rotation) {
+        return base.withName(spec.name() + "-trial" + p.index()).withHandPose(position, rotation)
+            .withSpreadHeld(p.spreadCounts()).withOutputs(false, false, false);
     }
 
     private static boolean allStalled(HandModel m) {

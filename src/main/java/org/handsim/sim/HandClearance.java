@@ -32,6 +32,8 @@ public final class HandClearance {
     private final FingerKinematics[] fk = new FingerKinematics[3];
     private final double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
     private final double[] joints = new double[3], base = new double[12], palm = new double[12];
+    private final double[][] baseInPalm = new double[3][12];   // palm ← {k0} of each finger
+    private final TriangleMesh palmMesh;
     private final double[] centroid;
     private final double objectReach;
     private static final Map<Integer, KdopTree> PALM_TREES = new ConcurrentHashMap<>();
@@ -49,7 +51,10 @@ public final class HandClearance {
      */
     public HandClearance(Scenario.ObjectPlacement object) {
         scene = new SceneGeometry(object, SceneGeometry.DEFAULT_K);
-        for (int k = 1; k <= 3; k++) fk[k - 1] = new FingerKinematics(hand.finger(k));
+        for (int k = 1; k <= 3; k++) {
+            fk[k - 1] = new FingerKinematics(hand.finger(k));
+            hand.finger(k).baseInPalm().copyTo(baseInPalm[k - 1], 0);
+        }
         double[] cr = scene.centroidAndRadius();   // the torque origin c and R of the grasp evaluation
         centroid = new double[] {cr[0], cr[1], cr[2]};
         objectReach = cr[3];
@@ -57,7 +62,7 @@ public final class HandClearance {
         worldFromObject = scene.worldFromObject();
         int k = objectTree.k();
         Path palmFile = SceneGeometry.palmFile();
-        TriangleMesh palmMesh = SceneGeometry.mesh(palmFile, SceneGeometry.LINK_DIVISIONS, 1.0);
+        palmMesh = SceneGeometry.mesh(palmFile, SceneGeometry.LINK_DIVISIONS, 1.0);
         trees[0] = PALM_TREES.computeIfAbsent(k, x -> KdopTree.build(palmMesh, x));
         spheres[0] = SceneGeometry.boundingSphere(palmMesh);
         for (int j = 1; j <= 3; j++) {
@@ -85,7 +90,20 @@ public final class HandClearance {
      */
     public boolean touches(RigidTransform worldFromPalm, double spreadCounts, double[] fingerCounts) {
         worldFromPalm.copyTo(palm, 0);
-        if (touches(0, palm, 0)) return true;
+        return touchesAt(palm, spreadCounts, fingerCounts);
+    }
+
+    /**
+     * As {@link #touches(RigidTransform, double, double[])} with {@code world ← palm} as its 12
+     * row-major values (allocation-free: the approach asks this some thirty times a trial).
+     */
+    public boolean touches(double[] worldFromPalm, double spreadCounts, double[] fingerCounts) {
+        System.arraycopy(worldFromPalm, 0, palm, 0, 12);
+        return touchesAt(palm, spreadCounts, fingerCounts);
+    }
+
+    private boolean touchesAt(double[] worldFromPalm, double spreadCounts, double[] fingerCounts) {
+        if (touches(0, worldFromPalm, 0)) return true;
         for (int k = 1; k <= 3; k++) {
             placeFinger(worldFromPalm, k, spreadCounts, fingerCounts[k - 1]);
             for (int j = 3; j >= 1; j--) {
@@ -101,9 +119,10 @@ public final class HandClearance {
      * origin more than {@code handReach + objectReach} from the centroid is clear of the object.
      */
     public double handReach(double spreadCounts, double[] fingerCounts) {
-        double r = reach(SceneGeometry.mesh(SceneGeometry.palmFile(), SceneGeometry.LINK_DIVISIONS, 1.0), RigidTransform.IDENTITY.toArray(), 0);
+        RigidTransform.IDENTITY.copyTo(palm, 0);
+        double r = reach(palmMesh, palm, 0);
         for (int k = 1; k <= 3; k++) {
-            placeFinger(RigidTransform.IDENTITY, k, spreadCounts, fingerCounts[k - 1]);
+            placeFinger(palm, k, spreadCounts, fingerCounts[k - 1]);
             for (int j = 1; j <= 3; j++) r = Math.max(r, reach(scene.linkMesh(j), frames, 12 * j));
         }
         return r;
@@ -135,8 +154,8 @@ public final class HandClearance {
     }
 
     /** Frames {k0}..{k3} of finger k in the world, as {@link HandModel} computes them. */
-    private void placeFinger(RigidTransform worldFromPalm, int k, double spreadCounts, double counts) {
-        worldFromPalm.compose(hand.finger(k).baseInPalm()).copyTo(base, 0);
+    private void placeFinger(double[] worldFromPalm, int k, double spreadCounts, double counts) {
+        RigidTransform.multiply(worldFromPalm, 0, baseInPalm[k - 1], 0, base, 0);   // as RigidTransform.compose
         joints[0] = hand.finger(k).spreadRadPerCount() * spreadCounts;
         joints[1] = tr.innerAngle(counts);
         joints[2] = tr.outerAngle(counts);

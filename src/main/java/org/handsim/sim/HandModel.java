@@ -168,6 +168,15 @@ public final class HandModel {
         return Math.round(Math.ceil(scenario.duration() / scenario.dt() - 1e-9));
     }
 
+    /**
+     * The time a scenario's run ends: that of its last step, {@link #totalSteps} × dt in decimal
+     * ({@link StepClock}; 8.947 s for the paper's scenario, whose trajectories last 8.9464 s) —
+     * what {@code handsim run} reports as simulated.
+     */
+    public static double endTime(Scenario scenario) {
+        return new StepClock(scenario.dt()).at(totalSteps(scenario));
+    }
+
     // ------------------------------------------------------------------ initialisation
     /** Puts the model at t = 0: motors at their start counts, fingers FREE, nothing recorded. */
     public void initialise() {

@@ -14,6 +14,7 @@ import org.handsim.sim.trajectory.Quintic;
 import org.handsim.sim.trajectory.Sequence;
 import org.handsim.sim.trajectory.Trajectory;
 import org.handsim.sim.trajectory.Trapezoid;
+import org.handsim.util.FileName;
 import org.handsim.util.Json;
 import org.handsim.util.JsonObject;
 
@@ -181,7 +182,8 @@ public final class Scenario implements Cloneable {
         this.root = r;
         r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "start_counts", "motors", "dt_s", "duration_s", "outputs");
         name = r.string("name");
-        if (!name.matches("[A-Za-z0-9._-]+")) throw r.error("name", "must be letters, digits, '.', '_' or '-' (it names the output folder), got \"" + name + "\"");
+        String bad = FileName.problem(name);
+        if (bad != null) throw r.error("name", bad + ", got \"" + name + "\"");
         description = r.string("description", "");
         if (r.has("hand")) {
             JsonObject h = r.object("hand");
@@ -511,6 +513,69 @@ public final class Scenario implements Cloneable {
         FrictionCone.checkEdges(m);
         Scenario c = copy();
         c.coneEdges = m;
+        return c;
+    }
+
+    /**
+     * A copy with the hand at another pose: the palm's position (m) and axis-angle rotation
+     * (rad), built into {@code world ← palm} as the parser builds {@code hand}, so the copy runs
+     * as the scenario file with these numbers as {@code hand.position_m} and
+     * {@code hand.rotation_rad} would.
+     */
+    public Scenario withHandPose(double[] position, double[] rotationRad) {
+        Scenario c = copy();
+        c.worldFromPalm = RigidTransform.fromPose(position[0], position[1], position[2], rotationRad[0], rotationRad[1], rotationRad[2]);
+        c.handPose = new double[] {position[0], position[1], position[2], rotationRad[0], rotationRad[1], rotationRad[2]};
+        return c;
+    }
+
+    /**
+     * A copy whose spread motor M4 holds {@code counts} from t = 0 — what the scenario file with
+     * {@code start_counts.M4} = counts and no {@code motors.M4} would run: finger motors whose
+     * segments depend on the spread (fingertip lines) are made again from this scenario's
+     * {@code motors}, and a duration the file does not give is again the longest motor's.
+     *
+     * @throws ScenarioException naming the field if the counts are out of range or a finger's
+     *                           line cannot be followed at this spread
+     */
+    public Scenario withSpreadHeld(double counts) {
+        HandDescription hand = HandDescription.barrettHand();
+        if (!(counts >= 0 && counts <= hand.spreadCountsMax())) {
+            throw new ScenarioException(file + ": field start_counts.M4: must be in [0, " + (long) hand.spreadCountsMax() + "] counts, got " + counts);
+        }
+        Scenario c = copy();
+        c.startCounts[3] = counts;
+        c.motors[3] = new Hold(counts, 0);
+        JsonObject mot = root != null && root.has("motors") ? root.object("motors") : null;
+        double longest = 0;
+        try {
+            for (int m = 0; m < 4; m++) {
+                if (m < 3 && mot != null && mot.has("M" + (m + 1)) && dependsOnSpread(c.motors[m])) {
+                    c.motors[m] = c.segments(mot, "M" + (m + 1), m, hand);
+                }
+                longest = Math.max(longest, c.motors[m].duration());
+            }
+        } catch (Json.JsonException e) {
+            throw new ScenarioException(e.getMessage(), e);
+        }
+        if (root == null || !root.has("duration_s")) c.duration = longest;
+        return c;
+    }
+
+    private static boolean dependsOnSpread(Trajectory t) {
+        if (t instanceof CartesianLine) return true;
+        if (t instanceof Sequence) {
+            for (Trajectory s : ((Sequence) t).segments()) if (dependsOnSpread(s)) return true;
+        }
+        return false;
+    }
+
+    /** A copy that writes (or not) a trace and charts and computes (or not) joint torques, as {@code outputs}. */
+    public Scenario withOutputs(boolean trace, boolean charts, boolean torques) {
+        Scenario c = copy();
+        c.writeTrace = trace;
+        c.writeCharts = charts;
+        c.computeTorques = torques;
         return c;
     }
 

@@ -48,6 +48,10 @@ public final class SceneGeometry implements LinkContacts {
     /** Divisions the hand's meshes (links and, in the window, the palm) are loaded at. */
     public static final int LINK_DIVISIONS = 32;
 
+    private final int k;
+    private final Path objectFile;
+    private final Shape objectShape;
+    private final Shape[] linkShapes = new Shape[3];
     private final TriangleMesh objectMesh;
     private final KdopTree objectTree;
     private final TriangleMesh[] linkMeshes = new TriangleMesh[3];
@@ -103,12 +107,20 @@ public final class SceneGeometry implements LinkContacts {
      * @throws IllegalStateException if {@code retired} was already taken over
      */
     public SceneGeometry(Scenario.ObjectPlacement object, int k, SceneGeometry retired) {
-        Shape obj = shape(object.file(), object.divisions(), object.meshScale(), k);
+        // the retired instance's shapes when they are the same (file, divisions, mesh scale, k):
+        // a planning thread's next trial then takes no lock and builds no cache key
+        boolean same = retired != null && retired.k == k && retired.objectFile.equals(object.file())
+            && retired.objectShape.divisions == object.divisions() && retired.objectShape.scale == object.meshScale();
+        Shape obj = same ? retired.objectShape : shape(object.file(), object.divisions(), object.meshScale(), k);
+        this.k = k;
+        objectFile = object.file();
+        objectShape = obj;
         objectMesh = obj.mesh;
         objectTree = obj.tree;
         double diag = obj.diagonal;
         for (int j = 1; j <= 3; j++) {
-            Shape link = shape(linkFile(j), LINK_DIVISIONS, 1.0, k);
+            Shape link = retired != null && retired.k == k ? retired.linkShapes[j - 1] : shape(linkFile(j), LINK_DIVISIONS, 1.0, k);
+            linkShapes[j - 1] = link;
             linkMeshes[j - 1] = link.mesh;
             linkTrees[j - 1] = link.tree;
             linkSpheres[j - 1] = link.sphere;
@@ -121,7 +133,7 @@ public final class SceneGeometry implements LinkContacts {
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
         double[] cw = object.worldFromObject().apply(obj.centroid());
         centroidAndRadius = new double[] {cw[0], cw[1], cw[2], obj.centroidReach()};
-        thickness = obj.thickness();
+        thickness = same ? retired.thickness : obj.thickness();
         // the scratch last: a model that cannot be loaded leaves the retired instance as it was
         if (retired == null) {
             query = new TreeQuery();
@@ -159,6 +171,8 @@ public final class SceneGeometry implements LinkContacts {
      */
     private static final class Shape {
         final String key;
+        final int divisions;
+        final double scale;
         final TriangleMesh mesh;
         final KdopTree tree;
         final double[] sphere;
@@ -167,8 +181,10 @@ public final class SceneGeometry implements LinkContacts {
         private final double centroidReach;
         private double thickness = Double.NaN;
 
-        Shape(String key, TriangleMesh mesh, int k) {
+        Shape(String key, int divisions, double scale, TriangleMesh mesh, int k) {
             this.key = key;
+            this.divisions = divisions;
+            this.scale = scale;
             this.mesh = mesh;
             this.tree = KdopTree.build(mesh, k);
             this.sphere = boundingSphere(mesh);
@@ -193,7 +209,7 @@ public final class SceneGeometry implements LinkContacts {
 
     private static Shape shape(Path file, int divisions, double scale, int k) {
         String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
-        return SHAPES.get(key, x -> new Shape(x, mesh(file, divisions, scale), k));
+        return SHAPES.get(key, x -> new Shape(x, divisions, scale, mesh(file, divisions, scale), k));
     }
 
     private final double thickness;
@@ -274,7 +290,7 @@ public final class SceneGeometry implements LinkContacts {
      */
     public static TriangleMesh mesh(Path file, int divisions, double scale) {
         return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, x -> {
-            TriangleMesh m = MeshFiles.load(file, divisions, scale).mesh();
+            TriangleMesh m = MeshCache.get(file, divisions, scale, () -> MeshFiles.load(file, divisions, scale).mesh());
             if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
             return m;
         });

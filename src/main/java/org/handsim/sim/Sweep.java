@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.handsim.util.FileName;
 import org.handsim.util.Json;
 import org.handsim.util.JsonObject;
 import org.handsim.util.JsonWriter;
@@ -39,7 +40,8 @@ public final class Sweep {
     private Sweep(Path file, JsonObject r) {
         r.allowOnly("name", "base", "runs", "scenarios", "threads");
         name = r.string("name");
-        if (!name.matches("[A-Za-z0-9._-]+")) throw r.error("name", "must be letters, digits, '.', '_' or '-', got \"" + name + "\"");
+        String bad = FileName.problem(name);
+        if (bad != null) throw r.error("name", bad + ", got \"" + name + "\"");
         threads = r.has("threads") ? r.integer("threads") : 0;
         Path dir = file.toAbsolutePath().getParent();
         if (r.has("runs")) {

@@ -76,12 +76,54 @@ public final class Decimal {
     /**
      * Appends the text of a finite double.
      *
+     * <p>Each thread keeps the texts of the last {@value #MEMO_SLOTS} values it wrote (a
+     * direct-mapped table keyed by the bits), so a value written again — most cells of a trace
+     * repeat the row above: 92 % of the paper's, 79 % of the mug's — is copied, not formatted;
+     * the text is the same either way.
+     *
      * @throws IllegalArgumentException for NaN or an infinity
      */
     public static StringBuilder append(StringBuilder sb, double d) {
         if (!Double.isFinite(d)) throw new IllegalArgumentException("refusing to write a non-finite number (" + d + ")");
         if (d == 0) return sb.append('0');
         if (Math.abs(d) < 0x1p53 && d == (long) d) return sb.append((long) d);   // exact integers: their digits
+        return MEMO.get().append(sb, d);
+    }
+
+    /** Slots of each thread's table of recent texts. */
+    static final int MEMO_SLOTS = 256;
+    private static final ThreadLocal<Memo> MEMO = ThreadLocal.withInitial(Memo::new);
+
+    /** A thread's recent texts: slot {@code hash(bits)} holds one value's bits and characters. */
+    private static final class Memo {
+        final long[] bits = new long[MEMO_SLOTS];
+        final char[][] text = new char[MEMO_SLOTS][32];   // the longest text is 24 characters (-1.2345678901234567e-308)
+        final int[] length = new int[MEMO_SLOTS];         // 0: empty (no finite non-zero text is empty)
+
+        StringBuilder append(StringBuilder sb, double d) {
+            long b = Double.doubleToRawLongBits(d);
+            int slot = slot(b);
+            if (length[slot] > 0 && bits[slot] == b) return sb.append(text[slot], 0, length[slot]);
+            int start = sb.length();
+            appendUncached(sb, d);
+            int n = sb.length() - start;
+            if (n <= text[slot].length) {
+                sb.getChars(start, start + n, text[slot], 0);
+                bits[slot] = b;
+                length[slot] = n;
+            }
+            return sb;
+        }
+    }
+
+    /** The memo slot of a double's bits (high and low bits mixed: neighbouring values differ in the low ones). */
+    static int slot(long bits) {
+        long h = bits * 0x9E3779B97F4A7C15L;
+        return (int) (h >>> 56) & (MEMO_SLOTS - 1);
+    }
+
+    /** {@link #append} without the memo: the format itself. */
+    static StringBuilder appendUncached(StringBuilder sb, double d) {
         // Schubfach gives "d.dddE±n" or "ddd.ddd": take its digits and decimal exponent
         String s = NumberOutput.toString(d, true);
         int start = sb.length();

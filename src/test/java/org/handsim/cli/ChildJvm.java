@@ -41,10 +41,32 @@ public final class ChildJvm {
         return -1;
     }
 
-    /** Runs {@code handsim args} in a child JVM with {@code -Xmx<heap>} in {@code dir}. */
-    public static Result run(Path dir, String heap, long timeoutMinutes, String... args) throws Exception {
+    /** A child JVM started by {@link #start}: the process and the files its standard output and error go to. */
+    public record Started(Process process, Path out, Path err) {
+        /** What the child has written on standard error so far. */
+        public String errText() throws IOException {
+            return Files.readString(err, StandardCharsets.UTF_8);
+        }
+    }
+
+    /**
+     * Starts {@code handsim args} in a child JVM with {@code -Xmx<heap>} and the given system
+     * properties ({@code name=value}) in {@code dir}, its output going to files in {@code dir};
+     * the caller waits for it, or stops it, and deletes the files.
+     */
+    public static Started start(Path dir, String heap, List<String> properties, String... args) throws IOException {
+        List<String> cmd = command(dir, heap, List.of(), args);
+        int at = cmd.indexOf("-cp");
+        for (String p : properties) cmd.add(at, "-D" + p);
+        Path out = Files.createTempFile(dir, "child", ".out"), err = Files.createTempFile(dir, "child", ".err");
+        Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+        return new Started(p, out, err);
+    }
+
+    private static List<String> command(Path dir, String heap, List<String> jvmOptions, String... args) {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.addAll(jvmOptions);
         cmd.add("-Xss16m");
         cmd.add("-Xmx" + heap);
         cmd.add("-Djava.awt.headless=true");
@@ -55,6 +77,17 @@ public final class ChildJvm {
         cmd.add(System.getProperty("java.class.path"));
         cmd.add(ChildJvm.class.getName());
         cmd.addAll(List.of(args));
+        return cmd;
+    }
+
+    /** Runs {@code handsim args} in a child JVM with {@code -Xmx<heap>} in {@code dir}. */
+    public static Result run(Path dir, String heap, long timeoutMinutes, String... args) throws Exception {
+        return run(dir, heap, List.of(), timeoutMinutes, args);
+    }
+
+    /** As {@link #run(Path, String, long, String...)} with more options for the child JVM (before its main class). */
+    public static Result run(Path dir, String heap, List<String> jvmOptions, long timeoutMinutes, String... args) throws Exception {
+        List<String> cmd = command(dir, heap, jvmOptions, args);
         Path out = Files.createTempFile(dir, "child", ".out"), err = Files.createTempFile(dir, "child", ".err");
         try {
             Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(out.toFile()).redirectError(err.toFile()).start();

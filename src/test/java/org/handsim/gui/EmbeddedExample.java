@@ -44,8 +44,8 @@ public final class EmbeddedExample {
             reset.addActionListener(e -> sim.reset());
             for (JButton b : new JButton[] {play, pause, step, reset}) buttons.add(b);
             buttons.add(readout);
-            sim.addStepListener(s -> readout.setText(String.format(Locale.ROOT, "t = %.3f s, finger 3 %s, %.1f N",
-                s.time(), s.clutch(3), s.snapshot().fingers()[2].forceSum())));
+            sim.addStepListener(s -> readout.setText(s.snapshot() == null ? "building the model ..." : String.format(Locale.ROOT,
+                "t = %.3f s, finger 3 %s, %.1f N", s.time(), s.clutch(3), s.snapshot().fingers()[2].forceSum())));
             f.add(sim, BorderLayout.CENTER);
             f.add(buttons, BorderLayout.SOUTH);
             f.setSize(720, 600);
@@ -62,6 +62,8 @@ public final class EmbeddedExample {
         if (shot == null) return;
         long deadline = System.currentTimeMillis() + 120_000;
         while (sim.view().framesRendered() == 0 && System.currentTimeMillis() < deadline) Thread.sleep(10);
+        System.out.println("embedded: first frame");
+        System.out.flush();
         CountDownLatch played = new CountDownLatch(1);
         sim.addStepListener(s -> { if (s.time() >= 2.5 - 1e-9 && !s.playing()) played.countDown(); });
         SwingUtilities.invokeAndWait(() -> {

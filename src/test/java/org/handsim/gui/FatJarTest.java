@@ -37,6 +37,8 @@ class FatJarTest {
 
     record Out(int code, String log) {}
 
+    private static final java.util.concurrent.atomic.AtomicInteger LOGS = new java.util.concurrent.atomic.AtomicInteger();
+
     static Out java(Path dir, boolean display, String... args) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
             "-Djava.io.tmpdir=" + dir.resolve("tmp"), "-jar", jar().toString()));
@@ -45,12 +47,13 @@ class FatJarTest {
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true);
         pb.environment().remove("DISPLAY");
         pb.environment().remove("HANDSIM_SHARED");
+        pb.environment().put("XDG_CACHE_HOME", dir.resolve("cache").toAbsolutePath().toString());   // the models' copy stays in the test's folder
         if (display) {
             pb.environment().put("DISPLAY", GuiWindowTest.display());
             String xauth = GuiWindowTest.xauthority();
             if (xauth != null) pb.environment().put("XAUTHORITY", xauth);
         }
-        Path log = dir.resolve("log-" + (args.length == 0 ? "none" : args[0]) + ".txt");
+        Path log = dir.resolve("log-" + (args.length == 0 ? "none" : args[0]) + "-" + LOGS.incrementAndGet() + ".txt");
         pb.redirectOutput(log.toFile());
         Process p = pb.start();
         if (!p.waitFor(5, TimeUnit.MINUTES)) {
@@ -109,6 +112,42 @@ class FatJarTest {
         assertTrue(missing.log().matches("(?s).*(the models and scenarios of the jar are unpacked in|HandSim's models and scenarios are in)"
             + " \\S+: \\S+/vrml/objects/mug\\.wrl\\).*"), missing.log());
         VrmlTesting.deleteTree(dir);
+    }
+
+    /**
+     * Three first runs of the jar at once (an empty cache): each runs, and afterwards the cache
+     * holds one verified copy of the models and the temporary folder nothing of them.
+     */
+    @Test
+    @org.junit.jupiter.api.Tag("slow")
+    void concurrentFirstRunsLeaveOneCopyOfTheModels() throws Exception {
+        // outside the checkout (the build's temporary folder is inside it, where the jar would find vrml/ and not unpack)
+        Path dir = Files.createTempDirectory(Path.of("/tmp"), "handsim-fatjar");
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(3);
+        try {
+            List<java.util.concurrent.Future<Out>> runs = new ArrayList<>();
+            for (int i = 0; i < 3; i++) {
+                String out = "o" + i;
+                runs.add(pool.submit(() -> java(dir, false, "run", "--dt", "0.01", "--no-charts", "--out", out)));
+            }
+            for (int i = 0; i < 3; i++) {
+                Out o = runs.get(i).get();
+                assertEquals(0, o.code(), o.log());
+                assertTrue(Files.isRegularFile(dir.resolve("o" + i).resolve("summary.json")));
+            }
+            try (var s = Files.list(dir.resolve("cache/handsim"))) {
+                List<String> left = new ArrayList<>();
+                s.forEach(p -> left.add(p.getFileName().toString()));
+                assertEquals(1, left.size(), "one copy, no unpacking folder: " + left);
+                assertTrue(left.get(0).startsWith("home-"), left.toString());
+            }
+            try (var s = Files.list(dir.resolve("tmp"))) {
+                assertEquals(0, s.filter(p -> p.getFileName().toString().startsWith("handsim-home")).count(), "nothing in the temporary folder");
+            }
+        } finally {
+            pool.shutdownNow();
+            VrmlTesting.deleteTree(dir);
+        }
     }
 
     @Test

@@ -92,6 +92,41 @@ class LiveGraspTest {
             g.awaitIdle();
             assertEquals(3, g.latest().serial());
             assertEquals(2, g.latest().generation());
+            g.offer(2, m, 0.0, 8, true);    // at rest at the time already evaluated: nothing to do
+            g.awaitIdle();
+            assertEquals(3, g.latest().serial());
+        } finally {
+            g.close();
+        }
+    }
+
+    /**
+     * A model at rest is evaluated at its own time even when its contacts have not changed since
+     * the last evaluation (which a run offers at whichever publication first saw them): the
+     * panel's "as at" time is then the time shown, the same however the run was batched.
+     */
+    @Test
+    void aModelAtRestIsEvaluatedAtItsTime() throws Exception {
+        Scenario s = mug();
+        HandModel m = Simulation.model(s, false);
+        LiveGrasp g = new LiveGrasp();
+        try {
+            // 4.5 s: the motors hold (3.7 to 4.7 s), every finger stalled on the mug: the contacts rest
+            while (m.time() < 4.5 - 1e-9) m.step();
+            g.offer(1, m, 0.5, 8);
+            g.awaitIdle();
+            assertEquals(1, g.latest().serial());
+            assertEquals(4.5, g.latest().assessment().timeS());
+            assertTrue(g.latest().assessment().contacts().size() >= 3, "every finger touches the mug");
+            while (m.time() < 4.6 - 1e-9) m.step();
+            g.offer(1, m, 0.5, 8);           // a playing run's publication of the same contacts: nothing new
+            g.awaitIdle();
+            assertEquals(1, g.latest().serial(), "the contacts did not change from 4.5 to 4.6 s");
+            assertEquals(4.5, g.latest().assessment().timeS());
+            g.offer(1, m, 0.5, 8, true);     // the run pauses here: evaluated at this time
+            g.awaitIdle();
+            assertEquals(2, g.latest().serial());
+            assertEquals(4.6, g.latest().assessment().timeS(), "as at the time shown");
         } finally {
             g.close();
         }

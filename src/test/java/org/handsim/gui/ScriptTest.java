@@ -15,9 +15,10 @@ class ScriptTest {
             "# a comment", "", "press Path Planning", "set fk3.counts 5000", "set obj.file my file.wrl",
             "import vrml/objects/cube.wrl", "play 1.5", "play END", "speed max", "speed 2", "wait 100",
             "screenshot out/x.png", "show hand off", "assert-state 3 broken|STALLED", "assert-status imported cube",
-            "log dynamics", "measure-fps 3", "show CONES on", "log grasp", "log Contacts"));
+            "log dynamics", "measure-fps 3", "show CONES on", "log grasp", "log Contacts", "log Kinematics"));
         List<Script.Action> a = s.actions();
-        assertEquals(18, a.size());
+        assertEquals(19, a.size());
+        assertEquals("kinematics", a.get(18).arg(0));
         assertEquals(List.of("cones", "on"), a.get(15).args());
         assertEquals("grasp", a.get(16).arg(0));
         assertEquals("contacts", a.get(17).arg(0));
@@ -47,7 +48,7 @@ class ScriptTest {
             {"assert-state 3 SLIPPING", "t.txt:1: unknown clutch state 'SLIPPING'"},
             {"show palm off", "t.txt:1: show needs hand|object|contacts"},
             {"wait 1.5", "t.txt:1: wait needs whole milliseconds"},
-            {"log everything", "t.txt:1: log needs dynamics, state, events, ik, charts, grasp or contacts"},
+            {"log everything", "t.txt:1: log needs dynamics, state, events, ik, charts, grasp, contacts or kinematics"},
             {"camera sideways", "t.txt:1: camera needs home, fit, front, top or side"},
             {"key ESCAPE", "t.txt:1: key needs one of SPACE, RIGHT, R, H, F, 1, 2, 3"},
             {"save-charts c.jpg", "t.txt:1: save-charts needs a .png or .svg file"},
