@@ -107,13 +107,22 @@ final class VelocityJumps extends AbstractXYAnnotation {
             g2.fill(head);
             String text = label(j);
             double w = fm.stringWidth(text);
+            // beside the tip, then back along the arrow (never past the zero line: a label stays on
+            // its arrow's side), then beyond the tip; right of the arrow first, then left
+            List<Double> ys = new ArrayList<>();
+            double first = tip - (dir > 0 ? 0 : h);
+            for (int step = 0; step < 12; step++) {
+                double y = first + dir * step * (h + 1);
+                if (dir > 0 ? y + h > zero : y < zero) break;
+                ys.add(y);
+            }
+            for (int step = 1; step < 6; step++) ys.add(first - dir * step * (h + 1));
             Rectangle2D place = null;
-            for (int step = 0; step < 12 && place == null; step++) {
-                // beside the tip, then moving back along the arrow towards the zero line
-                double y = tip + dir * step * (h + 1) - (dir > 0 ? 0 : h);
+            for (double y : ys) {
                 for (Rectangle2D c : new Rectangle2D[] {new Rectangle2D.Double(x + 6, y, w, h), new Rectangle2D.Double(x - 6 - w, y, w, h)}) {
                     if (place == null && area.contains(c) && taken.stream().noneMatch(c::intersects)) place = c;
                 }
+                if (place != null) break;
             }
             if (place == null) place = new Rectangle2D.Double(x + 6, tip - (dir > 0 ? 0 : h), w, h);
             taken.add(place);
