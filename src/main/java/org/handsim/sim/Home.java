@@ -80,6 +80,12 @@ public final class Home {
         }
     }
 
+    /** Whether the data folders in use are the ones unpacked from the runnable jar (not a checkout's). */
+    public static boolean fromRunnableJar() {
+        Path u = unpacked;
+        return u != null && dir().equals(u);
+    }
+
     /** {@code $XDG_CACHE_HOME/handsim} (an absolute XDG_CACHE_HOME), else {@code ~/.cache/handsim}; null without a home. */
     static Path userCache() {
         String xdg = System.getenv("XDG_CACHE_HOME");
