@@ -10,13 +10,12 @@ import java.util.Map;
 import java.util.TreeMap;
 import org.handsim.sim.GraspAssessment;
 import org.jfree.chart.JFreeChart;
+import org.jfree.chart.LegendItemCollection;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.plot.CombinedDomainXYPlot;
 import org.jfree.chart.plot.ValueMarker;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
-import org.jfree.chart.ui.RectangleAnchor;
-import org.jfree.chart.ui.TextAnchor;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 
@@ -47,23 +46,25 @@ public final class GraspChart {
         plot.setGap(10);
         XYPlot top = panel(eps, "ε", EPSILON);
         XYPlot bottom = panel(hold, "smallest hold (N)", HOLD);
-        ValueMarker cap = new ValueMarker(capN, CAP, dashed(1.2f));
-        cap.setLabel(String.format(Locale.ROOT, "hand's rated load %.2f N", capN));
-        cap.setLabelFont(new Font("SansSerif", Font.PLAIN, 11));
-        cap.setLabelAnchor(RectangleAnchor.BOTTOM_LEFT);
-        cap.setLabelTextAnchor(TextAnchor.TOP_LEFT);
-        bottom.addRangeMarker(cap);
+        // nothing over the data: the rated load's and the breakaways' dashed lines are named in the legend
+        bottom.addRangeMarker(new ValueMarker(capN, CAP, dashed(1.2f)));
         ((NumberAxis) bottom.getRangeAxis()).setUpperBound(capN * 1.12);
-        // one marker per distinct breakaway time, naming its fingers
+        LegendItemCollection legend = new LegendItemCollection();
+        legend.add(PaperCharts.line(eps.getKey().toString(), EPSILON, PaperCharts.SOLID));
+        legend.add(PaperCharts.line(hold.getKey().toString(), HOLD, PaperCharts.SOLID));
+        legend.add(PaperCharts.line(String.format(Locale.ROOT, "hand's rated load %.2f N", capN), CAP, dashed(1.2f)));
+        // one line per distinct breakaway time, naming its fingers
         Map<Double, List<String>> at = new TreeMap<>();
         for (int k = 0; k < breakawayTimes.length; k++) {
             if (!Double.isNaN(breakawayTimes[k])) at.computeIfAbsent(breakawayTimes[k], x -> new ArrayList<>()).add(Integer.toString(k + 1));
         }
         for (Map.Entry<Double, List<String>> e : at.entrySet()) {
             String label = (e.getValue().size() == 1 ? "breakaway, finger " : "breakaway, fingers ") + String.join(", ", e.getValue());
-            top.addDomainMarker(marker(e.getKey(), label));
-            bottom.addDomainMarker(marker(e.getKey(), null));
+            top.addDomainMarker(marker(e.getKey()));
+            bottom.addDomainMarker(marker(e.getKey()));
+            legend.add(PaperCharts.line(label + String.format(Locale.ROOT, " at %.3f s", e.getKey()), PaperCharts.BREAK, PaperCharts.DASHED));
         }
+        plot.setFixedLegendItems(legend);
         plot.add(top, 1);
         plot.add(bottom, 1);
         JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), plot, true);
@@ -83,15 +84,8 @@ public final class GraspChart {
         return p;
     }
 
-    private static ValueMarker marker(double t, String label) {
-        ValueMarker m = new ValueMarker(t, PaperCharts.BREAK, dashed(1.5f));
-        if (label != null) {
-            m.setLabel(label + String.format(Locale.ROOT, " (%.3f s)", t));
-            m.setLabelFont(new Font("SansSerif", Font.PLAIN, 11));
-            m.setLabelAnchor(RectangleAnchor.TOP_RIGHT);
-            m.setLabelTextAnchor(TextAnchor.TOP_LEFT);
-        }
-        return m;
+    private static ValueMarker marker(double t) {
+        return new ValueMarker(t, PaperCharts.BREAK, PaperCharts.DASHED);
     }
 
     private static BasicStroke dashed(float width) {

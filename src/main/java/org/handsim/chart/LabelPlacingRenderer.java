@@ -24,7 +24,8 @@ import org.jfree.data.xy.XYDataset;
 
 /**
  * Points and lines as {@link XYLineAndShapeRenderer} draws them, with item labels placed where
- * they collide with nothing: before a drawing, every point's marker is reserved; each label then
+ * they collide with nothing: before a drawing, every point's marker and every drawn line
+ * segment is reserved; each label then
  * takes the first free place among eight directions round its point (above, below, right, left,
  * the diagonals) at growing distances — beyond the nearest ring a thin leader line joins it to
  * its point — inside the plot. A label that finds no free place is left out, except a default
@@ -39,9 +40,25 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
     private static final double MARKER_HALF = 5;
 
     private final Set<Long> defaults = new HashSet<>();
+    private final java.util.Map<Long, java.awt.Shape> itemShapes = new java.util.HashMap<>();
+    /** The default rings drawn so far: {x, y, radius} px (a second default on the same spot gets a wider ring). */
+    private final transient List<double[]> rings = new ArrayList<>();
     private final transient List<Rectangle2D> taken = new ArrayList<>();
     private final transient List<Rectangle2D> labels = new ArrayList<>();
+    /** The drawn lines (a Pareto front's segments), px: a label crosses none of them. */
+    private final transient List<Line2D> segments = new ArrayList<>();
     private transient Rectangle2D area;
+
+    /** Draws item {@code item} of series {@code series} with its own marker shape (the study's setting). */
+    void setItemShape(int series, int item, java.awt.Shape shape) {
+        itemShapes.put(((long) series << 32) | item, shape);
+    }
+
+    @Override
+    public java.awt.Shape getItemShape(int series, int item) {
+        java.awt.Shape s = itemShapes.get(((long) series << 32) | item);
+        return s != null ? s : super.getItemShape(series, item);
+    }
 
     /** Item {@code item} of series {@code series} is the default setting. */
     void markDefault(int series, int item) {
@@ -52,8 +69,19 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
     public XYItemRendererState initialise(Graphics2D g2, Rectangle2D dataArea, XYPlot plot, XYDataset data, PlotRenderingInfo info) {
         taken.clear();
         labels.clear();
+        rings.clear();
         area = dataArea;
+        segments.clear();
         for (int s = 0; s < data.getSeriesCount(); s++) {
+            if (getItemLineVisible(s, 0)) {
+                for (int i = 1; i < data.getItemCount(s); i++) {
+                    segments.add(new Line2D.Double(
+                        plot.getDomainAxis().valueToJava2D(data.getXValue(s, i - 1), dataArea, RectangleEdge.BOTTOM),
+                        plot.getRangeAxis().valueToJava2D(data.getYValue(s, i - 1), dataArea, RectangleEdge.LEFT),
+                        plot.getDomainAxis().valueToJava2D(data.getXValue(s, i), dataArea, RectangleEdge.BOTTOM),
+                        plot.getRangeAxis().valueToJava2D(data.getYValue(s, i), dataArea, RectangleEdge.LEFT)));
+                }
+            }
             if (!getItemShapeVisible(s, 0)) continue;
             for (int i = 0; i < data.getItemCount(s); i++) {
                 double x = plot.getDomainAxis().valueToJava2D(data.getXValue(s, i), dataArea, RectangleEdge.BOTTOM);
@@ -69,16 +97,23 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
                                  double x, double y, boolean negative) {
         XYItemLabelGenerator gen = getItemLabelGenerator(series, item);
         String text = gen == null ? null : gen.generateLabel(dataset, series, item);
-        if (text == null || text.isEmpty()) return;
         boolean isDefault = defaults.contains(((long) series << 32) | item);
         Paint seriesPaint = lookupSeriesPaint(series);
+        if (isDefault) {
+            // ringed; defaults of several series on one spot get concentric rings, each visible
+            double radius = 8;
+            for (double[] ring : rings) if (Math.hypot(ring[0] - x, ring[1] - y) < 3) radius = Math.max(radius, ring[2] + 4);
+            rings.add(new double[] {x, y, radius});
+            g2.setPaint(seriesPaint);
+            g2.setStroke(new BasicStroke(2f));
+            g2.draw(new Ellipse2D.Double(x - radius, y - radius, 2 * radius, 2 * radius));
+            taken.add(new Rectangle2D.Double(x - radius, y - radius, 2 * radius, 2 * radius));
+        }
+        if (text == null || text.isEmpty()) return;
         Font font = getItemLabelFont(series, item);
         if (isDefault) {
             text = text + " (default)";
             font = font.deriveFont(Font.BOLD, font.getSize2D() + 1);
-            g2.setPaint(seriesPaint);
-            g2.setStroke(new BasicStroke(2f));
-            g2.draw(new Ellipse2D.Double(x - 8, y - 8, 16, 16));
         }
         g2.setFont(font);
         FontMetrics fm = g2.getFontMetrics();
@@ -97,6 +132,7 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
                         break;
                     }
                 }
+                for (int n = 0; free && n < segments.size(); n++) free = !segments.get(n).intersects(c);
                 if (free) {
                     place = c;
                     placedRadius = r;
@@ -121,8 +157,14 @@ final class LabelPlacingRenderer extends XYLineAndShapeRenderer {
         g2.drawString(text, (float) place.getX(), (float) (place.getY() + fm.getAscent()));
     }
 
+    /** The default rings of the last drawing, {x, y, radius} px (for tests). */
+    List<double[]> ringsDrawn() { return new ArrayList<>(rings); }
+
     /** The boxes of the labels drawn in the last drawing, px (for tests). */
     List<Rectangle2D> labelBoxes() { return new ArrayList<>(labels); }
+
+    /** The line segments of the last drawing, px (for tests). */
+    List<Line2D> segmentsDrawn() { return new ArrayList<>(segments); }
 
     /** The plot area of the last drawing, px. */
     Rectangle2D dataArea() { return area; }

@@ -3,6 +3,7 @@ package org.handsim.chart;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Paint;
+import org.handsim.plan.DirectionMap;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.NumberTickUnit;
@@ -73,17 +74,21 @@ public final class PlanCharts {
     }
 
     /**
-     * @param best   best ε per cell [azimuth][elevation], cells of {@code cellDeg} degrees from
-     *               azimuth −180° and elevation −90°
-     * @param count  trials per cell; a cell with trials but no force closure is drawn grey,
-     *               an empty cell not at all
+     * The best ε over the approach directions, on the equal-area cells of a {@link DirectionMap}:
+     * azimuth across, the approach's z = sin(elevation) up (Lambert's cylindrical equal-area
+     * projection, so every cell covers the same solid angle and holds about the same number of
+     * trials), the axis ticked in degrees of elevation. A cell whose trials have no force
+     * closure is grey, a cell without trials (only with very few trials) white.
      */
-    public static JFreeChart directionMap(String title, double[][] best, int[][] count, int cellDeg) {
-        int na = best.length, ne = best[0].length;
+    public static JFreeChart directionMap(String title, DirectionMap map) {
+        double[][] best = map.best();
+        int[][] count = map.count();
+        int na = map.azimuthCells(), nz = map.zCells();
+        double w = 360.0 / na, hz = 2.0 / nz;
         int cells = 0;
         double max = 0;
         for (int i = 0; i < na; i++) {
-            for (int j = 0; j < ne; j++) {
+            for (int j = 0; j < nz; j++) {
                 if (count[i][j] > 0) cells++;
                 max = Math.max(max, best[i][j]);
             }
@@ -91,10 +96,10 @@ public final class PlanCharts {
         double[][] s = new double[3][cells];
         int c = 0;
         for (int i = 0; i < na; i++) {
-            for (int j = 0; j < ne; j++) {
+            for (int j = 0; j < nz; j++) {
                 if (count[i][j] == 0) continue;
-                s[0][c] = -180 + (i + 0.5) * cellDeg;
-                s[1][c] = -90 + (j + 0.5) * cellDeg;
+                s[0][c] = -180 + (i + 0.5) * w;
+                s[1][c] = -1 + (j + 0.5) * hz;
                 s[2][c] = best[i][j];
                 c++;
             }
@@ -104,12 +109,10 @@ public final class PlanCharts {
         NumberAxis x = new NumberAxis("approach azimuth atan2(a_y, a_x), degrees");
         x.setRange(-180, 180);
         x.setTickUnit(new NumberTickUnit(45));
-        NumberAxis y = new NumberAxis("approach elevation asin(a_z), degrees");
-        y.setRange(-90, 90);
-        y.setTickUnit(new NumberTickUnit(30));
+        NumberAxis y = new ElevationAxis("approach elevation asin(a_z), degrees (equal-area scale)");
         XYBlockRenderer r = new XYBlockRenderer();
-        r.setBlockWidth(cellDeg);
-        r.setBlockHeight(cellDeg);
+        r.setBlockWidth(w);
+        r.setBlockHeight(hz);
         double upper = max > 0 ? max : 1;
         Viridis scale = new Viridis(upper);
         r.setPaintScale(scale);
@@ -117,11 +120,13 @@ public final class PlanCharts {
         plot.setBackgroundPaint(Color.WHITE);
         plot.setDomainGridlinesVisible(false);
         plot.setRangeGridlinesVisible(false);
+        // the cells' borders, thin and white: cells of equal colour stay countable
+        for (int i = 1; i < na; i++) plot.addDomainMarker(new org.jfree.chart.plot.ValueMarker(-180 + i * w, Color.WHITE, new java.awt.BasicStroke(0.6f)));
+        for (int j = 1; j < nz; j++) plot.addRangeMarker(new org.jfree.chart.plot.ValueMarker(-1 + j * hz, Color.WHITE, new java.awt.BasicStroke(0.6f)));
         JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), plot, false);
         chart.setBackgroundPaint(Color.WHITE);
-        chart.addSubtitle(new TextTitle("each " + cellDeg + "° cell: the best ε of its trials; grey: trials, none with force closure; blank: no trial",
-            new Font("SansSerif", Font.PLAIN, 12)));
-        NumberAxis za = new NumberAxis("best ε");
+        NumberAxis za = new NumberAxis(String.format(java.util.Locale.ROOT, "best ε of the cell's trials (about %d a cell; grey: none in force closure)",
+            DirectionMap.TRIALS_PER_CELL));
         za.setRange(0, upper);
         PaintScaleLegend legend = new PaintScaleLegend(scale, za);
         legend.setPosition(RectangleEdge.RIGHT);
@@ -130,6 +135,29 @@ public final class PlanCharts {
         legend.setBackgroundPaint(Color.WHITE);
         chart.addSubtitle(legend);
         return chart;
+    }
+
+    /** A z = sin(elevation) axis from −1 to 1, ticked every 30° of elevation. */
+    private static final class ElevationAxis extends NumberAxis {
+        private static final long serialVersionUID = 1L;
+
+        ElevationAxis(String label) {
+            super(label);
+            setRange(-1, 1);
+        }
+
+        @Override
+        @SuppressWarnings("rawtypes")
+        public java.util.List refreshTicks(java.awt.Graphics2D g2, org.jfree.chart.axis.AxisState state, java.awt.geom.Rectangle2D area,
+                                          RectangleEdge edge) {
+            java.util.List<org.jfree.chart.axis.NumberTick> ticks = new java.util.ArrayList<>();
+            for (int deg = -90; deg <= 90; deg += 30) {
+                ticks.add(new org.jfree.chart.axis.NumberTick(org.jfree.chart.axis.TickType.MAJOR, Math.sin(Math.toRadians(deg)),
+                    (deg > 0 ? "+" : deg < 0 ? "−" : "") + Math.abs(deg) + "°", org.jfree.chart.ui.TextAnchor.CENTER_RIGHT,
+                    org.jfree.chart.ui.TextAnchor.CENTER, 0.0));
+            }
+            return ticks;
+        }
     }
 
     /** Viridis-like colours from 0 to the upper bound; 0 itself (no force closure) is grey. */

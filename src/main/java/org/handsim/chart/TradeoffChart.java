@@ -5,20 +5,16 @@ import java.awt.Color;
 import java.awt.Font;
 import java.awt.geom.Ellipse2D;
 import java.io.IOException;
-import java.text.DecimalFormat;
-import java.text.DecimalFormatSymbols;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import org.jfree.chart.JFreeChart;
+import org.jfree.chart.LegendItem;
+import org.jfree.chart.LegendItemCollection;
 import org.jfree.chart.axis.LogAxis;
 import org.jfree.chart.axis.NumberTickUnit;
 import org.jfree.chart.labels.XYItemLabelGenerator;
 import org.jfree.chart.plot.XYPlot;
-import org.jfree.chart.title.TextTitle;
-import org.jfree.chart.ui.HorizontalAlignment;
-import org.jfree.chart.ui.RectangleEdge;
 import org.jfree.chart.ui.RectangleInsets;
 import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
@@ -33,7 +29,11 @@ import org.jfree.data.xy.XYSeriesCollection;
  *
  * <p>Point labels never overlap each other or cover a point ({@link LabelPlacingRenderer}): the
  * series of a study often share their x values, so labels placed at a fixed offset ran into
- * each other. The chart keeps a right margin so the last tick label of the x axis is not cut.
+ * each other. When the study has only a few settings, shared by every series (the k of the
+ * k-DOPs), each setting gets its own marker shape, named in the legend, and no point is
+ * labelled: many series' labels of the same few settings piled up in one cluster. The chart
+ * keeps a right margin so the last tick label of the x axis is not cut. Log axes read 10⁻³, 10⁻²,
+ * …; the study's notes are its caption, for the docs (tradeoff.json), not under the plot.
  */
 public final class TradeoffChart {
     static final Color[] PALETTE = {
@@ -56,6 +56,7 @@ public final class TradeoffChart {
         boolean clamped = false;
         XYSeriesCollection data = new XYSeriesCollection();
         LabelPlacingRenderer r = new LabelPlacingRenderer();
+        List<String> settings = sharedSettings(t);   // non-null: one marker shape per setting, no point labels
         List<List<String>> labels = new ArrayList<>();
         int s = 0;
         for (String name : t.series()) {
@@ -74,7 +75,9 @@ public final class TradeoffChart {
                 if (!Double.isFinite(x[i]) || !Double.isFinite(y[i])) continue;
                 if (!(x[i] > 0) || !(y[i] > 0)) clamped = true;
                 points.add(px, py);
-                pointLabels.add(t.labelsEveryPoint() || row.isDefault() || onFront.contains(i) ? row.setting() : null);
+                if (settings != null) r.setItemShape(data.getSeriesCount(), points.getItemCount() - 1, SHAPES[settings.indexOf(row.setting())]);
+                pointLabels.add(settings != null ? null
+                    : t.labelsEveryPoint() || row.isDefault() || onFront.contains(i) ? row.setting() : null);
                 if (row.isDefault()) r.markDefault(data.getSeriesCount(), points.getItemCount() - 1);
             }
             XYSeries front = new XYSeries(name + " (Pareto front)", false, true);
@@ -105,32 +108,72 @@ public final class TradeoffChart {
         r.setDefaultItemLabelsVisible(true);
 
         LogAxis xAxis = new LogAxis(t.xLabel());
-        LogAxis yAxis = new LogAxis(t.yLabel());
+        LogAxis yAxis = new LogAxis(t.yLabel() + (clamped ? ";  0 (exact) drawn on the floor" : ""));
         decades(xAxis, t, t.xColumn(), fx);
         decades(yAxis, t, t.yColumn(), fy);
         XYPlot plot = new XYPlot(data, xAxis, yAxis, r);
         plot.setBackgroundPaint(Color.WHITE);
         plot.setDomainGridlinePaint(new Color(0xdddddd));
         plot.setRangeGridlinePaint(new Color(0xdddddd));
+        LegendItemCollection legend = new LegendItemCollection();
+        for (int i = 0; i < t.series().size(); i++) {
+            LegendItem li = new LegendItem(t.series().get(i), null, null, null, new Ellipse2D.Double(-4, -4, 8, 8), PALETTE[i % PALETTE.length]);
+            legend.add(li);
+        }
+        legend.add(PaperCharts.line("Pareto front (nothing both faster and more exact); lower left is better", Color.GRAY, DASHED));
+        if (settings != null) {
+            for (int i = 0; i < settings.size(); i++) {
+                legend.add(new LegendItem(settings.get(i), null, null, null, SHAPES[i], Color.DARK_GRAY));
+            }
+        }
+        // (String, description, tooltip, url, shapeVisible, shape, shapeFilled, fill, shapeOutlineVisible, outline, outlineStroke, lineVisible, line, lineStroke, linePaint)
+        legend.add(new LegendItem("ringed: the default", null, null, null, true, new Ellipse2D.Double(-6, -6, 12, 12), false, Color.WHITE, true,
+            Color.DARK_GRAY, new BasicStroke(1.5f), false, new java.awt.geom.Line2D.Double(), new BasicStroke(), Color.WHITE));
+        plot.setFixedLegendItems(legend);
         JFreeChart chart = new JFreeChart(t.title(), new Font("SansSerif", Font.BOLD, 16), plot, true);
         chart.setBackgroundPaint(Color.WHITE);
         chart.setPadding(new RectangleInsets(4, 8, 4, 28));   // the last x tick label is centred on the axis end
-        List<String> sub = new ArrayList<>();
-        sub.add("dashed: Pareto front (no other setting is both faster and more exact); lower left is better");
-        if (clamped) sub.add(String.format(java.util.Locale.ROOT, "0 (exact) is drawn at the axis floor (%.0e on x, %.0e on y)", fx, fy));
-        for (Map.Entry<String, String> e : t.notes().entrySet()) sub.add(e.getValue());
-        for (String line : sub) {
-            TextTitle tt = new TextTitle(line, new Font("SansSerif", Font.PLAIN, 11));
-            tt.setPosition(RectangleEdge.BOTTOM);
-            tt.setHorizontalAlignment(HorizontalAlignment.LEFT);
-            chart.addSubtitle(tt);
-        }
         return chart;
+    }
+
+    static final BasicStroke DASHED = new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1f, new float[] {6f, 4f}, 0f);
+
+    /** Marker shapes for the settings of a study with few settings (8 px across). */
+    static final java.awt.Shape[] SHAPES = {
+        new Ellipse2D.Double(-4, -4, 8, 8),
+        new java.awt.Rectangle(-4, -4, 8, 8),
+        poly(new double[] {0, 4.5, -4.5}, new double[] {-5, 3.5, 3.5}),          // triangle up
+        poly(new double[] {0, 5, 0, -5}, new double[] {-5, 0, 5, 0}),             // diamond
+        poly(new double[] {0, 4.5, -4.5}, new double[] {5, -3.5, -3.5}),          // triangle down
+        poly(new double[] {-5, -1.5, 0, 1.5, 5, 1.5, 0, -1.5}, new double[] {0, -1.5, -5, -1.5, 0, 1.5, 5, 1.5}),   // star
+    };
+
+    private static java.awt.Shape poly(double[] x, double[] y) {
+        java.awt.geom.Path2D.Double p = new java.awt.geom.Path2D.Double();
+        p.moveTo(x[0], y[0]);
+        for (int i = 1; i < x.length; i++) p.lineTo(x[i], y[i]);
+        p.closePath();
+        return p;
+    }
+
+    /**
+     * The settings, in order of appearance, when there are at most {@link #SHAPES} of them and
+     * each is used by more than one series (then shapes name them better than labels); else null.
+     */
+    static List<String> sharedSettings(StudyTable t) {
+        if (t.series().size() < 2) return null;
+        List<String> s = new ArrayList<>();
+        for (StudyTable.Row row : t.rows()) if (!s.contains(row.setting())) s.add(row.setting());
+        if (s.size() > SHAPES.length) return null;
+        for (String setting : s) {
+            if (t.rows().stream().filter(r -> r.setting().equals(setting)).map(StudyTable.Row::series).distinct().count() < 2) return null;
+        }
+        return s;
     }
 
     /**
      * Spans the axis over whole decades around the column's values (at least two labelled
-     * ticks), labelled 1E-3, 1E-2, …
+     * ticks), labelled 10⁻³, 10⁻², …
      */
     static void decades(LogAxis a, StudyTable t, int column, double floor) {
         double lo = Double.POSITIVE_INFINITY, hi = 0;
@@ -147,7 +190,8 @@ public final class TradeoffChart {
         a.setSmallestValue(Math.pow(10, l - 1));
         a.setRange(Math.pow(10, l), Math.pow(10, h));
         a.setTickUnit(new NumberTickUnit(Math.max(1, Math.ceil((h - l) / 10))));
-        a.setNumberFormatOverride(new DecimalFormat("0E0", DecimalFormatSymbols.getInstance(java.util.Locale.ROOT)));
+        a.setNumberFormatOverride(new PowerOfTen());
+        a.setTickLabelFont(new Font("SansSerif", Font.PLAIN, 13));   // superscript exponents need the size to be read
         a.setMinorTickMarksVisible(true);
         a.setLabelFont(new Font("SansSerif", Font.PLAIN, 13));
     }

@@ -6,6 +6,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.InputRanges;
+import java.util.List;
+import org.handsim.sim.NotFound;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.UnitRule;
 import org.handsim.util.Decimal;
 import org.handsim.util.InputFile;
 import org.handsim.util.OutputSet;
@@ -43,7 +47,7 @@ final class Args {
      * ({@link InputFile#problem}: a FIFO, directory or device is refused before it is opened).
      */
     static void inputFile(Path file) {
-        String why = InputFile.problem(file);
+        String why = NotFound.problem(file);
         if (why != null) throw new CliError(CliError.LOAD, "handsim: " + file + ": " + why);
     }
 
@@ -80,6 +84,35 @@ final class Args {
             throw CliError.usage("handsim: --friction " + FrictionCone.muProblem(friction));
         }
         if (edges != null && (edges < 1 || edges > 1024)) throw CliError.usage("handsim: --edges must be between 1 and 1024, got " + edges);
+    }
+
+    /**
+     * {@code --units}: {@code auto} (null: judged by the file's size, {@link UnitRule}) or mm, cm, m.
+     *
+     * @throws CliError (exit 2) for anything else
+     */
+    static Scenario.Units units(String text) {
+        try {
+            return UnitRule.parse(text);
+        } catch (IllegalArgumentException e) {
+            throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + SafeText.quote(text) + "'");
+        }
+    }
+
+    /** The help of every {@code --units} option (the same rule everywhere: {@link UnitRule}). */
+    static final String UNITS_HELP_1 = "unit of the object file's coordinates. auto";
+    static final String UNITS_HELP_2 = "(default): metres up to 2 units across, else mm";
+    static final String UNITS_HELP_3 = "(GraspIt!'s unit), as the window's import";
+
+    /**
+     * What the user typed for an option (its last occurrence), for error messages: "got 0" for
+     * {@code --dt 0}, not the parsed double's "0.0".
+     */
+    static String typed(picocli.CommandLine.Model.CommandSpec spec, String option) {
+        picocli.CommandLine.ParseResult r = spec.commandLine().getParseResult();
+        picocli.CommandLine.Model.OptionSpec o = r == null ? null : r.matchedOption(option);
+        List<String> v = o == null ? List.of() : o.stringValues();
+        return v.isEmpty() ? "(none)" : SafeText.quote(v.get(v.size() - 1));
     }
 
     /** Formats a number for CSV output ({@link Decimal}: shortest round trip, integers plain); refuses non-finite values. */

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Path;

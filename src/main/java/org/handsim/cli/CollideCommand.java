@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import org.handsim.util.SafeText;
 import org.handsim.util.Decimal;
 import java.nio.file.Path;
@@ -23,11 +24,15 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import org.handsim.sim.MeshFiles;
+import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
+import org.handsim.sim.UnitRule;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 
 /**
- * {@code handsim collide A.wrl B.wrl [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}: the
- * contact geometry of two VRML objects (paper Section IV, first two steps).
+ * {@code handsim collide A B [--units auto|mm|cm|m] [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}:
+ * the contact geometry of two objects (VRML97, OBJ or STL; paper Section IV, first two steps).
  */
 @Command(name = "collide", mixinStandardHelpOptions = true,
     description = {"Intersects two objects (VRML97 .wrl, OBJ .obj or STL .stl) with k-DOP trees (B placed by --pose-b).",
@@ -37,7 +42,8 @@ import org.handsim.sim.ScenarioException;
         "pairs: intersecting triangle pairs; segments: their intersection segments;",
         "patches: connected sets of segments, one point contact each: centre of the",
         "bounding box, unit normal out of B (from B's triangles), area estimate;",
-        "A's frame, metres. build_ms: both trees; query_us_median: the tree query",
+        "A's frame, metres (each file's coordinates times its unit, --units).",
+        "build_ms: both trees; query_us_median: the tree query",
         "including B's placement, once the JIT has compiled it: warm-up of at least",
         "0.5 s and 10 000 queries, then until the JIT has been idle for 0.25 s (at",
         "most 5 s), then the median of --repeat timed batches of about 1 ms each",
@@ -47,11 +53,15 @@ import org.handsim.sim.ScenarioException;
 public final class CollideCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "A.wrl", description = "object A (its frame is the output frame)")
+    @Parameters(index = "0", paramLabel = "A", description = "object A: .wrl, .obj or .stl (its frame is the output frame)")
     Path fileA;
 
-    @Parameters(index = "1", paramLabel = "B.wrl", description = "object B")
+    @Parameters(index = "1", paramLabel = "B", description = "object B: .wrl, .obj or .stl")
     Path fileB;
+
+    @Option(names = "--units", paramLabel = "auto|mm|cm|m", defaultValue = "auto",
+        description = {Args.UNITS_HELP_1, Args.UNITS_HELP_2, Args.UNITS_HELP_3, "(for both files; auto judges each by itself)"})
+    String units;
 
     @Option(names = "--pose-b", paramLabel = "tx,ty,tz,rx,ry,rz",
         description = "B in A's frame: translation (m) and axis-angle vector (rad); default 0,0,0,0,0,0")
@@ -88,7 +98,12 @@ public final class CollideCommand implements Callable<Integer> {
         if (!ok) throw CliError.usage("handsim: --k must be 6, 14, 18 or 26, got " + kText);
         int repeat = integer("--repeat", repeatText);
         if (repeat < 1 || repeat > 10_000) throw CliError.usage("handsim: --repeat must be in 1..10000, got " + repeatText);
-        TriangleMesh a = loadMesh(fileA), b = loadMesh(fileB);
+        Scenario.Units chosen = Args.units(units);
+        StringWriter notices = new StringWriter();   // said once both files have loaded: an error stays one line
+        PrintWriter said = new PrintWriter(notices);
+        TriangleMesh a = loadMesh(fileA, chosen, said), b = loadMesh(fileB, chosen, said);
+        said.flush();
+        spec.commandLine().getErr().print(notices);
         RigidTransform pose = RigidTransform.fromPose(p[0], p[1], p[2], p[3], p[4], p[5]);
         java.io.PrintWriter err = spec.commandLine().getErr();
         Map<String, Object> json;
@@ -111,12 +126,6 @@ public final class CollideCommand implements Callable<Integer> {
         }
     }
 
-    /**
-     * Loads an object file — VRML97, OBJ or STL ({@link MeshFiles}) — as one triangle mesh in the
-     * file's frame (every transform applied; vertices as in the file, not welded).
-     *
-     * @throws CliError exit 3 with FILE:LINE:COL: message (binary STL: FILE: byte N: message)
-     */
     /** Segments round VRML Sphere, Cylinder and Cone nodes (the VRML loader's default). */
     static final int VRML_DIVISIONS = 32;
 
@@ -131,10 +140,22 @@ public final class CollideCommand implements Callable<Integer> {
         progress.flush();
     }
 
-    static TriangleMesh loadMesh(Path file) {
+    /**
+     * Loads an object file — VRML97, OBJ or STL ({@link MeshFiles}) — as one triangle mesh in
+     * metres in the file's frame (every transform applied; vertices as in the file times its
+     * unit, not welded). The unit is {@code chosen}, or (null) judged by the file's size with a
+     * notice on {@code err} ({@link UnitRule}).
+     *
+     * @throws CliError exit 3 with FILE:LINE:COL: message (binary STL: FILE: byte N: message)
+     */
+    static TriangleMesh loadMesh(Path file, Scenario.Units chosen, PrintWriter err) {
         Args.inputFile(file);
         try {
-            return MeshFiles.load(file, VRML_DIVISIONS, 1.0).mesh();
+            TriangleMesh m = MeshFiles.load(file, VRML_DIVISIONS, chosen != null ? chosen.metres() : 1.0).mesh();
+            UnitRule.Choice u = UnitRule.resolve(m, chosen);
+            if (!u.bySize()) return m;
+            err.println(UnitRule.notice("handsim collide", file, u.units(), "--units"));
+            return u.units() == Scenario.Units.M ? m : MeshFiles.load(file, VRML_DIVISIONS, u.units().metres()).mesh();
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage(), e);
         }

@@ -68,21 +68,23 @@ public final class GraspCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario());
+        java.io.PrintWriter err = spec.commandLine().getErr();
+        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario(), "handsim grasp", err);
         scenario = withFriction(scenario, friction, edges);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
         Args.outputPath("--chart", chart);
         if (chart != null && chart.getFileName() == null) throw CliError.usage("handsim: --chart must name a file base, got '" + chart + "'");
-        if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + every);
+        if (!(interval > 0) || !Double.isFinite(interval)) throw CliError.usage("handsim: --every must be > 0 seconds, got " + Args.typed(spec, "--every"));
         double mu = scenario.friction();
         int m = scenario.coneEdges();
         HandModel model = Simulation.model(scenario, false);
+        for (String w : model.startWarnings()) err.println("handsim: warning: " + w);
         double end = model.totalSteps() * scenario.dt();
         double until = end;
         if (at != null) {
             if (!(at >= 0) || at > end + 1e-9 * scenario.dt()) {
-                throw CliError.usage("handsim: --at must be in [0, " + (float) end + "] seconds (the scenario's duration), got " + at);
+                throw CliError.usage("handsim: --at must be in [0, " + (float) end + "] seconds (the scenario's duration), got " + Args.typed(spec, "--at"));
             }
             until = at;
         }

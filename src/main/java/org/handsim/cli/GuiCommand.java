@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -70,10 +71,11 @@ public final class GuiCommand implements Callable<Integer> {
             }
         }
         if (measureFps != null && !(measureFps > 0 && measureFps <= 3600)) {
-            throw CliError.usage("handsim: --measure-fps must be in (0, 3600] seconds, got " + measureFps);
+            throw CliError.usage("handsim: --measure-fps must be in (0, 3600] seconds, got " + Args.typed(spec, "--measure-fps"));
         }
         Script actions = null;
         if (script != null) {
+            Args.inputFile(script);   // says where a relative path was looked for
             String text = InputFile.readText(script, Script.MAX_BYTES, "the limit of window scripts");
             try {
                 actions = Script.parse(script.toString(), text);
@@ -81,13 +83,13 @@ public final class GuiCommand implements Callable<Integer> {
                 throw CliError.usage("handsim: " + e.getMessage());
             }
         }
-        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario());
+        Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario(), "handsim gui", err);
         if (GraphicsEnvironment.isHeadless()) {
             throw CliError.usage("handsim gui: no display (DISPLAY is not set or Java runs headless): run it under a virtual display with "
                 + "xvfb-run -a -s '-screen 0 1280x1024x24' handsim gui ..., or use ./handsim gui, which starts Xvfb itself");
         }
         if (object != null) {
-            String why = InputFile.problem(object);
+            String why = NotFound.problem(object);
             if (why != null) throw new CliError(CliError.LOAD, "handsim: --object " + object + ": " + why);
         }
         Path scriptDir = script != null ? script.toAbsolutePath().getParent() : null;

@@ -134,7 +134,26 @@ public final class HandSim implements Runnable {
         cl.setUsageHelpWidth(HELP_WIDTH);
         cl.setUsageHelpAutoWidth(false);
         applySynopsis(cl);
+        for (CommandLine sub : cl.getSubcommands().values()) oneParagraphDescriptions(sub.getCommandSpec());
         return cl;
+    }
+
+    /**
+     * Makes each option's and parameter's description one paragraph that picocli wraps itself.
+     * Written as several strings (the source's line breaks), picocli starts each at the column
+     * and indents only its own wrapped overflow, so one description came out indented two ways.
+     */
+    private static void oneParagraphDescriptions(CommandLine.Model.CommandSpec spec) {
+        for (CommandLine.Model.OptionSpec o : new ArrayList<>(spec.options())) {
+            if (o.description().length < 2) continue;
+            spec.remove(o);
+            spec.addOption(o.toBuilder().description(String.join(" ", o.description())).build());
+        }
+        for (CommandLine.Model.PositionalParamSpec p : new ArrayList<>(spec.positionalParameters())) {
+            if (p.description().length < 2) continue;
+            spec.remove(p);
+            spec.addPositional(p.toBuilder().description(String.join(" ", p.description())).build());
+        }
     }
 
     private static void applySynopsis(CommandLine cl) {

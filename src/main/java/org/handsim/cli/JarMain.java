@@ -21,9 +21,7 @@ public final class JarMain {
         String[] a = args;
         if (a.length == 0) {
             if (GraphicsEnvironment.isHeadless() || System.getenv("DISPLAY") == null && isX11()) {
-                System.err.println("handsim: no display for the window; the commands work without one, e.g.\n"
-                    + "  java -jar handsim.jar run --out out/paper     the paper's experiment\n"
-                    + "  java -jar handsim.jar --help                  every command");
+                System.err.println(noDisplay(jarName()));
                 System.exit(CliError.USAGE);
             }
             a = new String[] {"gui"};
@@ -34,6 +32,26 @@ public final class JarMain {
         t.start();
         t.join();
         System.exit(code[0]);
+    }
+
+    /** What to do without a display, with the jar's own file name in the example commands. */
+    static String noDisplay(String jar) {
+        String run = "  java -jar " + jar + " run --out out/paper", help = "  java -jar " + jar + " --help";
+        int w = Math.max(run.length(), help.length()) + 4;
+        return "handsim: no display for the window; the commands work without one, e.g.\n"
+            + String.format("%-" + w + "s%s%n%-" + w + "s%s", run, "the paper's experiment", help, "every command");
+    }
+
+    /** The running jar's file name (what the user typed after -jar), or the built name when it cannot be told. */
+    static String jarName() {
+        try {
+            java.nio.file.Path p = java.nio.file.Path.of(JarMain.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            if (p.getFileName() != null && p.getFileName().toString().endsWith(".jar")) return p.getFileName().toString();
+        } catch (java.net.URISyntaxException | RuntimeException e) {
+            // fall through: the name gradle fatJar gives it
+        }
+        String v = JarMain.class.getPackage() != null ? JarMain.class.getPackage().getImplementationVersion() : null;
+        return "handsim-" + (v != null ? v : "VERSION") + "-all.jar";
     }
 
     private static boolean isX11() {

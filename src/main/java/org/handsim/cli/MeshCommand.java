@@ -13,6 +13,8 @@ import org.handsim.mesh.ObjWriter;
 import org.handsim.mesh.StlWriter;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.sim.MeshFiles;
+import org.handsim.sim.Scenario;
+import org.handsim.sim.UnitRule;
 import org.handsim.sim.ScenarioException;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
@@ -23,19 +25,21 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code handsim mesh FILE [--divisions N] [--scale S] [--obj OUT.obj] [--stl OUT.stl]}: loads a
+ * {@code handsim mesh FILE [--units auto|mm|cm|m] [--divisions N] [--scale S] [--obj OUT.obj] [--stl OUT.stl]}: loads a
  * VRML97, OBJ or STL file as scenarios do ({@link MeshFiles}: VrmlLoader or Java3D's ObjectFile ⇒
  * BranchGroup ⇒ TessellationWalk, or the STL reader ⇒ TriangleMesh), welds coincident vertices
  * and prints one JSON line:
  *
  * <pre>{"file":..,"shapes":n,"triangles":n,"vertices":n,"degenerate":n,"area_m2":A,
- *  "volume_m3":V|null,"closed":bool,"bounds":[[xmin,ymin,zmin],[xmax,ymax,zmax]],"load_ms":t}</pre>
+ *  "volume_m3":V|null,"closed":bool,"bounds":[[xmin,ymin,zmin],[xmax,ymax,zmax]],"load_ms":t,"units":u}</pre>
  *
  * shapes = Shape3D instances with surface geometry (each USE counted; OBJ: one per group; STL: 1); triangles, vertices,
  * area, bounds: of the welded mesh; degenerate = zero-area triangles dropped (by the walk, plus
  * those whose corners the weld merged); volume: the enclosed volume if the welded mesh is closed
  * (every edge shared by exactly two oppositely oriented triangles), else null; load_ms: parse,
- * scene building and tessellation walk. Warnings go to standard error, one per line.
+ * scene building and tessellation walk; units: the unit of the file's coordinates ({@link UnitRule}:
+ * {@code --units}, by default judged from the size, with a notice on standard error). Warnings go to
+ * standard error, one per line.
  */
 @Command(name = "mesh", mixinStandardHelpOptions = true,
     description = {"Loads a VRML97, OBJ or STL file and prints its triangle mesh statistics.",
@@ -44,7 +48,8 @@ import picocli.CommandLine.Spec;
         "Prints one JSON line (volume_m3 is null unless the mesh is closed):",
         "  {\"file\":..,\"shapes\":n,\"triangles\":n,\"vertices\":n,\"degenerate\":n,",
         "   \"area_m2\":A,\"volume_m3\":V|null,\"closed\":bool,",
-        "   \"bounds\":[[xmin,ymin,zmin],[xmax,ymax,zmax]],\"load_ms\":t}",
+        "   \"bounds\":[[xmin,ymin,zmin],[xmax,ymax,zmax]],\"load_ms\":t,\"units\":u}",
+        "in metres: the file's coordinates times its unit (--units) times --scale.",
         "Coincident vertices are welded before the closed-ness test. Warnings go to",
         "standard error. Exit codes: 0 ok, 2 bad arguments, 3 file cannot be loaded",
         "(FILE:LINE:COL: message; binary STL: FILE: byte N: message)."})
@@ -60,8 +65,16 @@ public final class MeshCommand implements Callable<Integer> {
     int divisions;
 
     @Option(names = "--scale", paramLabel = "S", defaultValue = "1",
-        description = "multiply coordinates by S to get metres (e.g. 0.001 for millimetres; default ${DEFAULT-VALUE})")
+        description = {"multiply the coordinates by S after the units (default 1;",
+            "--scale alone, without --units, converts to metres by itself)"})
     double scale;
+
+    @Option(names = "--units", paramLabel = "auto|mm|cm|m", defaultValue = "auto",
+        description = {Args.UNITS_HELP_1, Args.UNITS_HELP_2, Args.UNITS_HELP_3})
+    String units;
+
+    /** Metres per file unit times --scale: what the coordinates are multiplied by. */
+    private double factor = 1;
 
     @Option(names = "--obj", paramLabel = "OUT.obj", description = "also write the welded triangles as Wavefront OBJ")
     Path obj;
@@ -78,7 +91,7 @@ public final class MeshCommand implements Callable<Integer> {
         int other = divisions == 3 ? 4 : 3;
         TriangleMesh a = r.mesh(), b;
         try {
-            b = MeshFiles.load(file, other, scale).mesh();
+            b = MeshFiles.load(file, other, factor).mesh();
         } catch (RuntimeException e) {
             return true;   // cannot tell: say nothing
         }
@@ -94,13 +107,21 @@ public final class MeshCommand implements Callable<Integer> {
         Args.notTheInput(file, "FILE", Args.outputFile("--stl", stl), "--stl");
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        Scenario.Units chosen = Args.units(units);
+        // --scale alone keeps its old meaning (the whole conversion to metres): no judging by size
+        if (chosen == null && spec.commandLine().getParseResult().hasMatchedOption("--scale")) chosen = Scenario.Units.M;
         long t0 = System.nanoTime();
         MeshFiles.Loaded r;
+        UnitRule.Choice unit;
         try {
-            r = MeshFiles.load(file, divisions, scale);
+            r = MeshFiles.load(file, divisions, chosen != null ? chosen.metres() * scale : 1.0);
+            unit = UnitRule.resolve(r.mesh(), chosen);
+            factor = unit.units().metres() * scale;
+            if (chosen == null && factor != 1.0) r = MeshFiles.load(file, divisions, factor);
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage(), e);
         }
+        if (unit.bySize()) err.println(UnitRule.notice("handsim mesh", file, unit.units(), "--units"));
         for (String w : r.warnings()) err.println(w);
         double loadMs = (System.nanoTime() - t0) / 1e6;
         if (spec.commandLine().getParseResult().hasMatchedOption("--divisions") && !dependsOnDivisions(r)) {
@@ -120,6 +141,7 @@ public final class MeshCommand implements Callable<Integer> {
         json.put("closed", closed);
         json.put("bounds", mesh.bounds());
         json.put("load_ms", Math.round(loadMs * 10) / 10.0);
+        json.put("units", unit.units().id());
         if (obj != null) {
             try (AtomicFile f = new AtomicFile(obj)) {
                 ObjWriter.write(f.writer(), List.of(mesh));

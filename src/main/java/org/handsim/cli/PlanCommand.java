@@ -8,13 +8,13 @@ import java.util.concurrent.Callable;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
-import org.handsim.plan.DirectionMap;
 import org.handsim.plan.PlanJob;
 import org.handsim.plan.PlanOutput;
 import org.handsim.plan.PlanSpec;
 import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
 import org.handsim.sim.Scenario;
+import org.handsim.sim.UnitRule;
 import org.handsim.sim.ScenarioException;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
@@ -62,10 +62,7 @@ public final class PlanCommand implements Callable<Integer> {
     Double friction;
 
     @Option(names = "--units", paramLabel = "auto|mm|cm|m", defaultValue = "auto", description = {
-        "unit of the object file's coordinates. auto",
-        "(default): a template's object.units; an object",
-        "file by its size (metres up to 2 units across,",
-        "else mm, as the window's import)"})
+        Args.UNITS_HELP_1, Args.UNITS_HELP_2, Args.UNITS_HELP_3, "(a template's object.units when it has one)"})
     String units;
 
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default out/plan-<name>)")
@@ -92,8 +89,7 @@ public final class PlanCommand implements Callable<Integer> {
         }
         EngineChoice eng = EngineChoice.of(engine, master, threads, Runtime.getRuntime().availableProcessors());
         Args.frictionAndEdges(friction, null);
-        Scenario.Units unit = units.equals("auto") ? null : Scenario.Units.of(units);
-        if (unit == null && !units.equals("auto")) throw CliError.usage("handsim: --units must be auto, mm, cm or m, got '" + units + "'");
+        Scenario.Units unit = Args.units(units);
         PlanSpec planSpec;
         TrialRunner runner;
         try {
@@ -103,8 +99,11 @@ public final class PlanCommand implements Callable<Integer> {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
         }
         Path dir = out != null ? Args.outputPath("--out", out) : Path.of("out", "plan-" + planSpec.name());
-        if (unit == null && !target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json")) {
-            err.println("handsim plan: " + target.getFileName() + ": units " + planSpec.units().id() + " by its size (--units to choose)");
+        if (unit == null) {
+            boolean json = target.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json");
+            String notice = json ? Scenario.load(target).unitNotice("handsim plan")
+                : UnitRule.notice("handsim plan", target, planSpec.units(), "--units");
+            if (notice != null) err.println(notice);
         }
         ProgressBar bar = new ProgressBar(err, "handsim plan " + planSpec.name());
         long t0 = System.nanoTime();
@@ -155,7 +154,7 @@ public final class PlanCommand implements Callable<Integer> {
         set.add(dir.resolve("epsilon-histogram"), 900, 550, () -> PlanCharts.epsilonHistogram("Grasp quality over " + s.trials()
             + " trials (" + s.name() + ", seed " + s.seed() + ")", h.width(), counts, h.noClosure(), o.failed()));
         set.add(dir.resolve("epsilon-directions"), 1000, 560, () -> PlanCharts.directionMap("Best ε by approach direction ("
-            + s.name() + ", " + s.trials() + " trials)", d.best(), d.count(), DirectionMap.CELL_DEG));
+            + s.name() + ", " + s.trials() + " trials)", d));
         String missing = Charts.finish(set, err);
         if (missing == null) return true;
         summary.put(Charts.MISSING_KEY, missing);

@@ -1,5 +1,6 @@
 package org.handsim.cli;
 
+import org.handsim.sim.NotFound;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -54,7 +55,7 @@ import picocli.CommandLine.Spec;
         "  0,0,0.03,0,0,-1       0,0,-0.03,0,0,1",
         "  handsim quality cube.csv --radius 0.052 --edges 4",
         "  {\"contacts\":6,\"wrenches\":24,\"force_closure\":true,",
-        "   \"epsilon\":0.1665433468816228,\"volume\":0.0600072542102868,",
+        "   \"epsilon\":0.16654334688162284,\"volume\":0.060007254210286784,",
         "   \"facets\":148,\"time_us_median\":...}",
         "  (epsilon = mu a / (sqrt(3) R), a = 0.03: the support in the torque",
         "  direction (0,0,0,1,1,-1)/sqrt(3); WrenchSpaceTest derives it.)",

@@ -76,9 +76,9 @@ public final class RunCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
         Path file = scenarioFile != null ? scenarioFile : Home.paperScenario();
-        Scenario scenario = loadScenario(file);
+        Scenario scenario = loadScenario(file, "handsim run", err);
         if (dt != null) {
-            if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
+            if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + Args.typed(spec, "--dt"));
             try {
                 scenario = scenario.withDt(dt);
             } catch (IllegalArgumentException e) {   // too many steps for the scenario's duration
@@ -229,6 +229,14 @@ public final class RunCommand implements Callable<Integer> {
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
+    }
+
+    /** {@link #loadScenario(Path)}, then the unit rule's notice on {@code err} when the object's size chose its unit. */
+    static Scenario loadScenario(Path file, String who, PrintWriter err) {
+        Scenario s = loadScenario(file);
+        String notice = s.unitNotice(who);
+        if (notice != null) err.println(notice);
+        return s;
     }
 
     static String headline(HandModel m, double wall) {

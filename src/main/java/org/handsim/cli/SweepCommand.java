@@ -68,7 +68,33 @@ public final class SweepCommand implements Callable<Integer> {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
         Args.frictionAndEdges(friction, edges);
+        unitNotices(sweep, spec.commandLine().getErr());
         return SweepJob.run(this, sweep, sweep.threads());
+    }
+
+    /**
+     * The unit rule's notices and size warnings of the sweep's objects, each distinct line once,
+     * before the runs (which may run elsewhere: Spark). A run that cannot be built is skipped
+     * here: its row says why.
+     */
+    static void unitNotices(Sweep sweep, java.io.PrintWriter err) {
+        java.util.Set<String> said = new java.util.LinkedHashSet<>();
+        for (Sweep.Run run : sweep.runs()) {
+            try {
+                Scenario s = run.scenario().get();
+                Scenario.ObjectPlacement o = s.object();
+                if (o == null) continue;
+                String notice = s.unitNotice("handsim sweep");
+                if (notice != null) said.add(notice);
+                String size = org.handsim.sim.UnitRule.sizeWarning(o.file(),
+                    org.handsim.sim.SceneGeometry.mesh(o.file(), o.divisions(), o.meshScale()), o.units());
+                if (size != null) said.add("handsim: warning: " + run.label() + ": " + size);
+            } catch (RuntimeException e) {
+                // the run's row reports it
+            }
+        }
+        said.forEach(err::println);
+        err.flush();
     }
 
     static String runOne(Sweep.Run run, Double friction, Integer edges) {

@@ -100,8 +100,8 @@ public final class SwingCommand implements Callable<Integer> {
         double[] q0 = Args.numbers("--q", q, 3, InputRanges.JOINT_ANGLE);
         double[] qd0 = Args.numbers("--qd", qd, 3, InputRanges.JOINT_SPEED);
         double[] g = Args.numbers("--gravity", gravity, 3, InputRanges.GRAVITY);
-        if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + dt);
-        if (!(duration > 0) || duration > 3600) throw CliError.usage("handsim: --duration must be in (0, 3600] seconds, got " + duration);
+        if (!(dt > 0) || dt > 0.1) throw CliError.usage("handsim: --dt must be in (0, 0.1] seconds, got " + Args.typed(spec, "--dt"));
+        if (!(duration > 0) || duration > 3600) throw CliError.usage("handsim: --duration must be in (0, 3600] seconds, got " + Args.typed(spec, "--duration"));
         double steps = Math.ceil(duration / dt - 1e-9);   // as a double: (long) of 3.6e303 would be 9223372036854775807
         if (steps > MAX_STEPS) {
             throw CliError.usage("handsim: --dt " + Decimal.format(dt) + " for --duration " + Decimal.format(duration) + " s needs "

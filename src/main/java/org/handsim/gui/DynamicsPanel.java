@@ -265,7 +265,7 @@ public final class DynamicsPanel {
 
     /**
      * The Grasp box as one line (the script's {@code log grasp}): {@code force_closure=yes
-     * epsilon=0.1984  volume=0.08472  hold_min=58.84 N  6 contacts as at t = 2.2560 s (evaluated when they change),
+     * epsilon=0.2091  volume=0.08985  hold_min=58.84 N  6 contacts as at t = 4.7000 s (evaluated when they change),
      * μ 0.5, 8 cone edges}.
      */
     public String graspLine() {

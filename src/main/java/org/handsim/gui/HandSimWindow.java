@@ -549,7 +549,8 @@ public final class HandSimWindow {
             original = s;
             scenarioFile = file;
             load(s);
-            status("opened " + file, false);
+            String units = s.unitNotice("opened " + file);   // the unit rule's notice, when the size chose
+            status(units != null ? units : "opened " + file, false);
             return true;
         } catch (ScenarioException e) {
             error("cannot open " + file + ": " + e.getMessage(), "Scenario not opened");

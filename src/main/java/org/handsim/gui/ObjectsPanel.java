@@ -160,7 +160,7 @@ public final class ObjectsPanel {
         CompletableFuture<ObjectPlacer.Placed> found = new CompletableFuture<>();
         Thread t = new Thread(() -> {
             try {
-                Scenario.Units u = wanted != null ? wanted : ObjectPlacer.guessUnits(org.handsim.sim.SceneGeometry.mesh(abs, divisions, 1.0));
+                Scenario.Units u = org.handsim.sim.UnitRule.resolve(abs, divisions, wanted).units();
                 found.complete(ObjectPlacer.place(s, abs, divisions, sc, u));
             } catch (RuntimeException e) {
                 found.completeExceptionally(e);

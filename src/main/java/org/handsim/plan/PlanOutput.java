@@ -40,7 +40,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     private final Writer w;
     private final PriorityQueue<TrialResult> best = new PriorityQueue<>(BETTER_FIRST.reversed());
     private final EpsilonHistogram histogram = new EpsilonHistogram();
-    private final DirectionMap directions = new DirectionMap();
+    private final DirectionMap directions;
     private final Consumer<Integer> progress;
     private long rows, failed, forceClosure;
     private int expected;
@@ -66,6 +66,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         this.published = published;
         this.scenarios = scenarios;
         this.progress = progress;
+        this.directions = new DirectionMap(scenarios.spec().trials());   // cells sized to the trial count
         this.csv = new AtomicFile(dir.resolve("plan.csv"));
         this.w = csv.writer();
         w.write(TrialResult.HEADER);

@@ -1,16 +1,16 @@
 package org.handsim.plan;
 
+import org.handsim.sim.NotFound;
 import java.io.Serializable;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.handsim.grasp.FrictionCone;
-import org.handsim.sim.ObjectPlacer;
+import org.handsim.sim.UnitRule;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.ScenarioException;
 import org.handsim.sim.SceneGeometry;
-import org.handsim.util.InputFile;
 import org.handsim.util.FileName;
 import org.handsim.util.Json;
 import org.handsim.util.JsonWriter;
@@ -76,13 +76,13 @@ public record PlanSpec(String name, String target, String templateJson, String t
      *
      * @param units the object file's unit, written into the template ({@code object.units}); null
      *              ("auto"): a scenario template's own {@code object.units}, and for an object file
-     *              the unit its size suggests ({@link ObjectPlacer#guessUnits}: metres for a model at
+     *              the unit its size suggests ({@link UnitRule}: metres for a model at
      *              most 2 units across, else millimetres, as the window's import does) — so a
      *              millimetre STL (GraspIt!'s unit) is planned at its real size, not 1000 times it
      */
     public static PlanSpec forTarget(Path target, int trials, long seed, Double mu, int edges, Scenario.Units units) {
         Path abs = target.toAbsolutePath().normalize();
-        String why = InputFile.problem(abs);
+        String why = NotFound.problem(target);
         if (why != null) throw new ScenarioException(target + ": " + why);
         Map<String, Object> t;
         String name;
@@ -101,9 +101,10 @@ public record PlanSpec(String name, String target, String templateJson, String t
         }
         @SuppressWarnings("unchecked")
         Map<String, Object> obj = (Map<String, Object>) t.get("object");
-        if (units == null && !json) units = ObjectPlacer.guessUnits(SceneGeometry.mesh(abs, Scenario.DEFAULT_DIVISIONS, 1.0));
-        // metres is the scenarios' default: written only to override a template's own units
-        if (units != null && (units != Scenario.Units.M || obj.containsKey("units"))) obj.put("units", units.id());
+        // the unit rule (UnitRule): a template's object.units, else the file's size; written into
+        // the template, so the trials and best/*.json read the file in the unit chosen here
+        if (units == null && !json) units = UnitRule.resolve(abs, Scenario.DEFAULT_DIVISIONS, null).units();
+        if (units != null) obj.put("units", units.id());
         double friction = mu != null ? mu : obj.get("friction") instanceof Number ? ((Number) obj.get("friction")).doubleValue()
             : FrictionCone.DEFAULT_MU;
         obj.put("friction", friction);

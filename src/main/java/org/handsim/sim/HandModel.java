@@ -731,12 +731,20 @@ public final class HandModel {
 
     /**
      * What the user should know before trusting the run, one sentence each (shown by
-     * {@code handsim run} on standard error and in summary.json, and by the window): a finger
-     * whose links are already in the object at t = 0 (a misplaced object) gets contact forces
-     * from the first step on, as if it had closed onto it there.
+     * {@code handsim run} on standard error and in summary.json, and by the window): an object
+     * far larger than the hand's workspace ({@link UnitRule#sizeWarning}: a unit mistake, most
+     * likely); a finger whose links are already in the object at t = 0 (a misplaced object) gets
+     * contact forces from the first step on, as if it had closed onto it there.
      */
     public java.util.List<String> startWarnings() {
         java.util.List<String> w = new java.util.ArrayList<>();
+        Scenario.ObjectPlacement o = scenario.object();
+        if (o != null) {
+            // the mesh the run collides with (shared, already loaded): an object far larger than
+            // the hand is almost always a unit mistake, and would run without a contact
+            String size = UnitRule.sizeWarning(o.file(), SceneGeometry.mesh(o.file(), o.divisions(), o.meshScale()), o.units());
+            if (size != null) w.add(size);
+        }
         for (int k = 1; k <= 3; k++) {
             int n = contactsAtStart[k - 1];
             if (n > 0) {
@@ -745,6 +753,12 @@ public final class HandModel {
             }
         }
         return w;
+    }
+
+    /** Whether any finger's links touch the object at t = 0 (the start-in-contact warnings of {@link #startWarnings}). */
+    public boolean startsInContact() {
+        for (int n : contactsAtStart) if (n > 0) return true;
+        return false;
     }
 
     // ------------------------------------------------------------------ read-out

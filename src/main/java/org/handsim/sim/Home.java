@@ -80,6 +80,12 @@ public final class Home {
         }
     }
 
+    /** Whether the data folders in use are the ones unpacked from the runnable jar (not a checkout's). */
+    public static boolean fromRunnableJar() {
+        Path u = unpacked;
+        return u != null && dir().equals(u);
+    }
+
     /** {@code $XDG_CACHE_HOME/handsim} (an absolute XDG_CACHE_HOME), else {@code ~/.cache/handsim}; null without a home. */
     static Path userCache() {
         String xdg = System.getenv("XDG_CACHE_HOME");
@@ -124,7 +130,11 @@ public final class Home {
                 Files.createDirectories(parent, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
             }
             if (!Files.isDirectory(cache)) {
-                Files.createDirectory(cache, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
+                try {
+                    Files.createDirectory(cache, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
+                } catch (java.nio.file.FileAlreadyExistsException raced) {
+                    // another first run made it meanwhile: privateTo below judges it as any existing folder
+                }
             }
         } catch (IOException | UnsupportedOperationException e) {
             return null;

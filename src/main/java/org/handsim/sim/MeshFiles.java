@@ -75,7 +75,7 @@ public final class MeshFiles {
      * @throws ScenarioException {@code FILE:LINE:COL: message} or {@code FILE: byte N: message}
      */
     public static Loaded load(Path file, int divisions, double scale) {
-        String why = InputFile.problem(file);   // a FIFO or device is refused before it is opened
+        String why = NotFound.problem(file);   // a FIFO or device is refused before it is opened
         if (why != null) throw new ScenarioException(file + ":1:1: cannot read the file: " + why);   // the VRML loader's words
         String scaleWhy = MeshLimits.scaleProblem(scale);
         if (scaleWhy != null) throw new IllegalArgumentException("scale " + scaleWhy);

@@ -9,10 +9,8 @@ import org.handsim.mesh.TriangleMesh;
  * the hand, at a sensible size.
  *
  * <h2>Units</h2>
- * A file's unit of length is not written in it. A model whose largest extent is at most
- * {@value #METRES_UP_TO} file units is taken to be in metres (the hand is 0.3 m long); a larger
- * one in millimetres, GraspIt!'s unit and most CAD programs' ({@link #guessUnits}). Centimetres
- * only by choice.
+ * A file's unit of length is not written in it: chosen, or judged from its size by
+ * {@link UnitRule}, the rule every command uses.
  *
  * <h2>Placement</h2>
  * The object keeps its own axes aligned with the palm's; its bounding-box centre is put on the
@@ -20,14 +18,12 @@ import org.handsim.mesh.TriangleMesh;
  * {@value #GAP_M} m above the palm's surface. Then it is moved out along that axis, a step of
  * 5 mm or 5 % of its size at a time, until no link of the hand, at the scenario's start
  * counts, touches it — tested with the simulator's own collision (a {@link HandModel} built for
- * the candidate scene: the start-in-contact test of {@link HandModel#startWarnings()}), so what
+ * the candidate scene: the start-in-contact test of {@link HandModel#startsInContact()}), so what
  * the placement calls clear is what the simulation will find clear.
  */
 public final class ObjectPlacer {
     private ObjectPlacer() {}
 
-    /** Largest extent, in file units, of a model taken to be in metres. */
-    public static final double METRES_UP_TO = 2.0;
     /** Clearance between the palm's surface and the object's lowest point, m. */
     public static final double GAP_M = 0.005;
     /** Most steps out along the palm axis before giving up. */
@@ -42,13 +38,6 @@ public final class ObjectPlacer {
      *                  placement is then the last one tried; the window warns)
      */
     public record Placed(Scenario.ObjectPlacement placement, int steps, boolean clear) {}
-
-    /** The unit a model is probably in, from its size in file units (see the class comment). */
-    public static Scenario.Units guessUnits(TriangleMesh inFileUnits) {
-        double[][] b = inFileUnits.bounds();
-        double extent = Math.max(b[1][0] - b[0][0], Math.max(b[1][1] - b[0][1], b[1][2] - b[0][2]));
-        return extent <= METRES_UP_TO ? Scenario.Units.M : Scenario.Units.MM;
-    }
 
     /** The height of the palm's surface in the palm frame, m (the top of {@code vrml/hand/palm.wrl}). */
     public static double palmTop() {
@@ -85,6 +74,6 @@ public final class ObjectPlacer {
 
     /** True if no link touches the object at the scenario's start (the simulator's own test). */
     public static boolean clear(Scenario s) {
-        return Simulation.model(s.withTorques(false), false).startWarnings().isEmpty();
+        return !Simulation.model(s.withTorques(false), false).startsInContact();
     }
 }

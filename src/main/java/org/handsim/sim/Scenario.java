@@ -36,7 +36,7 @@ import org.handsim.util.JsonObject;
  *   "object": {                                // optional
  *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file; .wrl, .obj or .stl
  *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24,
- *     "units": "m",                            // the file's unit: mm, cm or m (default m)
+ *     "units": "m",                            // the file's unit: auto (default), mm, cm or m
  *     "friction": 0.5 },                       // Coulomb μ of the contacts, ≥ 0 (default 0.5)
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
@@ -73,6 +73,7 @@ public final class Scenario implements Cloneable {
     private boolean writeTrace, writeCharts, computeTorques;
     private int coneEdges = FrictionCone.DEFAULT_EDGES;
     private double defaultFriction = FrictionCone.DEFAULT_MU;   // μ when there is no object
+    private boolean unitsBySize;   // object.units was auto: UnitRule judged the file by its size
     private JsonObject root;
 
     /**
@@ -210,12 +211,16 @@ public final class Scenario implements Cloneable {
             if (scaleWhy != null) throw o.error("scale", scaleWhy);
             int div = o.has("divisions") ? o.integer("divisions") : DEFAULT_DIVISIONS;
             if (div < 3 || div > 1024) throw o.error("divisions", "must be in [3, 1024], got " + div);
-            Units units = Units.M;
-            if (o.has("units")) {
-                units = Units.of(o.string("units"));
-                if (units == null) throw o.error("units", "must be mm, cm or m, got \"" + o.string("units") + "\"");
+            // UnitRule: absent or "auto" is judged by the file's size, as every command does
+            Units chosen = null;
+            if (o.has("units") && !UnitRule.AUTO.equals(o.string("units"))) {
+                chosen = Units.of(o.string("units"));
+                if (chosen == null) throw o.error("units", "must be auto, mm, cm or m, got \"" + o.string("units") + "\"");
             }
             double[] op = pose(o);
+            UnitRule.Choice uc = UnitRule.resolve(f, div, chosen);
+            Units units = uc.units();
+            unitsBySize = uc.bySize();
             object = ObjectPlacement.of(f, java.util.Arrays.copyOfRange(op, 0, 3), java.util.Arrays.copyOfRange(op, 3, 6), scale, div, units)
                 .withFriction(o.has("friction") ? friction(o) : FrictionCone.DEFAULT_MU);
         } else {
@@ -336,6 +341,8 @@ public final class Scenario implements Cloneable {
      *                           before it is opened), too large, not UTF-8 (line and byte)
      */
     public static String readText(Path file) {
+        String why = NotFound.problem(file);   // says where a relative path was looked for
+        if (why != null) throw new ScenarioException(file + ": " + why);
         try {
             return InputFile.readText(file, MAX_FILE_BYTES, "the limit of scenario and sweep files");
         } catch (InputFile.InputFileException e) {
@@ -382,6 +389,22 @@ public final class Scenario implements Cloneable {
     public double friction() { return object != null ? object.friction() : defaultFriction; }
     /** Edges m of the linearised friction cones (default {@link FrictionCone#DEFAULT_EDGES}). */
     public int coneEdges() { return coneEdges; }
+    /**
+     * Whether the object's unit was judged from its file's size ({@code object.units} absent or
+     * {@code auto}: {@link UnitRule}); the commands then print {@link #unitNotice}.
+     */
+    public boolean unitsBySize() { return unitsBySize; }
+
+    /**
+     * The one-line notice that the object's size chose its unit ({@link UnitRule#notice}), or
+     * null when the unit was written or there is no object.
+     *
+     * @param who the command, e.g. {@code handsim run}
+     */
+    public String unitNotice(String who) {
+        return object != null && unitsBySize ? UnitRule.notice(who, object.file(), object.units(), "object.units") : null;
+    }
+
     /** The parsed file (for fields other tools add). */
     public JsonObject json() { return root; }
 
@@ -518,6 +541,7 @@ public final class Scenario implements Cloneable {
     public Scenario withObject(ObjectPlacement placement) {
         Scenario c = copy();
         c.object = placement;
+        c.unitsBySize = false;   // a placement made by the caller carries a chosen unit
         return c;
     }
 

@@ -42,6 +42,9 @@ public final class InputFile {
     /** Bytes of the UTF-8 byte-order mark. */
     private static final byte[] BOM = {(byte) 0xef, (byte) 0xbb, (byte) 0xbf};
 
+    /** {@link #problem}'s words for a path where there is nothing. */
+    public static final String NO_SUCH_FILE = "no such file";
+
     private InputFile() {}
 
     /**
@@ -54,7 +57,7 @@ public final class InputFile {
         try {
             a = Files.readAttributes(file, BasicFileAttributes.class);   // follows links
         } catch (NoSuchFileException e) {
-            return "no such file";
+            return NO_SUCH_FILE;
         } catch (AccessDeniedException e) {
             return "cannot be read (permission denied)";
         } catch (FileSystemException e) {

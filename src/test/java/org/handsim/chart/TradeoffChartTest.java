@@ -9,7 +9,6 @@ import java.util.List;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.axis.LogAxis;
 import org.jfree.chart.plot.XYPlot;
-import org.jfree.chart.title.TextTitle;
 import org.junit.jupiter.api.Test;
 
 /** The table behind a chart and the chart: CSV contract, log axes over whole decades, zero errors, labels. */
@@ -45,11 +44,8 @@ class TradeoffChartTest {
         assertEquals(1e-6, y.getLowerBound(), 1e-20);
         assertEquals(1e-2, y.getUpperBound(), 1e-16);
         assertEquals(1e-6, p.getDataset().getYValue(2, 0), 1e-20, "series b's point");
-        boolean said = false;
-        for (int i = 0; i < c.getSubtitleCount(); i++) {
-            if (c.getSubtitle(i) instanceof TextTitle && ((TextTitle) c.getSubtitle(i)).getText().contains("0 (exact)")) said = true;
-        }
-        assertTrue(said, "the chart says where 0 is drawn");
+        assertTrue(y.getLabel().contains("0 (exact) drawn on the floor"), "the chart says where 0 is drawn: " + y.getLabel());
+        assertEquals(0, c.getSubtitleCount() - 1, "no caption under the plot, only the legend");
     }
 
     @Test
@@ -92,6 +88,9 @@ class TradeoffChartTest {
             for (int j = i + 1; j < boxes.size(); j++) {
                 assertTrue(!boxes.get(i).intersects(boxes.get(j)), "labels " + boxes.get(i) + " and " + boxes.get(j) + " overlap");
             }
+            for (java.awt.geom.Line2D l : r.segmentsDrawn()) {
+                assertTrue(!l.intersects(boxes.get(i)), "label " + boxes.get(i) + " crosses a Pareto front's line");
+            }
         }
         // the x axis ends on a labelled decade: half its label must fit right of the plot
         LogAxis x = (LogAxis) c.getXYPlot().getDomainAxis();
@@ -99,5 +98,69 @@ class TradeoffChartTest {
         double half = g.getFontMetrics(x.getTickLabelFont()).stringWidth(last) / 2.0;
         assertTrue(r.dataArea().getMaxX() + half <= 1000, "the last tick label " + last + " ends at " + (r.dataArea().getMaxX() + half));
         g.dispose();
+    }
+
+    /** Log axes read as a paper writes them. */
+    @Test
+    void logTicksArePowersOfTen() {
+        PowerOfTen f = new PowerOfTen();
+        assertEquals("10⁻¹²", f.format(1e-12));
+        assertEquals("10⁰", f.format(1));
+        assertEquals("10³", f.format(1000));
+        assertEquals("2×10⁻³", f.format(0.002));
+        JFreeChart c = TradeoffChart.create(table());
+        assertEquals("10⁻⁶", ((LogAxis) c.getXYPlot().getRangeAxis()).getNumberFormatOverride().format(1e-6));
+    }
+
+    /**
+     * A study whose few settings every series shares (the k of the k-DOPs over seven objects):
+     * a marker shape per setting, named in the legend, and no point labels — labels of seven
+     * series' "k=18 (default)" and "k=26" piled up in one cluster. Two defaults on one spot get
+     * rings of different sizes, both seen.
+     */
+    @Test
+    void fewSharedSettingsAreShapesInTheLegendAndCoincidentDefaultsBothShow() {
+        StudyTable t = new StudyTable("9-k", "k", List.of("cost_s", "tests"), "cost_s", "tests", "cost", "tests");
+        String[] ks = {"k=6", "k=14", "k=18", "k=26", "brute force"};
+        String[] objects = {"cone", "cube", "mug", "ring", "sphere", "lblock", "cylinder"};
+        for (int o = 0; o < objects.length; o++) {
+            String object = objects[o];
+            for (int i = 0; i < ks.length; i++) {
+                double x = i == 4 ? 1e-2 * (1 + 0.2 * o) : 1e-4 * (1 + 0.1 * i), y = i == 4 ? 1e6 : 200 * (1 + o);
+                // cube and mug: the same default point
+                if (i == 2 && (object.equals("cube") || object.equals("mug"))) { x = 1.3e-4; y = 70; }
+                t.add(object, ks[i], i == 2, x, y);
+            }
+        }
+        JFreeChart c = TradeoffChart.create(t);
+        XYPlot p = c.getXYPlot();
+        LabelPlacingRenderer r = (LabelPlacingRenderer) p.getRenderer();
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(1000, 700, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.awt.Graphics2D g = img.createGraphics();
+        c.draw(g, new java.awt.Rectangle(0, 0, 1000, 700));
+        g.dispose();
+        assertEquals(0, r.labelBoxes().size(), "no point labels");
+        java.util.Set<String> legend = new java.util.HashSet<>();
+        for (int i = 0; i < p.getLegendItems().getItemCount(); i++) legend.add(p.getLegendItems().get(i).getLabel());
+        for (String k : ks) assertTrue(legend.contains(k), "legend names " + k + ": " + legend);
+        // each setting its own shape, the same in every series
+        java.util.Set<String> shapes = new java.util.HashSet<>();
+        for (int i = 0; i < ks.length; i++) shapes.add(r.getItemShape(0, i).getBounds2D().toString() + r.getItemShape(0, i).getClass());
+        assertEquals(ks.length, shapes.size());
+        assertEquals(r.getItemShape(0, 3).getBounds2D(), r.getItemShape(2 * 6, 3).getBounds2D());
+        // seven defaults ringed; the cube's and the mug's on one spot with different radii
+        List<double[]> rings = r.ringsDrawn();
+        assertEquals(7, rings.size());
+        int together = 0;
+        for (int i = 0; i < rings.size(); i++) {
+            for (int k = i + 1; k < rings.size(); k++) {
+                double[] a = rings.get(i), b = rings.get(k);
+                if (Math.hypot(a[0] - b[0], a[1] - b[1]) < 1) {
+                    together++;
+                    assertTrue(Math.abs(a[2] - b[2]) >= 3, "concentric rings of different sizes: " + a[2] + ", " + b[2]);
+                }
+            }
+        }
+        assertEquals(1, together, "the cube's and the mug's defaults share one spot");
     }
 }

@@ -14,6 +14,7 @@ import org.handsim.TestPaths;
 import org.handsim.sim.Recorder;
 import org.handsim.util.Json;
 import org.handsim.util.JsonWriter;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -22,6 +23,7 @@ import org.junit.jupiter.api.Test;
  * completes and its trace has every row; a gzip bomb (1.1 GiB from about 1 MB) is refused with
  * the process under 300 MB resident.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class BoundedMemoryTest {
     static final long MB = 1L << 20;
 

@@ -16,6 +16,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.TestPaths;
 import org.handsim.sim.Home;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -173,6 +174,7 @@ public class CleanOutputTest {
 
     /** Every file of the malformed-VRML tests, through every command that loads VRML: exit 3, one line, no stack trace. */
     @Test
+    @Tag("slow")   // every command on every malformed input: ./test --all (CI)
     void noStackTraceOnAnyMalformedInput() throws Exception {
         Path bad = TestPaths.root().resolve("src/test/resources/vrml/bad");
         List<Path> files = new ArrayList<>();
@@ -233,14 +235,15 @@ public class CleanOutputTest {
     @Test
     void divisionsOnAFixedMeshSayItHaveNoEffect() throws Exception {
         Path cube = TestPaths.root().resolve("vrml/objects/cube.wrl");
-        CliTesting.Run r = CliTesting.run("mesh", cube.toString(), "--divisions", "64");
+        // --units m: the unit chosen, so the unit rule's notice does not join the note
+        CliTesting.Run r = CliTesting.run("mesh", cube.toString(), "--divisions", "64", "--units", "m");
         assertEquals(0, r.code(), r.err());
         assertEquals("handsim mesh: --divisions has no effect: " + cube + " has no Sphere, Cylinder or Cone (a fixed mesh)", r.err());
-        assertEquals("", CliTesting.run("mesh", cube.toString()).err(), "no note without the option");
+        assertEquals("", CliTesting.run("mesh", cube.toString(), "--units", "m").err(), "no note without the option");
         Path dir = Files.createTempDirectory("handsim-sphere");
         try {
             Path sphere = Files.writeString(dir.resolve("sphere.wrl"), "#VRML V2.0 utf8\nShape { geometry Sphere { radius 0.05 } }\n");
-            r = CliTesting.run("mesh", sphere.toString(), "--divisions", "64");
+            r = CliTesting.run("mesh", sphere.toString(), "--divisions", "64", "--units", "m");
             assertEquals(0, r.code(), r.err());
             assertEquals("", r.err(), "a sphere depends on --divisions");
         } finally {

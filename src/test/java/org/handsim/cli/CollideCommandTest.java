@@ -91,7 +91,7 @@ class CollideCommandTest {
         assertEquals("handsim: --repeat must be in 1..10000, got 0", r.err());
         r = run("collide", "a.wrl");
         assertEquals(2, r.code());
-        assertTrue(r.err().contains("B.wrl"), r.err());
+        assertTrue(r.err().contains("Missing required parameter: 'B'"), r.err());
     }
 
     @Test

@@ -53,10 +53,11 @@ class MeshCommandTest {
     @Test
     void boxReportsTheContract() throws IOException {
         Path p = file("box.wrl", "#VRML V2.0 utf8\nShape { geometry Box { size 1 2 3 } }\n");
-        assertEquals(0, run("mesh", p.toString()));
+        // 3 units across would be judged millimetres by its size (UnitRule): this box is in metres
+        assertEquals(0, run("mesh", p.toString(), "--units", "m"));
         assertEquals("", err);
         Map<String, Object> j = json();
-        assertEquals(List.of("file", "shapes", "triangles", "vertices", "degenerate", "area_m2", "volume_m3", "closed", "bounds", "load_ms"),
+        assertEquals(List.of("file", "shapes", "triangles", "vertices", "degenerate", "area_m2", "volume_m3", "closed", "bounds", "load_ms", "units"),
             List.copyOf(j.keySet()));
         assertEquals(p.toString(), j.get("file"));
         assertEquals(1.0, j.get("shapes"));
@@ -89,7 +90,7 @@ class MeshCommandTest {
     void openSurfaceHasNullVolumeAndWarningsGoToStderr() throws IOException {
         Path p = file("open.wrl", "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { solidity 1\n"
             + " coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] } coordIndex [ 0 1 2 ] } }\n");
-        assertEquals(0, run("mesh", p.toString()));
+        assertEquals(0, run("mesh", p.toString(), "--units", "m"));
         Map<String, Object> j = json();
         assertEquals(Boolean.FALSE, j.get("closed"));
         assertTrue(j.containsKey("volume_m3") && j.get("volume_m3") == null);

@@ -60,8 +60,9 @@ class OutputSafetyTest {
             new String[] {"fk", "--input", in.toString(), "--output", dev.toString()},
             new String[] {"ik", "--input", ik.toString(), "--output", dev.toString()},
             new String[] {"id", "--input", id.toString(), "--output", dev.toString()},
-            new String[] {"mesh", cube().toString(), "--stl", dev.toString()},
-            new String[] {"mesh", cube().toString(), "--obj", dev.toString()});
+            // --units m: the unit chosen, so the unit rule's notice does not join the error line
+            new String[] {"mesh", cube().toString(), "--units", "m", "--stl", dev.toString()},
+            new String[] {"mesh", cube().toString(), "--units", "m", "--obj", dev.toString()});
         for (String[] args : writers) {
             CliTesting.Run r = CliTesting.run(args);
             String what = String.join(" ", args);

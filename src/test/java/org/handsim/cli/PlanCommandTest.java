@@ -13,6 +13,7 @@ import org.handsim.sim.HandModel;
 import org.handsim.sim.Scenario;
 import org.handsim.sim.Simulation;
 import org.handsim.plan.PlanTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** {@code handsim plan}: the outputs of a small plan, and one-line errors with exit 2 or 3 for bad targets and options. */
@@ -47,6 +48,7 @@ class PlanCommandTest {
      * (trace on, torques on, no early stop), its grasp has the row's ε, force closure and contacts.
      */
     @Test
+    @Tag("slow")   // a plan, then a run of its best grasp, end to end: ./test --all (CI)
     void bestScenarioReproducesItsRow() throws Exception {
         Path dir = Files.createTempDirectory("plan-best");
         try {
@@ -101,6 +103,7 @@ class PlanCommandTest {
      * metres) runs and its trials find contacts.
      */
     @Test
+    @Tag("slow")   // four plans end to end (the unit rule alone: UnitRuleTest): ./test --all (CI)
     void plansAnObjAndAMillimetreStl() throws Exception {
         Path dir = Files.createTempDirectory("plan-formats");
         try {

@@ -115,7 +115,7 @@ class QualityCommandTest {
     void helpHasTheContractAndAnExample() {
         Run r = run("quality", "--help");
         assertEquals(0, r.code());
-        for (String s : new String[] {"x,y,z,nx,ny,nz", "\"force_closure\"", "time_us_median", "--friction", "--edges", "--center", "--radius", "--repeat", "0.1665433468816228"}) {
+        for (String s : new String[] {"x,y,z,nx,ny,nz", "\"force_closure\"", "time_us_median", "--friction", "--edges", "--center", "--radius", "--repeat", "0.16654334688162284"}) {
             assertTrue(r.out().contains(s), s + " in " + r.out());
         }
     }

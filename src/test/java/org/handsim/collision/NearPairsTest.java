@@ -10,6 +10,7 @@ import java.util.Locale;
 import java.util.SplittableRandom;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.testing.TestEffort;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -172,7 +173,7 @@ class NearPairsTest {
         CollisionResult want = new CollisionResult(), got = new CollisionResult(), first = new CollisionResult();
         double[] pose = new double[12], worldFromA = new double[12], worldFromB = new double[12];
         long steps = 0, withPairs = 0, walks = 0;
-        for (int c = 0; c < 24; c++) {
+        for (int c = 0; c < TestEffort.cases(24); c++) {
             TriangleMesh a = KdopTreeTest.shape(r.nextInt(8), r), b = KdopTreeTest.shape(r.nextInt(8), r);
             KdopTree ta = KdopTree.build(a, 18), tb = KdopTree.build(b, 18);
             CoherentQuery cq = new CoherentQuery();

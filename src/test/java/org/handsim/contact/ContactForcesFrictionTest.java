@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.kinematics.FingerKinematics;
+import org.handsim.testing.TestEffort;
 import org.junit.jupiter.api.Test;
 import org.ojalgo.optimisation.Expression;
 import org.ojalgo.optimisation.ExpressionsBasedModel;
@@ -26,6 +27,9 @@ import org.ojalgo.optimisation.Variable;
  * lies on edge 4's side.
  */
 class ContactForcesFrictionTest {
+    /** Seeded trials of the quadratic-program comparisons: 300 in ./test --all, a quarter in ./test. */
+    private static final int TRIALS = TestEffort.cases(300);
+
     static final int M = 8;
     static final double MU = 0.5, TAU = 1.26;
 
@@ -146,7 +150,7 @@ class ContactForcesFrictionTest {
         Random rnd = new Random(20260412);
         ContactForces cf = new ContactForces();
         int compared = 0;
-        for (int trial = 0; trial < 300; trial++) {
+        for (int trial = 0; trial < TRIALS; trial++) {
             double[] frames = new double[48];
             FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
                 Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
@@ -189,7 +193,7 @@ class ContactForcesFrictionTest {
             }
             compared++;
         }
-        assertTrue(compared > 250, "compared " + compared);
+        assertTrue(compared > TRIALS * 5 / 6, "compared " + compared);
     }
 
     /**
@@ -245,7 +249,7 @@ class ContactForcesFrictionTest {
         Random rnd = new Random(20260518);
         ContactForces cf = new ContactForces();
         int compared = 0, infeasible = 0;
-        for (int trial = 0; trial < 300; trial++) {
+        for (int trial = 0; trial < TRIALS; trial++) {
             double[] frames = new double[48];
             FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
                 Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
@@ -274,8 +278,8 @@ class ContactForcesFrictionTest {
             }
             compared++;
         }
-        assertTrue(compared > 250, "compared " + compared);
-        assertTrue(infeasible > 100, "torques no cone forces carry: " + infeasible);
+        assertTrue(compared > TRIALS * 5 / 6, "compared " + compared);
+        assertTrue(infeasible > TRIALS / 3, "torques no cone forces carry: " + infeasible);
     }
 
     /**
@@ -293,7 +297,7 @@ class ContactForcesFrictionTest {
         Random rnd = new Random(20260501);
         ContactForces cf = new ContactForces();
         int compared = 0, clamped = 0;
-        for (int trial = 0; trial < 300; trial++) {
+        for (int trial = 0; trial < TRIALS; trial++) {
             double[] frames = new double[48];
             FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
                 Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
@@ -330,8 +334,8 @@ class ContactForcesFrictionTest {
             if (Math.abs(t2 - lo) < 1e-9 || Math.abs(t2 - hi) < 1e-9) clamped++;
             compared++;
         }
-        assertTrue(compared > 250, "compared " + compared);
-        assertTrue(clamped > 50, "cases where a bound holds the reaction: " + clamped);
+        assertTrue(compared > TRIALS * 5 / 6, "compared " + compared);
+        assertTrue(clamped > TRIALS / 6, "cases where a bound holds the reaction: " + clamped);
     }
 
     /**

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
 import java.util.Random;
+import org.handsim.testing.TestEffort;
 import org.junit.jupiter.api.Test;
 
 /** The d-dimensional Quickhull on polytopes known in closed form, against brute force, and on degenerate input. */
@@ -127,7 +128,7 @@ class ConvexHullTest {
     void sixDimensionalHullsSupportEveryPoint() {
         Random rnd = new Random(2026);
         ConvexHull h = new ConvexHull(6);
-        for (int trial = 0; trial < 60; trial++) {
+        for (int trial = 0; trial < TestEffort.cases(60); trial++) {
             int n = 7 + rnd.nextInt(80);
             double[] p = new double[6 * n];
             for (int i = 0; i < n; i++) {
@@ -162,7 +163,7 @@ class ConvexHullTest {
     void blurredLatticesStayConvex() {
         Random rnd = new Random(99);
         ConvexHull h = new ConvexHull(6), exact = new ConvexHull(6);
-        for (int trial = 0; trial < 120; trial++) {
+        for (int trial = 0; trial < TestEffort.cases(120); trial++) {
             int n = 10 + rnd.nextInt(90);
             double[] lattice = new double[6 * n], p = new double[6 * n];
             double blur = Math.pow(10, -13 + rnd.nextInt(7));

@@ -14,6 +14,7 @@ import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
 import org.handsim.TestPaths;
 import org.handsim.vrml.VrmlTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -22,6 +23,7 @@ import org.junit.jupiter.api.Test;
  * up to date, and the view shows the hand. Also checks the program leaves without JOGL's
  * X11Util lines.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class EmbeddedExampleTest {
     @Test
     void anotherSwingProgramEmbedsTheSimulator() throws Exception {
@@ -32,8 +34,8 @@ class EmbeddedExampleTest {
             "-Dhandsim.home=" + TestPaths.root(), "-cp", System.getProperty("java.class.path"), EmbeddedExample.class.getName(),
             TestPaths.root().resolve("scenarios/paper-breakaway.json").toString(), "--screenshot", shot.toString());
         pb.environment().put("DISPLAY", GuiWindowTest.display());
-        String xauth = System.getenv("XAUTHORITY") != null ? System.getenv("XAUTHORITY") : System.getProperty("handsim.xauthority");
-        if (xauth != null && !xauth.isEmpty()) pb.environment().put("XAUTHORITY", xauth);
+        String xauth = GuiWindowTest.xauthority();
+        if (xauth != null) pb.environment().put("XAUTHORITY", xauth);
         Path log = dir.resolve("log.txt");
         pb.redirectErrorStream(true).redirectOutput(log.toFile());
         Process p = pb.start();

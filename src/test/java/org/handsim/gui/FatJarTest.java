@@ -16,6 +16,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
 import org.handsim.util.Json;
 import org.handsim.vrml.VrmlTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -24,6 +25,7 @@ import org.junit.jupiter.api.Test;
  * empty folder on a machine without a display — the jar carries the models and scenarios — and
  * that the window opens from it (the JOGL natives come out of the jar) and closes cleanly.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class FatJarTest {
     static Path jar() {
         String p = System.getProperty("handsim.fatJar");
@@ -48,8 +50,8 @@ class FatJarTest {
         pb.environment().put("XDG_CACHE_HOME", dir.resolve("cache").toAbsolutePath().toString());   // the models' copy stays in the test's folder
         if (display) {
             pb.environment().put("DISPLAY", GuiWindowTest.display());
-            String xauth = System.getenv("XAUTHORITY") != null ? System.getenv("XAUTHORITY") : System.getProperty("handsim.xauthority");
-            if (xauth != null && !xauth.isEmpty()) pb.environment().put("XAUTHORITY", xauth);
+            String xauth = GuiWindowTest.xauthority();
+            if (xauth != null) pb.environment().put("XAUTHORITY", xauth);
         }
         Path log = dir.resolve("log-" + (args.length == 0 ? "none" : args[0]) + "-" + LOGS.incrementAndGet() + ".txt");
         pb.redirectOutput(log.toFile());
@@ -100,6 +102,15 @@ class FatJarTest {
         Out none = java(dir, false);
         assertEquals(2, none.code(), none.log());
         assertTrue(none.log().startsWith("handsim: no display for the window;"), none.log());
+        String jar = Path.of(System.getProperty("handsim.fatJar")).getFileName().toString();
+        assertTrue(none.log().contains("  java -jar " + jar + " run --out out/paper"), "names the jar it is: " + none.log());
+        // a relative path outside a checkout: where it looked, and where the jar's own models are
+        Out missing = java(dir, false, "plan", "vrml/objects/mug.wrl", "--trials", "1");
+        assertEquals(3, missing.code(), missing.log());
+        assertTrue(missing.log().contains("vrml/objects/mug.wrl: no such file (looked in " + dir.toRealPath()), missing.log());
+        // where the models are: unpacked from the jar, or (the test's folder lies inside the build's checkout) the checkout's
+        assertTrue(missing.log().matches("(?s).*(the models and scenarios of the jar are unpacked in|HandSim's models and scenarios are in)"
+            + " \\S+: \\S+/vrml/objects/mug\\.wrl\\).*"), missing.log());
         VrmlTesting.deleteTree(dir);
     }
 
@@ -126,7 +137,8 @@ class FatJarTest {
             }
             try (var s = Files.list(dir.resolve("cache/handsim"))) {
                 List<String> left = new ArrayList<>();
-                s.forEach(p -> left.add(p.getFileName().toString()));
+                // the cache folder also holds the tessellated meshes (sim.MeshCache): only the models' copies count here
+                s.map(p -> p.getFileName().toString()).filter(n -> !n.equals("meshes")).forEach(left::add);
                 assertEquals(1, left.size(), "one copy, no unpacking folder: " + left);
                 assertTrue(left.get(0).startsWith("home-"), left.toString());
             }

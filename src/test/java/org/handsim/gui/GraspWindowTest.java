@@ -23,6 +23,7 @@ import org.handsim.cli.CliTesting;
 import org.handsim.sim.Scenario;
 import org.handsim.util.Json;
 import org.handsim.vrml.VrmlTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -41,6 +42,7 @@ import org.junit.jupiter.api.Test;
  *       {@code object.friction} = 0.</li>
  * </ul>
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class GraspWindowTest {
     /** Radius round a contact's pixel within which its cone is drawn: 20 mm high, 10 mm wide at μ = 0.5, ~45 px here. */
     static final double CONE_REACH_PX = 70;

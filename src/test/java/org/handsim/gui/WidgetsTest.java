@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 class WidgetsTest {
     @Test
     void significantDigitsAreRoundedHalfUpAndWrittenInFull() {
-        assertEquals("0.1984", Widgets.significant(0.19837397687762737, 4));   // the mug grasp's ε
+        assertEquals("0.1984", Widgets.significant(0.19837397687762737, 4));   // an ε the mug grasp once had
         assertEquals("0.08472", Widgets.significant(0.08472302422835801, 4));
         assertEquals("58.84", Widgets.significant(58.8399, 4));
         assertEquals("0.0000123", Widgets.significant(1.2345e-5, 3));          // no exponent

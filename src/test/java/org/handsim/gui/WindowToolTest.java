@@ -26,6 +26,7 @@ import org.handsim.mesh.StlWriter;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.sim.SceneGeometry;
 import org.handsim.vrml.VrmlTesting;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -43,6 +44,7 @@ import org.junit.jupiter.api.Test;
  *       and field names in scripts.</li>
  * </ul>
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class WindowToolTest {
     /** The mug in millimetres, as a binary STL (GraspIt!'s unit: "auto" must find it). */
     static Path mugStl(Path dir) throws Exception {

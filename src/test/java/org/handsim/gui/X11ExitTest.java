@@ -16,6 +16,7 @@ import java.util.concurrent.TimeUnit;
 import org.handsim.TestPaths;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -25,6 +26,7 @@ import org.junit.jupiter.api.Test;
  * server of its own (Xvfb, which {@code ./test} installs), opens the program on it, waits for
  * the first frame and kills the server.
  */
+@Tag("slow")   // child JVMs: ./test --all (CI) runs it, the quick ./test does not
 class X11ExitTest {
     @Test
     void losingTheXServerEndsTheProgramWithoutANativeAbort() throws Exception {

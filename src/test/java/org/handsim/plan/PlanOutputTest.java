@@ -122,17 +122,48 @@ class PlanOutputTest {
 
     @Test
     void directionCellsByHand() {
-        // a = (0, 1, 0): azimuth 90° → cell (90 + 180)/10 = 27; elevation 0 → cell 9
-        assertEquals(27, DirectionMap.azimuthCell(new double[] {0, 1, 0}));
-        assertEquals(9, DirectionMap.elevationCell(new double[] {0, 1, 0}));
-        // straight down: elevation −90° → cell 0; straight up → the last cell
-        assertEquals(0, DirectionMap.elevationCell(new double[] {0, 0, -1}));
-        assertEquals(DirectionMap.EL_CELLS - 1, DirectionMap.elevationCell(new double[] {0, 0, 1}));
-        DirectionMap m = new DirectionMap();
+        // 500 trials, 8 a cell: 62.5 cells of side sqrt(4π / 62.5) = 0.448: round(2 / 0.448) = 4 bands
+        // of z = sin(elevation), round(62.5 / 4) = 16 azimuth cells of 22.5°
+        DirectionMap m = new DirectionMap(500);
+        assertEquals(4, m.zCells());
+        assertEquals(16, m.azimuthCells());
+        // a = (0, 1, 0): azimuth 90° → cell (90 + 180) / 22.5 = 12; z = 0 → band (0 + 1) / 0.5 = 2
+        assertEquals(12, m.azimuthCell(new double[] {0, 1, 0}));
+        assertEquals(2, m.zCell(new double[] {0, 1, 0}));
+        // straight down: the first band; straight up: the last
+        assertEquals(0, m.zCell(new double[] {0, 0, -1}));
+        assertEquals(3, m.zCell(new double[] {0, 0, 1}));
+        // elevation 29° has z = 0.485 < 0.5: band 2; 31°: band 3 (the bands' edges are at ±30°)
+        assertEquals(2, m.zCell(new double[] {Math.cos(Math.toRadians(29)), 0, Math.sin(Math.toRadians(29))}));
+        assertEquals(3, m.zCell(new double[] {Math.cos(Math.toRadians(31)), 0, Math.sin(Math.toRadians(31))}));
         m.add(new double[] {0, 1, 0}, 0.2);
         m.add(new double[] {0, 1, 0}, 0.5);
         m.add(new double[] {0, 1, 0}, 0);
-        assertEquals(0.5, m.best()[27][9]);
-        assertEquals(3, m.count()[27][9]);
+        assertEquals(0.5, m.best()[12][2]);
+        assertEquals(3, m.count()[12][2]);
+    }
+
+    /**
+     * The cells have equal areas: directions spread evenly over the sphere (a Fibonacci lattice,
+     * built here independently of the planner's sampler) fill them evenly — every cell within a
+     * factor 1.5 of the 8 trials it is sized for — where 10° cells in elevation left most empty.
+     */
+    @Test
+    void evenlySpreadDirectionsFillTheCellsEvenly() {
+        for (int trials : new int[] {100, 500, 5000}) {
+            DirectionMap m = new DirectionMap(trials);
+            double golden = Math.PI * (3 - Math.sqrt(5));
+            for (int i = 0; i < trials; i++) {
+                double z = 1 - (i + 0.5) * 2.0 / trials, r = Math.sqrt(1 - z * z);
+                m.add(new double[] {r * Math.cos(golden * i), r * Math.sin(golden * i), z}, 0);
+            }
+            int[][] c = m.count();
+            int total = 0, min = Integer.MAX_VALUE, max = 0;
+            for (int[] row : c) for (int n : row) { total += n; min = Math.min(min, n); max = Math.max(max, n); }
+            double mean = trials / (double) (m.azimuthCells() * m.zCells());
+            assertEquals(trials, total);
+            assertTrue(mean >= 6 && mean <= 10.5, trials + " trials: " + mean + " a cell");
+            assertTrue(min >= mean / 1.5 && max <= mean * 1.5, trials + " trials: cells hold " + min + ".." + max + ", mean " + mean);
+        }
     }
 }

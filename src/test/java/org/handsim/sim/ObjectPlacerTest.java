@@ -32,8 +32,8 @@ class ObjectPlacerTest {
     void unitsFromTheSize() throws Exception {
         Path dir = Files.createTempDirectory("handsim-placer");
         Path stl = mugInMillimetres(dir);
-        assertEquals(Scenario.Units.MM, ObjectPlacer.guessUnits(SceneGeometry.mesh(stl, 24, 1.0)));
-        assertEquals(Scenario.Units.M, ObjectPlacer.guessUnits(SceneGeometry.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0)));
+        assertEquals(Scenario.Units.MM, UnitRule.bySize(SceneGeometry.mesh(stl, 24, 1.0)));
+        assertEquals(Scenario.Units.M, UnitRule.bySize(SceneGeometry.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0)));
         VrmlTesting.deleteTree(dir);
     }
 

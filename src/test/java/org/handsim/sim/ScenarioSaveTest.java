@@ -84,7 +84,7 @@ class ScenarioSaveTest {
         Path f = TestPaths.root().resolve("u.json");
         ScenarioException e = org.junit.jupiter.api.Assertions.assertThrows(ScenarioException.class,
             () -> Scenario.parse(f, String.format(base, "inch", "1")));
-        assertTrue(e.getMessage().contains("field object.units: must be mm, cm or m, got \"inch\""), e.getMessage());
+        assertTrue(e.getMessage().contains("field object.units: must be auto, mm, cm or m, got \"inch\""), e.getMessage());
         Scenario mm = Scenario.parse(f, String.format(base, "mm", "1000"));
         Scenario m = Scenario.parse(f, String.format(base, "m", "1"));
         assertEquals(1.0, mm.object().meshScale());

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.math.BigDecimal;
 import java.util.Random;
+import org.handsim.testing.TestEffort;
 import org.junit.jupiter.api.Test;
 
 /** {@link Decimal}: ECMAScript's Number::toString layout of the shortest round-trip digits. */
@@ -47,7 +48,7 @@ class DecimalTest {
     @Test
     void roundTripAndShortestAgainstBruteForce() {
         Random rnd = new Random(20261124);
-        for (int i = 0; i < 200_000; i++) {
+        for (int i = 0; i < TestEffort.cases(200_000); i++) {
             double d = i % 3 == 0 ? Double.longBitsToDouble(rnd.nextLong()) : rnd.nextGaussian() * Math.pow(10, rnd.nextInt(40) - 20);
             if (!Double.isFinite(d)) continue;
             String s = Decimal.format(d);

@@ -24,6 +24,7 @@ import org.handsim.plan.PlanJob;
 import org.handsim.plan.PlanSpec;
 import org.handsim.plan.TrialEngine;
 import org.handsim.plan.TrialResult;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -58,6 +59,7 @@ class SparkEngineTest {
     }
 
     @Test
+    @Tag("slow")   // a Spark context starts: about 10 s; ./test --all (CI)
     void embeddedLocal2GivesTheLocalTable() throws Exception {
         PlanSpec s = spec(10);
         List<String> rows = new ArrayList<>();
@@ -85,6 +87,7 @@ class SparkEngineTest {
     }
 
     @Test
+    @Tag("slow")   // a task killed and retried: seconds of Spark: ./test --all (CI)
     void aRetriedTaskIsCountedOnce() throws Exception {
         PlanSpec s = spec(12);
         FIRST_ATTEMPT_FAILURES.set(0);
@@ -130,6 +133,7 @@ class SparkEngineTest {
 
     /** tools/spark-cluster start: a standalone master and worker (separate JVMs); the plan on it gives the local table. */
     @Test
+    @Tag("slow")   // a master and a worker in child JVMs: ./test --all (CI)
     void standaloneClusterGivesTheLocalTable() throws Exception {
         Path state = Files.createTempDirectory("spark-cluster");
         try {
@@ -160,6 +164,7 @@ class SparkEngineTest {
 
     /** handsim plan and handsim sweep with --engine spark --master local[2] write the --engine local files. */
     @Test
+    @Tag("slow")   // plan and sweep end to end on Spark: ./test --all (CI)
     void commandsWriteTheSameTables() throws Exception {
         Path dir = Files.createTempDirectory("spark-cmd");
         try {
