@@ -66,9 +66,13 @@ public final class ChartSet {
      */
     public static ChartSet start(Supplier<JFreeChart> warmUp) {
         ChartSet s = new ChartSet(Math.max(1, Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors())));
-        if (warmUp != null) s.pool.execute(() -> s.attempt(() -> ChartExport.draw(warmUp.get(), 320, 240)));
+        // a JVM that has drawn charts before (the resident server) is set up already: the warm-up would only take a core from the real charts
+        if (warmUp != null && !drawnBefore) s.pool.execute(() -> s.attempt(() -> ChartExport.draw(warmUp.get(), 320, 240)));
         return s;
     }
+
+    /** Whether this JVM has drawn a set of charts already (its fonts, Java2D and JFreeChart are set up). */
+    private static volatile boolean drawnBefore;
 
     /**
      * Queues a chart: drawn now on the workers, its PNG and its SVG as two tasks (the supplier
@@ -133,6 +137,7 @@ public final class ChartSet {
         if (f instanceof VirtualMachineError) throw (VirtualMachineError) f;
         if (f != null) return reason(f);
         for (int i = 0; i < jobs.size(); i++) ChartExport.write(drawn.get(i), jobs.get(i).base());
+        if (!jobs.isEmpty()) drawnBefore = true;
         return null;
     }
 

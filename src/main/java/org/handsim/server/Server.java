@@ -399,7 +399,7 @@ public final class Server {
     }
 
     /** Warm-up runs after the start: the paper's run and the mug grasp, each this many times. */
-    static final int WARM_UP_ROUNDS = 4;
+    static final int WARM_UP_ROUNDS = 8;
 
     /**
      * Runs the paper's experiment and the mug grasp a few times into a private temporary folder,
