@@ -71,8 +71,12 @@ public final class QualityCommand implements Callable<Integer> {
     static final List<String> JSON_KEYS = List.of("contacts", "wrenches", "force_closure", "epsilon", "volume", "facets", "time_us_median");
     /** Largest wrench coordinate accepted: the volume is a sixth power of it. */
     static final double MAX_WRENCH = 1e30;
-    /** A hull computation running longer than this, seconds, prints its progress on standard error ... */
-    static final double PROGRESS_AFTER_S = 2;
+    /**
+     * A hull computation running longer than this, seconds, prints its progress on standard error
+     * ... (system property {@code handsim.quality.progressAfterS}: a test sees the line on a
+     * machine fast enough to finish first).
+     */
+    static final double PROGRESS_AFTER_S = Double.parseDouble(System.getProperty("handsim.quality.progressAfterS", "2"));
     /** ... every this many seconds. */
     static final double PROGRESS_EVERY_S = 5;
     /** Most rows of a contacts file: reading stays small (5 MB of numbers) whatever the file's length. */
