@@ -97,9 +97,34 @@ public final class Client {
             }
         }
         report("in-process (" + served.name().toLowerCase(java.util.Locale.ROOT) + (why != null ? ": " + why : "") + ")");
+        boolean training = System.getProperty(TRAINING) != null;
+        if (training) loadServedPathClasses();
         int code = org.handsim.cli.HandSim.execute(args);
-        if (served == Outcome.NO_SERVER) startServer(identity);
+        if (served == Outcome.NO_SERVER && !training) startServer(identity);
         System.exit(code);
+    }
+
+    /**
+     * System property of the launcher's class-data archive training run (a command run in-process
+     * that also loads what a served command loads, and starts no server).
+     */
+    static final String TRAINING = "handsim.server.training";
+
+    /**
+     * Loads the classes a served command's client uses — the socket channel and its streams,
+     * which the JDK builds with lambdas of its own — so that the training run puts them in the
+     * class-data archive: without them a client spun those classes at every start (tens of
+     * milliseconds of a command that the server answers in a few).
+     */
+    private static void loadServedPathClasses() {
+        Path nowhere = Path.of(System.getProperty("java.io.tmpdir"), "handsim-cds-" + ProcessHandle.current().pid() + ".socket");
+        try (SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX)) {
+            new DataInputStream(new java.io.BufferedInputStream(in(ch)));
+            new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
+            ch.connect(UnixDomainSocketAddress.of(nowhere));   // nobody there: refused, as a stale socket is
+        } catch (IOException | RuntimeException expected) {
+            // what was to be loaded is loaded
+        }
     }
 
     /** What became of the attempt to hand the command to a server. */
@@ -142,7 +167,13 @@ public final class Client {
          * with the signal's status once the server says the command has ended.
          */
         int stream() throws IOException {
-            Thread hook = new Thread(this::cancelAndWait, "handsim-client-stop");
+            // an inner class, not a method reference: the client's start-up spins no lambda classes
+            Thread hook = new Thread("handsim-client-stop") {
+                @Override
+                public void run() {
+                    cancelAndWait();
+                }
+            };
             Runtime.getRuntime().addShutdownHook(hook);
             OutputStream stdout = new FileOutputStream(FileDescriptor.out), stderr = new FileOutputStream(FileDescriptor.err);
             byte[] buf = new byte[8192];
@@ -367,7 +398,8 @@ public final class Client {
             h ^= b & 0xff;
             h *= 0x100000001b3L;
         }
-        return String.format("%016x", h);
+        String hex = Long.toHexString(h);   // not String.format: the client's start-up loads no Formatter
+        return "0000000000000000".substring(hex.length()) + hex;
     }
 
     static Path socketFile(Path dir, String key) { return dir.resolve(key + ".sock"); }
