@@ -1,7 +1,11 @@
 package org.handsim;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
 
 /**
  * Where the tests find the project root and the shared folder (real-world VRML corpus, bench
@@ -38,5 +42,15 @@ public final class TestPaths {
     /** True if the shared folder with the VRML corpus is present. */
     public static boolean hasShared() {
         return Files.isDirectory(shared().resolve("vrml-corpus"));
+    }
+
+    /** The names of the entries of {@code dir}, sorted. */
+    public static List<String> names(Path dir) throws IOException {
+        try (Stream<Path> s = Files.list(dir)) {
+            List<String> n = new ArrayList<>();
+            s.forEach(p -> n.add(p.getFileName().toString()));
+            n.sort(null);
+            return n;
+        }
     }
 }

@@ -20,9 +20,9 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
+import org.handsim.TestPaths;
 import org.handsim.util.Folders;
 import org.junit.jupiter.api.Test;
 
@@ -57,15 +57,6 @@ class HomeUnpackTest {
         for (Map.Entry<String, String> e : FILES.entrySet()) assertEquals(e.getValue(), Files.readString(home.resolve(e.getKey())), e.getKey());
     }
 
-    static List<String> names(Path dir) throws Exception {
-        try (Stream<Path> s = Files.list(dir)) {
-            List<String> n = new ArrayList<>();
-            s.forEach(p -> n.add(p.getFileName().toString()));
-            n.sort(null);
-            return n;
-        }
-    }
-
     @Test
     void unpacksOnceIntoThePrivateCacheAndReusesTheVerifiedCopy() throws Exception {
         Path t = Files.createTempDirectory("handsim-home-test");
@@ -76,7 +67,7 @@ class HomeUnpackTest {
             assertTrue(home.startsWith(cache), home.toString());
             assertHolds(home);
             assertEquals("rwx------", PosixFilePermissions.toString(Files.getPosixFilePermissions(cache)));
-            assertEquals(List.of(home.getFileName().toString()), names(cache), "one copy, no unpacking folder left");
+            assertEquals(List.of(home.getFileName().toString()), TestPaths.names(cache), "one copy, no unpacking folder left");
             Path before = home.resolve("vrml/hand/palm.wrl");
             long modified = Files.getLastModifiedTime(before).toMillis();
             Files.setLastModifiedTime(before, java.nio.file.attribute.FileTime.fromMillis(modified - 60_000));
@@ -132,7 +123,7 @@ class HomeUnpackTest {
             assertEquals(home, Home.unpack(jar, cache));
             assertFalse(Files.isSymbolicLink(scenario), "a link (even to the right bytes) fails the check");
             assertHolds(home);
-            assertEquals(List.of(home.getFileName().toString()), names(cache), "the damaged copies are gone");
+            assertEquals(List.of(home.getFileName().toString()), TestPaths.names(cache), "the damaged copies are gone");
         } finally {
             Folders.deleteTree(t);
         }
@@ -167,7 +158,7 @@ class HomeUnpackTest {
             assertFalse(home.startsWith(cache), home.toString());
             assertHolds(home);
             assertEquals("rwx------", PosixFilePermissions.toString(Files.getPosixFilePermissions(home)));
-            assertEquals(List.of(), names(cache), "nothing left in the untrusted folder");
+            assertEquals(List.of(), TestPaths.names(cache), "nothing left in the untrusted folder");
             Path fresh = Home.unpack(jar(t, FILES), cache);
             assertNotEquals(home, fresh, "a fresh temporary folder each time");
             Folders.deleteTree(home);
@@ -201,7 +192,7 @@ class HomeUnpackTest {
             Path home = homes.iterator().next();
             assertTrue(home.startsWith(cache));
             assertHolds(home);
-            assertEquals(List.of(home.getFileName().toString()), names(cache));
+            assertEquals(List.of(home.getFileName().toString()), TestPaths.names(cache));
         } finally {
             pool.shutdownNow();
             Folders.deleteTree(t);

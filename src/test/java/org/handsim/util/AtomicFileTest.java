@@ -16,7 +16,7 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
+import org.handsim.TestPaths;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -27,15 +27,6 @@ import org.junit.jupiter.api.Test;
  * temporary name; SIGKILL's leftovers are removed by the next writer.
  */
 class AtomicFileTest {
-    static List<String> names(Path dir) throws IOException {
-        try (Stream<Path> s = Files.list(dir)) {
-            List<String> n = new ArrayList<>();
-            s.forEach(p -> n.add(p.getFileName().toString()));
-            n.sort(null);
-            return n;
-        }
-    }
-
     @Test
     void aCharacterDeviceIsWrittenInPlaceAndStaysADevice() throws Exception {
         Path dir = Files.createTempDirectory("handsim-atomic");
@@ -51,7 +42,7 @@ class AtomicFileTest {
             IOException e = assertThrows(IOException.class, () -> AtomicFile.writeString(full, "x".repeat(100_000)));
             assertTrue(e.getMessage().contains("No space left on device"), e.getMessage());
             assertTrue(DeviceNodes.isCharDevice(full));
-            assertEquals(List.of("full", "null"), names(dir), "no temporary file beside them");
+            assertEquals(List.of("full", "null"), TestPaths.names(dir), "no temporary file beside them");
             // proven on our own nodes: now the machine's, which must stay devices too
             try {
                 AtomicFile.writeString(Path.of("/dev/null"), "written to /dev/null by AtomicFileTest\n");
@@ -81,7 +72,7 @@ class AtomicFileTest {
             AtomicFile.writeString(fifo, "through the pipe\n");
             assertEquals("through the pipe\n", read.get(30, TimeUnit.SECONDS));
             assertTrue(DeviceNodes.isFifo(fifo));
-            assertEquals(List.of("pipe"), names(dir));
+            assertEquals(List.of("pipe"), TestPaths.names(dir));
         } finally {
             Folders.deleteTree(dir);
         }
@@ -104,7 +95,7 @@ class AtomicFileTest {
             AtomicFile.writeString(dangling, "made\n");
             assertTrue(Files.isSymbolicLink(dangling));
             assertEquals("made\n", Files.readString(dir.resolve("made.csv")));
-            assertEquals(List.of("dangling.csv", "link.csv", "made.csv", "real.csv"), names(dir));
+            assertEquals(List.of("dangling.csv", "link.csv", "made.csv", "real.csv"), TestPaths.names(dir));
         } finally {
             Folders.deleteTree(dir);
         }
@@ -118,7 +109,7 @@ class AtomicFileTest {
             IOException e = assertThrows(IOException.class, () -> AtomicFile.writeString(empty, "x"));
             assertTrue(e.getMessage().contains("is a folder"), e.getMessage());
             assertTrue(Files.isDirectory(empty), "an empty folder is not replaced by a file");
-            assertEquals(List.of("empty"), names(dir));
+            assertEquals(List.of("empty"), TestPaths.names(dir));
         } finally {
             Folders.deleteTree(dir);
         }
@@ -149,7 +140,7 @@ class AtomicFileTest {
             assertEquals(10_000, lines.size());
             String who = lines.get(0).substring(0, 1);
             for (int i = 0; i < lines.size(); i++) assertEquals(who + i, lines.get(i), "one writer's whole file");
-            assertEquals(List.of("trace.csv"), names(dir));
+            assertEquals(List.of("trace.csv"), TestPaths.names(dir));
         } finally {
             Folders.deleteTree(dir);
         }
