@@ -151,15 +151,10 @@ class ContactForcesFrictionTest {
         ContactForces cf = new ContactForces();
         int compared = 0;
         for (int trial = 0; trial < TRIALS; trial++) {
-            double[] frames = new double[48];
-            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
-                Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
-            int n = 1 + rnd.nextInt(5);
-            double mu = 0.1 + 0.9 * rnd.nextDouble();
-            double[] p = new double[3 * n], d = new double[3 * n];
-            int[] links = new int[n];
-            randomContacts(rnd, frames, n, p, d, links);
-            double[] cones = cones(d, n, mu);
+            Pose pose = Pose.draw(rnd, 5);
+            double[] frames = pose.frames, p = pose.p, d = pose.d, cones = pose.cones;
+            int n = pose.n;
+            int[] links = pose.links;
             double[] tau = new double[3];
             // torques from random forces in the cones: carriable by construction
             for (int i = 0; i < n; i++) {
@@ -250,15 +245,10 @@ class ContactForcesFrictionTest {
         ContactForces cf = new ContactForces();
         int compared = 0, infeasible = 0;
         for (int trial = 0; trial < TRIALS; trial++) {
-            double[] frames = new double[48];
-            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
-                Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
-            int n = 1 + rnd.nextInt(4);
-            double mu = 0.1 + 0.9 * rnd.nextDouble();
-            double[] p = new double[3 * n], d = new double[3 * n];
-            int[] links = new int[n];
-            randomContacts(rnd, frames, n, p, d, links);
-            double[] cones = cones(d, n, mu);
+            Pose pose = Pose.draw(rnd, 4);
+            double[] frames = pose.frames, p = pose.p, d = pose.d, cones = pose.cones;
+            int n = pose.n;
+            int[] links = pose.links;
             double[] tau = {0, -0.5 + 2 * rnd.nextDouble(), -0.5 + 2 * rnd.nextDouble()};
             cf.solveWithFriction(frames, 1, tau, n, p, d, links, cones, M);
             double[] star = leastSquaresTorque(frames, tau, n, p, links, cones, cf);
@@ -298,15 +288,10 @@ class ContactForcesFrictionTest {
         ContactForces cf = new ContactForces();
         int compared = 0, clamped = 0;
         for (int trial = 0; trial < TRIALS; trial++) {
-            double[] frames = new double[48];
-            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
-                Math.toRadians(5 + 60 * rnd.nextDouble())}, frames);
-            int n = 1 + rnd.nextInt(5);
-            double mu = 0.1 + 0.9 * rnd.nextDouble();
-            double[] p = new double[3 * n], d = new double[3 * n];
-            int[] links = new int[n];
-            randomContacts(rnd, frames, n, p, d, links);
-            double[] cones = cones(d, n, mu);
+            Pose pose = Pose.draw(rnd, 5);
+            double[] frames = pose.frames, p = pose.p, d = pose.d, cones = pose.cones;
+            int n = pose.n;
+            int[] links = pose.links;
             double[] tau = new double[3];
             for (int i = 0; i < n; i++) {
                 for (int e = 0; e < M; e++) {
@@ -385,6 +370,32 @@ class ContactForcesFrictionTest {
      * (link frame {kj}: x along the link, back to the joint), pushing roughly along its y axis,
      * tilted at random.
      */
+    /**
+     * A seeded finger-3 pose with 1 to {@code bound} contacts: θ32 in [10°, 110°],
+     * θ33 in [5°, 65°], the contact count, μ in [0.1, 1], the contacts ({@link #randomContacts})
+     * and their cones, drawn from {@code rnd} in that order.
+     */
+    private static final class Pose {
+        final double[] frames = new double[48];
+        int n;
+        double[] p, d, cones;
+        int[] links;
+
+        static Pose draw(Random rnd, int bound) {
+            Pose x = new Pose();
+            FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(10 + 100 * rnd.nextDouble()),
+                Math.toRadians(5 + 60 * rnd.nextDouble())}, x.frames);
+            x.n = 1 + rnd.nextInt(bound);
+            double mu = 0.1 + 0.9 * rnd.nextDouble();
+            x.p = new double[3 * x.n];
+            x.d = new double[3 * x.n];
+            x.links = new int[x.n];
+            randomContacts(rnd, x.frames, x.n, x.p, x.d, x.links);
+            x.cones = cones(x.d, x.n, mu);
+            return x;
+        }
+    }
+
     private static void randomContacts(Random rnd, double[] frames, int n, double[] p, double[] d, int[] links) {
         for (int i = 0; i < n; i++) {
             links[i] = 2 + rnd.nextInt(2);
