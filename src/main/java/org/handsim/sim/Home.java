@@ -9,8 +9,6 @@ import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFileAttributes;
-import java.nio.file.attribute.PosixFilePermission;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.nio.file.attribute.UserPrincipal;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
@@ -18,13 +16,13 @@ import java.util.Arrays;
 import java.util.Enumeration;
 import java.util.HexFormat;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
 import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipFile;
 import org.handsim.util.ExitCleanup;
 import org.handsim.util.Folders;
+import org.handsim.util.PrivateFolder;
 
 /**
  * Where HandSim's data folders are ({@code vrml/}, {@code scenarios/}): the system property
@@ -124,21 +122,7 @@ public final class Home {
 
     /** The verified copy in the user's cache folder, or null if that folder is not the user's alone. */
     private static Path unpackIntoCache(ZipFile z, Map<String, byte[]> hashes, Path cache) throws IOException {
-        try {
-            Path parent = cache.getParent();
-            if (parent != null && !Files.isDirectory(parent)) {
-                Files.createDirectories(parent, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
-            }
-            if (!Files.isDirectory(cache)) {
-                try {
-                    Files.createDirectory(cache, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
-                } catch (java.nio.file.FileAlreadyExistsException raced) {
-                    // another first run made it meanwhile: privateTo below judges it as any existing folder
-                }
-            }
-        } catch (IOException | UnsupportedOperationException e) {
-            return null;
-        }
+        if (!PrivateFolder.ensure(cache)) return null;
         removeDeadUnpacking(cache);
         Path work;
         try {
@@ -148,7 +132,6 @@ public final class Home {
         }
         try {
             UserPrincipal me = Files.getOwner(work);
-            if (!privateTo(cache, me) || (cache.getParent() != null && !privateTo(cache.getParent(), me))) return null;
             Path home = cache.resolve("home-" + HexFormat.of().formatHex(folderDigest(hashes), 0, 12));
             if (verified(home, hashes, me)) return home;
             extract(z, work);
@@ -194,18 +177,6 @@ public final class Home {
             }
         } catch (IOException e) {
             // nothing to clean
-        }
-    }
-
-    /** Whether {@code p} is a real folder of {@code me} (or root) that nobody else may write. */
-    private static boolean privateTo(Path p, UserPrincipal me) {
-        try {
-            PosixFileAttributes a = Files.readAttributes(p, PosixFileAttributes.class, LinkOption.NOFOLLOW_LINKS);
-            Set<PosixFilePermission> perms = a.permissions();
-            return a.isDirectory() && (a.owner().equals(me) || a.owner().getName().equals("root"))
-                && !perms.contains(PosixFilePermission.GROUP_WRITE) && !perms.contains(PosixFilePermission.OTHERS_WRITE);
-        } catch (IOException | UnsupportedOperationException e) {
-            return false;
         }
     }
 

@@ -16,6 +16,7 @@ import java.util.function.Supplier;
 import java.util.zip.CRC32C;
 import java.util.zip.GZIPInputStream;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.util.PrivateFolder;
 
 /**
  * A folder of triangle meshes already tessellated, so that a command in a new JVM reads an
@@ -59,7 +60,8 @@ public final class MeshCache {
      */
     public static TriangleMesh get(Path file, int divisions, double scale, Supplier<TriangleMesh> load) {
         Path dir = folder();
-        if (dir == null) return load.get();
+        // entries are trusted (their mesh is not made again), so only from a folder nobody else may write
+        if (dir == null || !PrivateFolder.ensure(dir)) return load.get();
         Path entry;
         String key;
         byte[] bytes;

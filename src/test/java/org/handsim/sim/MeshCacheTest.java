@@ -55,6 +55,26 @@ class MeshCacheTest {
         assertArrayEquals(a.normals(), b.normals());
     }
 
+    /** Entries are trusted: a cache folder that others may write (a planted mesh would change results) is not used. */
+    @Test
+    void aFolderOthersMayWriteIsNotUsed() throws Exception {
+        Path mug = Files.copy(Home.dir().resolve("vrml/objects/mug.wrl"), dir.resolve("mug.wrl"));
+        Files.createDirectory(dir.resolve("meshes"));
+        Files.setPosixFilePermissions(dir.resolve("meshes"), java.nio.file.attribute.PosixFilePermissions.fromString("rwxrwxrwx"));
+        AtomicInteger calls = new AtomicInteger();
+        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        assertEquals(2, calls.get(), "no hit");
+        try (var entries = Files.list(dir.resolve("meshes"))) {
+            assertEquals(0, entries.count(), "nothing written there");
+        }
+        // the same folder made private is used
+        Files.setPosixFilePermissions(dir.resolve("meshes"), java.nio.file.attribute.PosixFilePermissions.fromString("rwx------"));
+        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        assertEquals(3, calls.get(), "a hit");
+    }
+
     @Test
     void aHitIsTheFreshMeshBitForBit() throws Exception {
         Path mug = Files.copy(Home.dir().resolve("vrml/objects/mug.wrl"), dir.resolve("mug.wrl"));
