@@ -92,7 +92,7 @@ public final class MeshFiles {
             switch (f) {
                 case OBJ: {
                     ObjReader.Result r = ObjReader.read(file, scale);
-                    return new Loaded(r.mesh(), f, r.walk().shapes, r.walk().degenerate, List.of());
+                    return new Loaded(r.mesh(), f, r.walk().shapes, r.degenerate(), List.of());
                 }
                 case STL: {
                     StlReader.Result r = StlReader.read(file, scale);
