@@ -20,6 +20,7 @@ import org.handsim.sim.ScenarioException;
 import org.handsim.sim.Simulation;
 import org.handsim.sim.SimulationException;
 import org.handsim.tradeoff.Resolution;
+import org.handsim.util.SafeText;
 import org.handsim.util.AtomicFile;
 import org.handsim.util.JsonWriter;
 import org.handsim.util.OutputSet;
@@ -170,7 +171,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         if (toleranceLine != null) stdout.println(toleranceLine);
         stdout.println(headline(model, wall));
-        stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{" + String.join(", ", written) + "}");
         return 0;
     }
 
