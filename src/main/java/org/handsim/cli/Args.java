@@ -179,7 +179,9 @@ final class Args {
                 }
             }
         }
-        return CliError.usage("handsim: " + option + " '" + SafeText.quote(path.toString()) + "' cannot be written: " + reason + more);
+        String p = path.toString();   // the user's own path, whole unless absurdly long
+        return CliError.usage("handsim: " + option + " '" + (p.length() <= 200 ? SafeText.escape(p) : SafeText.quote(p)) + "' cannot be written: "
+            + reason + more);
     }
 
     /** Exit 2 if an output names the same file as the input (links resolved): the input would be overwritten. */
