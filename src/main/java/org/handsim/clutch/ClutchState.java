@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.clutch;
 
 /**
  * The state of a finger's breakaway clutch and links (DESIGN.md decision 1).

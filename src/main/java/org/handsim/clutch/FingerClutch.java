@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.clutch;
 
 import org.handsim.kinematics.Transmission;
 

@@ -1,9 +1,11 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import org.handsim.text.Decimal;
+import org.handsim.text.SafeText;
 
 /**
  * Reads a plain comma-separated file (no quoting: our bulk inputs are numbers) with a required

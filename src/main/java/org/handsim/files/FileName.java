@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 /**
  * Names that become a file or folder name (a scenario's or a sweep's name is its output folder

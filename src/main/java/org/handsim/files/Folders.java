@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -14,6 +14,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
+import org.handsim.text.SafeText;
 
 /**
  * The one gate every input file passes before it is opened: scenarios, sweep files and their

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -26,6 +26,10 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import org.handsim.process.CommandContext;
+import org.handsim.process.ExitCleanup;
+import org.handsim.process.Phase;
+import org.handsim.text.SafeText;
 
 /**
  * The files one command writes into one folder (trace, summary and charts of {@code run}; table,

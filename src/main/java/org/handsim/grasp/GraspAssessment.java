@@ -1,19 +1,14 @@
-package org.handsim.sim;
+package org.handsim.grasp;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.handsim.grasp.FrictionCone;
-import org.handsim.grasp.GraspQuality;
-import org.handsim.grasp.GraspWrenches;
-import org.handsim.grasp.HoldCapacity;
-import org.handsim.grasp.WrenchSpace;
 import org.handsim.hand.HandDescription;
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 
 /**
- * An evaluation of the model's current grasp (issue 12): the contacts with their forces, the
+ * An evaluation of a grasp as the simulation left it: the contacts with their forces, the
  * quality of the grasp wrench space (force closure, ε, volume) and how much load the grasp
  * holds in each of the six world directions.
  *
@@ -27,7 +22,7 @@ import org.handsim.util.Decimal;
  * @param holdMinN the smallest of {@code holdN}
  * @param contacts every contact of the three fingers, finger by finger
  * @param torqueResidualNm per finger (index 0..2) how far its contact forces are from carrying
- *                 its joint torques, N·m ({@link HandModel#torqueResidual}): 0 up to rounding
+ *                 its joint torques, N·m (the model's torque residual): 0 up to rounding
  *                 when the forces are a static equilibrium of the finger's state
  */
 public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN, double holdMinN, List<Contact> contacts,
@@ -49,62 +44,34 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     public record Contact(int finger, int link, double[] point, double[] normal, double[] forceN) {}
 
     /**
-     * What an evaluation reads of a model, copied: an immutable value that another thread may
-     * evaluate while the model steps on (the window's live grasp: the simulation thread copies,
-     * a worker evaluates). Arrays are fresh copies; treat them as read-only.
+     * What an evaluation reads of a model, copied by the model ({@code HandModel.graspInput()}):
+     * an immutable value that another thread may evaluate while the model steps on (the window's
+     * live grasp: the simulation thread copies, a worker evaluates). Arrays are fresh copies; treat them as read-only.
      *
      * @param timeS             simulated time, s
      * @param contacts          every contact of the three fingers, finger by finger (world frame)
      * @param framesWorld       per finger (index 0..2) the frames {k0}..{k3} in the world, 4 × 12 row-major
      * @param clutchEngaged     per finger whether its clutch couples the inner link to the motor
-     *                          ({@link HandModel#clutchEngaged})
+     *                          (its clutch state: FREE or BLOCKED)
      * @param hand              the hand's description (joint limits)
      * @param centroidAndRadius the object's centroid and R {cx, cy, cz, R}, m, or null when the
-     *                          scene has no object geometry ({@link HandModel#objectCentroidAndRadius()})
-     * @param torqueResidualNm  per finger the contact forces' torque residual ({@link HandModel#torqueResidual}), N·m
+     *                          scene has no object geometry
+     * @param torqueResidualNm  per finger the contact forces' torque residual, N·m
      */
     public record Input(double timeS, List<Contact> contacts, double[][] framesWorld, boolean[] clutchEngaged,
-                        HandDescription hand, double[] centroidAndRadius, double[] torqueResidualNm) {
-        /** Copies what {@link GraspAssessment#of(Input, double, int)} needs from the model as it is now (its thread only). */
-        public static Input of(HandModel model) {
-            List<Contact> contacts = new ArrayList<>();
-            double[][] frames = new double[3][];
-            boolean[] engaged = new boolean[3];
-            double[] residual = new double[3];
-            for (int k = 1; k <= 3; k++) {
-                residual[k - 1] = model.torqueResidual(k);
-                ContactSet cs = model.contacts(k);
-                for (int i = 0; i < cs.size(); i++) {
-                    double[] n = cs.normal(i);
-                    // into the object: 0 − n, which turns a zero component into +0, not −0
-                    contacts.add(new Contact(k, cs.link(i), cs.point(i), new double[] {0.0 - n[0], 0.0 - n[1], 0.0 - n[2]}, cs.forceVector(i)));
-                }
-                frames[k - 1] = model.framesWorld(k);
-                engaged[k - 1] = model.clutchEngaged(k);
-            }
-            return new Input(model.time(), List.copyOf(contacts), frames, engaged, model.hand(), model.objectCentroidAndRadius(), residual);
-        }
-    }
+                        HandDescription hand, double[] centroidAndRadius, double[] torqueResidualNm) {}
 
     /**
-     * Evaluates the grasp of {@code model} as it is now: its contacts (world frame) with the
+     * Evaluates a grasp copied from a model, on any thread: its contacts (world frame) with the
      * forces the simulation gave them; the quality of the grasp wrench space with the torque
      * origin c = the object's centroid and R = its largest centroid-to-vertex distance
-     * ({@link HandModel#objectCentroidAndRadius()}; for a back end without object geometry, the
-     * mean of the contact points and their largest distance from it); and the hold in the six
-     * world directions ({@link HoldCapacity}, DESIGN.md decision 6) with each joint's limit in its
+     * ({@link Input#centroidAndRadius}; for a back end without object geometry, the mean of the
+     * contact points and their largest distance from it); and the hold in the six world
+     * directions ({@link HoldCapacity}, DESIGN.md decision 6) with each joint's limit in its
      * clutch state ({@link #jointLimit}), capped at the hand's rating.
      *
      * @param mu    Coulomb friction coefficient of the contacts (≥ 0)
      * @param edges edges of the linearised friction cones (≥ 1)
-     */
-    public static GraspAssessment of(HandModel model, double mu, int edges) {
-        return of(Input.of(model), mu, edges);   // which checks mu and edges
-    }
-
-    /**
-     * Evaluates a grasp copied from a model ({@link Input#of}), on any thread: the same numbers as
-     * {@link #of(HandModel, double, int)} on the model at the time of the copy.
      */
     public static GraspAssessment of(Input in, double mu, int edges) {
         FrictionCone.checkMu(mu);
@@ -125,11 +92,6 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         double min = hold[0];
         for (double h : hold) min = Math.min(min, h);
         return new GraspAssessment(in.timeS(), q, hold, min, contacts, in.torqueResidualNm().clone());
-    }
-
-    /** The hold LP of the model's grasp as it is now ({@link #hold(Input, List, double, int, double[], double)}). */
-    public static HoldCapacity hold(HandModel model, List<Contact> contacts, double mu, int edges, double[] c, double r) {
-        return hold(Input.of(model), contacts, mu, edges, c, r);
     }
 
     /**
@@ -202,7 +164,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
             Map<String, Object> o = new LinkedHashMap<>();
             o.put("finger", c.finger());
             o.put("link", c.link());
-            // physical values: rounding noise below 1e-12 written as 0 (util.Decimal, README)
+            // physical values: rounding noise below 1e-12 written as 0 (text.Decimal, README)
             o.put("point", Decimal.clean(c.point()));
             o.put("normal", Decimal.clean(c.normal()));
             o.put("force_N", Decimal.clean(c.forceN()));

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import java.util.Arrays;
 

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import java.nio.file.Path;
 import java.util.Map;
@@ -11,6 +11,8 @@ import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 
 /**
  * Whether the whole hand — palm and the nine links, the fingers FREE at given motor counts
@@ -63,8 +65,8 @@ public final class HandClearance {
         objectTree = scene.objectTree();
         worldFromObject = scene.worldFromObject();
         int k = objectTree.k();
-        Path palmFile = SceneGeometry.palmFile();
-        palmMesh = SceneGeometry.mesh(palmFile, SceneGeometry.LINK_DIVISIONS, 1.0);
+        Path palmFile = SceneMeshes.palmFile();
+        palmMesh = SceneMeshes.mesh(palmFile, SceneMeshes.LINK_DIVISIONS, 1.0);
         trees[0] = PALM_TREES.compute(k, (x, was) -> was != null && was.mesh() == palmMesh ? was : new PalmTree(palmMesh, KdopTree.build(palmMesh, x))).tree();
         spheres[0] = SceneGeometry.boundingSphere(palmMesh);
         for (int j = 1; j <= 3; j++) {

@@ -1,13 +1,20 @@
-package org.handsim.sim;
+package org.handsim.model;
 
+import org.handsim.clutch.ClutchState;
+import org.handsim.clutch.FingerClutch;
 import org.handsim.contact.ContactForces;
 import org.handsim.grasp.FrictionCone;
+import org.handsim.grasp.GraspAssessment;
 import org.handsim.hand.HandDescription;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.trajectory.Trajectory;
-import org.handsim.util.StepClock;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
+import org.handsim.scenario.UnitRule;
+import org.handsim.trace.Recorder;
+import org.handsim.trajectory.Trajectory;
+import org.handsim.process.StepClock;
 
 /**
  * The HandSim model, Easy-Java-Simulations style: read it top to bottom.
@@ -316,7 +323,7 @@ public final class HandModel {
     private String episodeWarning(int i) {
         return String.format(java.util.Locale.ROOT, "finger %d: the contact forces cannot carry its joint torques from t = %s s"
             + " to %s s (largest residual %.3g N*m): no static equilibrium in that state", i + 1,
-            org.handsim.util.Decimal.format(episodeStart[i]), org.handsim.util.Decimal.format(episodeEnd[i]), episodeMax[i]);
+            org.handsim.text.Decimal.format(episodeStart[i]), org.handsim.text.Decimal.format(episodeEnd[i]), episodeMax[i]);
     }
 
     /**
@@ -742,7 +749,7 @@ public final class HandModel {
         if (o != null) {
             // the mesh the run collides with (shared, already loaded): an object far larger than
             // the hand is almost always a unit mistake, and would run without a contact
-            String size = UnitRule.sizeWarning(o.file(), SceneGeometry.mesh(o.file(), o.divisions(), o.meshScale()), o.units());
+            String size = UnitRule.sizeWarning(o.file(), SceneMeshes.mesh(o.file(), o.divisions(), o.meshScale()), o.units());
             if (size != null) w.add(size);
         }
         for (int k = 1; k <= 3; k++) {
@@ -780,6 +787,29 @@ public final class HandModel {
     public double[] accelerations(int k) { return qdd[k - 1].clone(); }
     /** An immutable copy of the state now, for other threads. */
     public Snapshot snapshot() { return Snapshot.of(this); }
+    /**
+     * What a grasp evaluation reads of this model as it is now, copied ({@link
+     * GraspAssessment#of(GraspAssessment.Input, double, int)} evaluates it on any thread); this
+     * model's thread only.
+     */
+    public GraspAssessment.Input graspInput() {
+        java.util.List<GraspAssessment.Contact> list = new java.util.ArrayList<>();
+        double[][] frames = new double[3][];
+        boolean[] engaged = new boolean[3];
+        double[] residual = new double[3];
+        for (int k = 1; k <= 3; k++) {
+            residual[k - 1] = torqueResidual(k);
+            ContactSet cs = contacts(k);
+            for (int i = 0; i < cs.size(); i++) {
+                double[] n = cs.normal(i);
+                // into the object: 0 − n, which turns a zero component into +0, not −0
+                list.add(new GraspAssessment.Contact(k, cs.link(i), cs.point(i), new double[] {0.0 - n[0], 0.0 - n[1], 0.0 - n[2]}, cs.forceVector(i)));
+            }
+            frames[k - 1] = framesWorld(k);
+            engaged[k - 1] = clutchEngaged(k);
+        }
+        return new GraspAssessment.Input(time(), java.util.List.copyOf(list), frames, engaged, hand(), objectCentroidAndRadius(), residual);
+    }
     /** Joint torques of finger k (a new array, N·m). */
     public double[] torques(int k) { return tau[k - 1].clone(); }
     /** Motor counts of finger k now. */

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 /**
  * The collision side of the model: where the links of a placed finger touch the object.

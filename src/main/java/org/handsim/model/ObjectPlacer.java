@@ -1,8 +1,10 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import java.nio.file.Path;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 
 /**
  * Where a newly imported object goes (issue 14): on the palm axis in front of the palm, clear of
@@ -41,7 +43,7 @@ public final class ObjectPlacer {
 
     /** The height of the palm's surface in the palm frame, m (the top of {@code vrml/hand/palm.wrl}). */
     public static double palmTop() {
-        return SceneGeometry.mesh(SceneGeometry.palmFile(), SceneGeometry.LINK_DIVISIONS, 1.0).bounds()[1][2];
+        return SceneMeshes.mesh(SceneMeshes.palmFile(), SceneMeshes.LINK_DIVISIONS, 1.0).bounds()[1][2];
     }
 
     /**
@@ -55,7 +57,7 @@ public final class ObjectPlacer {
      */
     public static Placed place(Scenario s, Path file, int divisions, double scale, Scenario.Units units) {
         double ms = units.metres() * scale;
-        TriangleMesh mesh = SceneGeometry.mesh(file, divisions, ms);
+        TriangleMesh mesh = SceneMeshes.mesh(file, divisions, ms);
         double[][] b = mesh.bounds();
         double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]);
         double size = mesh.diagonal();

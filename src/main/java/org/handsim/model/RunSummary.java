@@ -1,6 +1,6 @@
-package org.handsim.sim;
+package org.handsim.model;
 
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;

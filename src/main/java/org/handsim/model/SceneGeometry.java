@@ -1,6 +1,5 @@
-package org.handsim.sim;
+package org.handsim.model;
 
-import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Map;
 import org.handsim.collision.CollisionResult;
@@ -9,12 +8,11 @@ import org.handsim.collision.KdopTree;
 import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
-import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.BoundedCache;
-import org.handsim.util.CommandContext;
-import org.handsim.vrml.VrmlLoader;
-import org.handsim.vrml.VrmlScene;
+import org.handsim.process.BoundedCache;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.scenario.SceneMeshes;
 
 /**
  * The geometry of a scene and its collision back end: the hand's link meshes
@@ -38,7 +36,7 @@ import org.handsim.vrml.VrmlScene;
  * often each ran.
  *
  * <p>Meshes and trees are immutable and shared between instances (and threads) through
- * bounded caches ({@link BoundedCache}, {@link #CACHE_TRIANGLES}) keyed by file, divisions,
+ * bounded caches ({@link BoundedCache}, {@link SceneMeshes#CACHE_TRIANGLES}) keyed by file, divisions,
  * mesh scale (the placement's units × scale) and k, each made once however many threads ask;
  * an instance costs no geometry work. Each instance has its own query scratch, so one
  * instance per model (per thread).
@@ -46,8 +44,6 @@ import org.handsim.vrml.VrmlScene;
 public final class SceneGeometry implements LinkContacts {
     /** Default k of the k-DOPs (issue 5's default; see docs/BENCHMARKS.md for the others). */
     public static final int DEFAULT_K = 18;
-    /** Divisions the hand's meshes (links and, in the window, the palm) are loaded at. */
-    public static final int LINK_DIVISIONS = 32;
 
     private final int k;
     private final Path objectFile;
@@ -121,7 +117,7 @@ public final class SceneGeometry implements LinkContacts {
         double diag = obj.diagonal;
         double linkWidth = Double.POSITIVE_INFINITY;
         for (int j = 1; j <= 3; j++) {
-            Shape link = retired != null && retired.k == k ? retired.linkShapes[j - 1] : shape(linkFile(j), LINK_DIVISIONS, 1.0, k);
+            Shape link = retired != null && retired.k == k ? retired.linkShapes[j - 1] : shape(SceneMeshes.linkFile(j), SceneMeshes.LINK_DIVISIONS, 1.0, k);
             linkShapes[j - 1] = link;
             if (retired == null || retired.k != k) linkWidth = Math.min(linkWidth, link.thickness());   // reused shapes: their width below
             linkMeshes[j - 1] = link.mesh;
@@ -157,47 +153,7 @@ public final class SceneGeometry implements LinkContacts {
         }
     }
 
-    /**
-     * Bound of each cache below, in triangles (the weight of a mesh and of a shape): about
-     * 60 bytes a triangle for a mesh, 250 for a shape (its mesh, its tree's nodes, placed
-     * vertices and normals), so at most some 60 and 250 MB; the least recently used go first.
-     */
-    static final long CACHE_TRIANGLES = 1_000_000;
 
-    private static final BoundedCache<String, FileMesh> MESHES = new BoundedCache<>(CACHE_TRIANGLES, m -> m.mesh.triangleCount());
-
-    /**
-     * A cached mesh and the bytes of the file it was made from (null for a file whose mesh
-     * depends on other files: VRML with Inline or EXTERNPROTO). A JVM that runs many commands
-     * (the resident server) checks the file once per command ({@link CommandContext#generation()})
-     * and makes the mesh again if the file has changed; a single command's JVM never needs to.
-     */
-    private static final class FileMesh {
-        final Path file;
-        final TriangleMesh mesh;
-        final byte[] bytes;
-        volatile long checked;
-
-        FileMesh(Path file, TriangleMesh mesh, byte[] bytes, long checked) {
-            this.file = file;
-            this.mesh = mesh;
-            this.bytes = bytes;
-            this.checked = checked;
-        }
-
-        boolean unchanged() {
-            long now = CommandContext.generation();
-            if (checked == now) return true;
-            if (bytes == null) return false;
-            try {
-                if (!java.util.Arrays.equals(java.nio.file.Files.readAllBytes(file), bytes)) return false;
-            } catch (java.io.IOException | RuntimeException e) {
-                return false;   // gone or unreadable: load it again, and let the loader say why
-            }
-            checked = now;
-            return true;
-        }
-    }
 
     /**
      * A mesh with what the queries need of it, made once per file, divisions, scale and k and
@@ -242,11 +198,11 @@ public final class SceneGeometry implements LinkContacts {
         }
     }
 
-    private static final BoundedCache<String, Shape> SHAPES = new BoundedCache<>(CACHE_TRIANGLES, sh -> sh.mesh.triangleCount());
+    private static final BoundedCache<String, Shape> SHAPES = new BoundedCache<>(SceneMeshes.CACHE_TRIANGLES, sh -> sh.mesh.triangleCount());
 
     private static Shape shape(Path file, int divisions, double scale, int k) {
         String key = file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale + "|k" + k;
-        TriangleMesh m = mesh(file, divisions, scale);   // the file's mesh now: a shape of an older one is made again
+        TriangleMesh m = SceneMeshes.mesh(file, divisions, scale);   // the file's mesh now: a shape of an older one is made again
         return SHAPES.get(key, sh -> sh.mesh == m, x -> new Shape(x, divisions, scale, m, k));
     }
 
@@ -314,52 +270,7 @@ public final class SceneGeometry implements LinkContacts {
 
     private static double sq(double x) { return x * x; }
 
-    /** The mesh file of link j (1..3) of every finger. */
-    public static Path linkFile(int j) {
-        return Home.handModels().resolve("finger_link" + j + ".wrl");
-    }
 
-    /** The palm's mesh file (palm frame). */
-    public static Path palmFile() {
-        return Home.handModels().resolve("palm.wrl");
-    }
-
-    /**
-     * Loads (once per file, divisions and scale) an object's file — VRML97, OBJ or STL, by its
-     * type ({@link MeshFiles}) — as one triangle mesh in metres, degenerate triangles dropped.
-     *
-     * @throws ScenarioException with the loader's {@code FILE:LINE:COL: message} (or
-     *         {@code FILE: byte N: message} for binary STL)
-     */
-    public static TriangleMesh mesh(Path file, int divisions, double scale) {
-        return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, FileMesh::unchanged, x -> {
-            long generation = CommandContext.generation();
-            byte[] bytes;
-            try {
-                bytes = java.nio.file.Files.readAllBytes(file);
-                if (!MeshCache.selfContained(file, bytes)) bytes = null;
-            } catch (java.io.IOException | RuntimeException e) {
-                bytes = null;   // the loader says why
-            }
-            TriangleMesh m = MeshCache.get(file, divisions, scale, () -> MeshFiles.load(file, divisions, scale).mesh());
-            if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
-            return new FileMesh(file, m, bytes, generation);
-        }).mesh;
-    }
-
-    /**
-     * Loads VRML text the way {@link #mesh(Path, int, double)} loads a file, not cached (the
-     * tradeoff studies' generated objects).
-     *
-     * @throws VrmlParseException naming {@code name}, line and column
-     */
-    public static TriangleMesh mesh(String name, Reader vrml, int divisions, double scale) {
-        return walk(new VrmlLoader().divisions(divisions).normals(false).load(name, vrml), name, scale);
-    }
-
-    private static TriangleMesh walk(VrmlScene scene, String name, double scale) {
-        return new TessellationWalk().scale(scale).name(name).run(scene.getSceneGroup()).merged();
-    }
 
     public TriangleMesh objectMesh() { return objectMesh; }
     /** The object's tree (object frame) and link j's (frame {kj}), for other queries on the same trees ({@link HandClearance}). */

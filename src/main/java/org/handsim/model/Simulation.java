@@ -1,6 +1,8 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import org.handsim.dynamics.HandDynamics;
+import org.handsim.scenario.Scenario;
+import org.handsim.trace.Recorder;
 
 /** Builds a ready-to-run {@link HandModel} for a scenario: collision back end and dynamics. */
 public final class Simulation {

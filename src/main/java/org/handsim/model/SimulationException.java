@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 /** A run stopped by a numerical guard; the message names the step, the time and the value. */
 public final class SimulationException extends RuntimeException {

@@ -1,4 +1,6 @@
-package org.handsim.sim;
+package org.handsim.model;
+
+import org.handsim.clutch.ClutchState;
 
 /**
  * An immutable copy of the model's state after a step, for views on other threads (the GUI

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 /** The dynamics side of the model: inverse dynamics of one finger, paper eq (8). */
 public interface TorqueModel {

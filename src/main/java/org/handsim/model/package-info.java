@@ -1,12 +1,15 @@
 /**
  * The simulation model in Easy-Java-Simulations style: state variables, {@code initialise()},
- * {@code step(dt)} and the fixed relations between them ({@link org.handsim.sim.HandModel}),
- * the clutch state machine of each finger ({@link org.handsim.sim.FingerClutch}, DESIGN.md
- * decision 1), scenarios read from JSON, the recorder and the output files, and the evaluation
- * of a model's grasp ({@link org.handsim.sim.GraspAssessment}: quality and hold, with each
- * joint's limit in its clutch state; DESIGN.md decisions 5 and 6).
+ * {@code step(dt)} and the fixed relations between them ({@link org.handsim.model.HandModel}),
+ * its collision back end against the object ({@link org.handsim.model.SceneGeometry}), the
+ * hand's clearance, object placement, snapshots for views and the run's summary. It uses every
+ * room below it ({@code scenario}, {@code trace}, {@code clutch}, {@code trajectory},
+ * {@code grasp}, {@code contact}, {@code collision}, {@code dynamics}, {@code kinematics},
+ * {@code mesh}, {@code hand}, {@code math}, {@code process}, {@code text}); nothing below it
+ * knows it.
  *
  * <p>Thread rules: a model instance is stepped by one thread at a time; views read
- * {@link org.handsim.sim.Snapshot}s, immutable copies taken after a step.
+ * {@link org.handsim.model.Snapshot}s, immutable copies taken after a step, and grasp inputs
+ * ({@link org.handsim.model.HandModel#graspInput()}).
  */
-package org.handsim.sim;
+package org.handsim.model;

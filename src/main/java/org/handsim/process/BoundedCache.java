@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.process;
 
 import java.util.Iterator;
 import java.util.LinkedHashMap;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.process;
 
 /**
  * What a command may ask about the invocation it runs for, when one JVM runs many commands one

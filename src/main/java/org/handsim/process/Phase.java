@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.process;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -26,7 +26,7 @@ public final class Phase {
     }
 
     /** Marks a point inside a publication: never a cancellation point. */
-    static void reachInPublication(String name) {
+    public static void reachInPublication(String name) {
         if (System.getProperty("handsim.phases") == null) return;
         System.err.println("handsim-phase " + name);
         System.err.flush();

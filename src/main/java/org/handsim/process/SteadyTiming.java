@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.process;
 
 import java.lang.management.CompilationMXBean;
 import java.lang.management.ManagementFactory;

@@ -1,6 +1,7 @@
-package org.handsim.util;
+package org.handsim.process;
 
 import java.math.BigDecimal;
+import org.handsim.text.Decimal;
 
 /**
  * The time of step n of a fixed time step, as people write it: n × dt computed once from the

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -20,9 +20,9 @@ import java.util.TreeMap;
 import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipFile;
-import org.handsim.util.ExitCleanup;
-import org.handsim.util.Folders;
-import org.handsim.util.PrivateFolder;
+import org.handsim.process.ExitCleanup;
+import org.handsim.files.Folders;
+import org.handsim.files.PrivateFolder;
 
 /**
  * Where HandSim's data folders are ({@code vrml/}, {@code scenarios/}): the system property

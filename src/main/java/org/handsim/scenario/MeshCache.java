@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -16,7 +16,7 @@ import java.util.function.Supplier;
 import java.util.zip.CRC32C;
 import java.util.zip.GZIPInputStream;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.PrivateFolder;
+import org.handsim.files.PrivateFolder;
 
 /**
  * A folder of triangle meshes already tessellated, so that a command in a new JVM reads an
@@ -124,7 +124,7 @@ public final class MeshCache {
         if (id != null) return id.isEmpty() ? null : id;
         StringBuilder sb = new StringBuilder(System.getProperty("java.version", "?"));
         // by resource, not by class: naming a Java3D class here would load Java3D, which the cache is there to avoid
-        for (String cls : new String[] {"org/handsim/sim/MeshCache.class", "org/jogamp/java3d/Shape3D.class"}) {
+        for (String cls : new String[] {"org/handsim/scenario/MeshCache.class", "org/jogamp/java3d/Shape3D.class"}) {
             try {
                 java.net.URL u = MeshCache.class.getClassLoader().getResource(cls);
                 String path = u == null || !"jar".equals(u.getProtocol()) ? null : u.getPath();

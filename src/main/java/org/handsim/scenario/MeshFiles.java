@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import org.handsim.mesh.MeshFileException;
 import org.handsim.mesh.MeshLimits;
-import org.handsim.util.InputFile;
+import org.handsim.files.InputFile;
 import org.handsim.mesh.ObjReader;
 import org.handsim.mesh.StlReader;
 import org.handsim.mesh.TessellationWalk;
@@ -17,7 +17,7 @@ import org.handsim.vrml.VrmlScene;
 
 /**
  * The one place where an object's file becomes a triangle mesh, by its type: scenarios
- * ({@link SceneGeometry#mesh}), the window, {@code handsim mesh} and {@code collide}, and the
+ * ({@link SceneMeshes#mesh}), the window, {@code handsim mesh} and {@code collide}, and the
  * planner all load through here.
  * <ul>
  *   <li><b>VRML97</b> ({@code .wrl}, {@code .wrz}, gzip or plain; the default for any other
@@ -68,7 +68,7 @@ public final class MeshFiles {
     public record Loaded(TriangleMesh mesh, Format format, int shapes, long degenerate, List<String> warnings) {}
 
     /**
-     * Loads a file (not cached: {@link SceneGeometry#mesh} caches).
+     * Loads a file (not cached: {@link SceneMeshes#mesh} caches).
      *
      * @param divisions segments round VRML Sphere, Cylinder and Cone nodes (VRML only)
      * @param scale     multiplies every coordinate (positive, finite)

@@ -1,8 +1,8 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.handsim.util.InputFile;
+import org.handsim.files.InputFile;
 
 /**
  * The message for a file that is not there, saying where it was looked for: a relative path

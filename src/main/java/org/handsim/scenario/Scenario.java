@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -7,17 +7,17 @@ import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
 import org.handsim.hand.InputRanges;
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.trajectory.CartesianLine;
-import org.handsim.sim.trajectory.Hold;
-import org.handsim.sim.trajectory.Quintic;
-import org.handsim.sim.trajectory.Sequence;
-import org.handsim.sim.trajectory.Trajectory;
-import org.handsim.sim.trajectory.Trapezoid;
+import org.handsim.trajectory.CartesianLine;
+import org.handsim.trajectory.Hold;
+import org.handsim.trajectory.Quintic;
+import org.handsim.trajectory.Sequence;
+import org.handsim.trajectory.Trajectory;
+import org.handsim.trajectory.Trapezoid;
 import org.handsim.mesh.MeshLimits;
-import org.handsim.util.InputFile;
-import org.handsim.util.FileName;
-import org.handsim.util.Json;
-import org.handsim.util.JsonObject;
+import org.handsim.files.InputFile;
+import org.handsim.files.FileName;
+import org.handsim.text.Json;
+import org.handsim.text.JsonObject;
 
 /**
  * A simulation scenario read from JSON: where the hand and the object are, what the four
@@ -501,8 +501,8 @@ public final class Scenario implements Cloneable {
     public static String stepsProblem(double duration, double dt) {
         double steps = Math.ceil(duration / dt - 1e-9);
         if (steps <= MAX_STEPS) return null;
-        return "needs " + org.handsim.util.Decimal.count(steps) + " steps (" + org.handsim.util.Decimal.format(duration) + " s at "
-            + org.handsim.util.Decimal.format(dt) + " s a step), more than the limit of " + org.handsim.util.Decimal.count(MAX_STEPS)
+        return "needs " + org.handsim.text.Decimal.count(steps) + " steps (" + org.handsim.text.Decimal.format(duration) + " s at "
+            + org.handsim.text.Decimal.format(dt) + " s a step), more than the limit of " + org.handsim.text.Decimal.count(MAX_STEPS)
             + " (about 25 minutes and 2 GB of trace)";
     }
 

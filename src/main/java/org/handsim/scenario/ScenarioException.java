@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 /** A scenario file that cannot be used; the message names the file and the field. */
 public final class ScenarioException extends RuntimeException {

@@ -1,15 +1,15 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.handsim.util.InputFile;
-import org.handsim.util.FileName;
-import org.handsim.util.Json;
-import org.handsim.util.JsonObject;
-import org.handsim.util.JsonWriter;
+import org.handsim.files.InputFile;
+import org.handsim.files.FileName;
+import org.handsim.text.Json;
+import org.handsim.text.JsonObject;
+import org.handsim.text.JsonWriter;
 
 /**
  * A sweep file: many runs of one base scenario with fields overridden, and/or other scenario

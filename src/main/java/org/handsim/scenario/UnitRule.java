@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import java.nio.file.Path;
 import java.util.Locale;
@@ -51,13 +51,13 @@ public final class UnitRule {
 
     /**
      * The unit of {@code file}: {@code chosen} when not null, else judged by its size (the file is
-     * loaded at scale 1, through the shared cache of {@link SceneGeometry#mesh}).
+     * loaded at scale 1, through the shared cache of {@link SceneMeshes#mesh}).
      *
      * @throws ScenarioException if the file must be loaded and cannot be
      */
     public static Choice resolve(Path file, int divisions, Scenario.Units chosen) {
         if (chosen != null) return new Choice(chosen, false);
-        return new Choice(bySize(SceneGeometry.mesh(file, divisions, 1.0)), true);
+        return new Choice(bySize(SceneMeshes.mesh(file, divisions, 1.0)), true);
     }
 
     /** The unit of a mesh read at scale 1: {@code chosen} when not null, else judged by its size. */

@@ -1,12 +1,12 @@
-package org.handsim.cli;
+package org.handsim.server;
 
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.handsim.server.ServerAdmin;
-import org.handsim.sim.Home;
-import org.handsim.util.SafeText;
+import org.handsim.cli.CliError;
+import org.handsim.scenario.Home;
+import org.handsim.text.SafeText;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.text;
 
 import com.fasterxml.jackson.core.io.NumberOutput;
 

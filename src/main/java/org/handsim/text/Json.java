@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.text;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.text;
 
 import java.util.Iterator;
 import java.util.List;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.text;
 
 /**
  * Input quoted in a message, made safe for tools that read messages line by line (issue 15:

@@ -1,10 +1,6 @@
 /**
- * Edge-of-the-program helpers: a small JSON reader that reports line and column, a JSON writer
- * for the command outputs, CSV reading with line numbers, atomic file output (write to a
- * temporary name, then rename) so that a failed run never leaves a half-written file that looks
- * complete, and the command line's conventions (issue 15): the one number format of every output
- * ({@link org.handsim.util.Decimal}), step times in decimal ({@link org.handsim.util.StepClock}),
- * input quoted safely in one-line messages ({@link org.handsim.util.SafeText}) and the one timing
- * helper for commands that print a time ({@link org.handsim.util.SteadyTiming}).
+ * Text formats at the program's edges: the JSON reader and writer, the one number format of every
+ * output ({@link org.handsim.text.Decimal}) and input quoted safely in one-line messages
+ * ({@link org.handsim.text.SafeText}). It uses the JDK and jackson-core alone, and no other room.
  */
-package org.handsim.util;
+package org.handsim.text;

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.trace;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -7,8 +7,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.Decimal;
+import org.handsim.clutch.ClutchState;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.Decimal;
 
 /**
  * Records one row per step and writes {@code trace.csv}. The header is a contract (README,

@@ -1,4 +1,4 @@
-package org.handsim.sim.trajectory;
+package org.handsim.trajectory;
 
 import org.handsim.kinematics.CoupledReach;
 import org.handsim.kinematics.FingerKinematics;

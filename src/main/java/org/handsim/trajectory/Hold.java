@@ -1,4 +1,4 @@
-package org.handsim.sim.trajectory;
+package org.handsim.trajectory;
 
 /** Stays at one position for a given time (zero velocity and acceleration). */
 public final class Hold implements Trajectory {

@@ -1,4 +1,4 @@
-package org.handsim.sim.trajectory;
+package org.handsim.trajectory;
 
 /**
  * Quintic polynomial from rest to rest: q(t) = q0 + Δq·(10τ³ − 15τ⁴ + 6τ⁵), τ = t/T, so

@@ -1,4 +1,4 @@
-package org.handsim.sim.trajectory;
+package org.handsim.trajectory;
 
 import java.util.List;
 

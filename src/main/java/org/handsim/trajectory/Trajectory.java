@@ -1,4 +1,4 @@
-package org.handsim.sim.trajectory;
+package org.handsim.trajectory;
 
 /**
  * A motor set-point q(t) in encoder counts for t ∈ [0, duration] seconds; before 0 it is

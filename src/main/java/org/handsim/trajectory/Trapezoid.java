@@ -1,4 +1,4 @@
-package org.handsim.sim.trajectory;
+package org.handsim.trajectory;
 
 /**
  * Trapezoidal velocity profile (the paper's Section V input): constant acceleration a up to

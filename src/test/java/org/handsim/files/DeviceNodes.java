@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import java.nio.file.Files;
 import java.nio.file.LinkOption;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;

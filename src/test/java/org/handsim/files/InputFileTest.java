@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Map;
+import org.handsim.text.Decimal;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.files;
 
 import java.io.IOException;
 import java.net.StandardProtocolFamily;
@@ -13,7 +13,7 @@ import java.util.concurrent.TimeUnit;
 /**
  * A folder holding one of each kind of file that is not a regular file — a FIFO, a directory, a
  * socket — and the character device {@code /dev/null}: what every input of HandSim must refuse
- * at once with "is not a regular file" (util.InputFile). Opening the FIFO for reading would block
+ * at once with "is not a regular file" (files.InputFile). Opening the FIFO for reading would block
  * until a writer came: a test that hangs on it has found the bug.
  */
 public final class SpecialFiles implements AutoCloseable {

@@ -1,11 +1,15 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.handsim.clutch.ClutchState;
 import org.handsim.hand.HandDescription;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
@@ -53,7 +57,7 @@ class EdgeOnFaceContactTest {
         double[] fr = atContact.framesWorld(3);
         RigidTransform worldFromLink = RigidTransform.of(java.util.Arrays.copyOfRange(fr, 24, 36));
         double[] p = worldFromLink.inverse().apply(cs.point(c));
-        TriangleMesh link = SceneGeometry.mesh(SceneGeometry.linkFile(2), SceneGeometry.LINK_DIVISIONS, 1.0);
+        TriangleMesh link = SceneMeshes.mesh(SceneMeshes.linkFile(2), SceneMeshes.LINK_DIVISIONS, 1.0);
         double[] v = link.vertices(), nrm = link.normals();
         int[] t = link.triangles();
         int found = 0;
@@ -86,7 +90,7 @@ class EdgeOnFaceContactTest {
         RigidTransform t = o.worldFromObject();
         // the cube's edges along its x axis (edge 0.06 m, centred): the one through the contact,
         // from the loaded mesh's vertices (read as floats: 0.03 is 0.029999999329...)
-        double[] v = SceneGeometry.mesh(o.file(), o.divisions(), o.meshScale()).vertices();
+        double[] v = SceneMeshes.mesh(o.file(), o.divisions(), o.meshScale()).vertices();
         double half = 0;
         for (double x : v) half = Math.max(half, x);
         double[] edge = null;

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,6 +9,7 @@ import org.handsim.math.RigidTransform;
 import org.handsim.plan.Autograsp;
 import org.handsim.plan.TrialParameters;
 import org.handsim.plan.TrialSampler;
+import org.handsim.scenario.Scenario;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,10 +1,13 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import org.handsim.clutch.ClutchState;
 import org.handsim.kinematics.Transmission;
+import org.handsim.scenario.Scenario;
+import org.handsim.trace.Recorder;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,14 +1,16 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.handsim.sim.trajectory.Hold;
-import org.handsim.sim.trajectory.Sequence;
-import org.handsim.sim.trajectory.Trajectory;
-import org.handsim.sim.trajectory.Trapezoid;
+import org.handsim.clutch.ClutchState;
+import org.handsim.scenario.Scenario;
+import org.handsim.trajectory.Hold;
+import org.handsim.trajectory.Sequence;
+import org.handsim.trajectory.Trajectory;
+import org.handsim.trajectory.Trapezoid;
 import org.junit.jupiter.api.Test;
 
 /**

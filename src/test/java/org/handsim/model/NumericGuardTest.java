@@ -1,9 +1,12 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.handsim.dynamics.HandDynamics;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.trace.Recorder;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -10,6 +10,9 @@ import java.nio.file.Path;
 import org.handsim.TestPaths;
 import org.handsim.mesh.StlWriter;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
+import org.handsim.scenario.UnitRule;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 
@@ -20,7 +23,7 @@ import org.junit.jupiter.api.Test;
  */
 class ObjectPlacerTest {
     static Path mugInMillimetres(Path dir) throws Exception {
-        TriangleMesh mug = SceneGeometry.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0);
+        TriangleMesh mug = SceneMeshes.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0);
         Path f = dir.resolve("mug_mm.stl");
         try (OutputStream o = Files.newOutputStream(f)) {
             StlWriter.writeBinary(o, mug, 1000);
@@ -32,8 +35,8 @@ class ObjectPlacerTest {
     void unitsFromTheSize() throws Exception {
         Path dir = Files.createTempDirectory("handsim-placer");
         Path stl = mugInMillimetres(dir);
-        assertEquals(Scenario.Units.MM, UnitRule.bySize(SceneGeometry.mesh(stl, 24, 1.0)));
-        assertEquals(Scenario.Units.M, UnitRule.bySize(SceneGeometry.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0)));
+        assertEquals(Scenario.Units.MM, UnitRule.bySize(SceneMeshes.mesh(stl, 24, 1.0)));
+        assertEquals(Scenario.Units.M, UnitRule.bySize(SceneMeshes.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0)));
         VrmlTesting.deleteTree(dir);
     }
 
@@ -43,7 +46,7 @@ class ObjectPlacerTest {
         Path stl = mugInMillimetres(dir);
         // the mug grasp's hand, fingers part closed: the mug on the palm would be inside the fingers
         Scenario s = Scenario.load(TestPaths.root().resolve("scenarios/paper-breakaway.json"));
-        for (int m = 0; m < 3; m++) s = s.withMotor(m, new org.handsim.sim.trajectory.Hold(6000, 0));
+        for (int m = 0; m < 3; m++) s = s.withMotor(m, new org.handsim.trajectory.Hold(6000, 0));
         // where an import used to land: the previous object's pose (the cube's), in the mug's units
         Scenario inside = s.withObject(s.object().withPose(new double[] {0, 0, 0.12}, new double[3]).withScale(1, Scenario.Units.MM));
         inside = inside.withObject(new Scenario.ObjectPlacement(stl, inside.object().worldFromObject(), 1, 24, Scenario.Units.MM, null));
@@ -58,11 +61,11 @@ class ObjectPlacerTest {
         for (int k = 1; k <= 3; k++) assertEquals(0, model.contacts(k).size());
         // one step less would still touch: the placement is the first clear one
         double[] pos = p.placement().position();
-        double step = Math.max(0.005, 0.05 * SceneGeometry.mesh(stl, 24, 0.001).diagonal());
+        double step = Math.max(0.005, 0.05 * SceneMeshes.mesh(stl, 24, 0.001).diagonal());
         Scenario closer = s.withObject(p.placement().withPose(new double[] {pos[0], pos[1], pos[2] - step}, p.placement().rotation()));
         assertFalse(ObjectPlacer.clear(closer));
         // on the palm axis (palm = world here): the bounding-box centre at x = y = 0
-        TriangleMesh placedMesh = SceneGeometry.mesh(stl, 24, 0.001);
+        TriangleMesh placedMesh = SceneMeshes.mesh(stl, 24, 0.001);
         double[][] b = placedMesh.bounds();
         assertEquals(0, pos[0] + 0.5 * (b[0][0] + b[1][0]), 1e-12);
         assertEquals(0, pos[1] + 0.5 * (b[0][1] + b[1][1]), 1e-12);

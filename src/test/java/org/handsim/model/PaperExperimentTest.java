@@ -1,8 +1,12 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.handsim.clutch.ClutchState;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.trace.Recorder;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 

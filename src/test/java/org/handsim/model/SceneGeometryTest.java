@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -8,6 +8,9 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.handsim.math.RigidTransform;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.trace.Recorder;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -6,8 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import org.handsim.TestPaths;
+import org.handsim.clutch.ClutchState;
 import org.handsim.dynamics.HandDynamics;
-import org.handsim.sim.trajectory.Trapezoid;
+import org.handsim.scenario.Scenario;
+import org.handsim.trajectory.Trapezoid;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,10 +1,13 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.handsim.clutch.ClutchState;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -62,7 +65,7 @@ class TunnellingTest {
 
     @Test
     void thicknessEstimateOfThePlate() throws Exception {
-        double w = SceneGeometry.minWidth(SceneGeometry.mesh(plate(), 24, 1.0));
+        double w = SceneGeometry.minWidth(SceneMeshes.mesh(plate(), 24, 1.0));
         assertEquals(0.001, w, 1e-7);
     }
 }

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.process;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.process;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.math.BigDecimal;
 import java.util.Random;
+import org.handsim.text.Decimal;
 import org.junit.jupiter.api.Test;
 
 /** {@link StepClock}: step × dt as the double nearest the exact decimal product. */

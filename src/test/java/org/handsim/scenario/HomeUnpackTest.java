@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -23,11 +23,11 @@ import java.util.concurrent.Future;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import org.handsim.TestPaths;
-import org.handsim.util.Folders;
+import org.handsim.files.Folders;
 import org.junit.jupiter.api.Test;
 
 /**
- * The runnable jar's models unpacked where nobody else can change them (sim.Home): into the
+ * The runnable jar's models unpacked where nobody else can change them (scenario.Home): into the
  * user's private cache, checked file by file against the jar's SHA-256 before every use; a
  * copy planted where the old versions looked is never read; a damaged or replaced copy is not
  * used; a cache others can write is not used at all (a private temporary folder instead); and

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -7,7 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.handsim.cli.ChildJvm;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.CommandContext;
+import org.handsim.process.CommandContext;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -32,17 +32,17 @@ class MeshCheckedPerCommandTest {
             Path f = dir.resolve("plate.obj");
             Files.writeString(f, triangles(1));
             CommandContext.begin(false);
-            TriangleMesh first = SceneGeometry.mesh(f, 8, 1.0);
+            TriangleMesh first = SceneMeshes.mesh(f, 8, 1.0);
             assertEquals(1, first.triangleCount());
             Files.writeString(f, triangles(3));
-            assertSame(first, SceneGeometry.mesh(f, 8, 1.0), "within one command the file is read once");
+            assertSame(first, SceneMeshes.mesh(f, 8, 1.0), "within one command the file is read once");
             CommandContext.end();
             CommandContext.begin(false);   // the next command
-            TriangleMesh second = SceneGeometry.mesh(f, 8, 1.0);
+            TriangleMesh second = SceneMeshes.mesh(f, 8, 1.0);
             assertEquals(3, second.triangleCount(), "the edited file's mesh");
             CommandContext.end();
             CommandContext.begin(false);   // unchanged file: the cached mesh
-            assertSame(second, SceneGeometry.mesh(f, 8, 1.0));
+            assertSame(second, SceneMeshes.mesh(f, 8, 1.0));
             CommandContext.end();
         } finally {
             CommandContext.end();

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

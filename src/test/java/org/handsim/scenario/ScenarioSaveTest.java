@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.scenario;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -8,11 +8,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import org.handsim.TestPaths;
-import org.handsim.sim.trajectory.CartesianLine;
-import org.handsim.sim.trajectory.Quintic;
-import org.handsim.sim.trajectory.Sequence;
-import org.handsim.sim.trajectory.Trapezoid;
-import org.handsim.util.JsonWriter;
+import org.handsim.model.HandModel;
+import org.handsim.model.Simulation;
+import org.handsim.trajectory.CartesianLine;
+import org.handsim.trajectory.Quintic;
+import org.handsim.trajectory.Sequence;
+import org.handsim.trajectory.Trapezoid;
+import org.handsim.text.JsonWriter;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 
@@ -59,7 +61,7 @@ class ScenarioSaveTest {
         s = s.withMotor(0, new CartesianLine(1, q1, q4, new double[] {0.12, 0.01, 0.10}, 1.3));
         s = s.withMotor(1, new Quintic(q2, 9000.25, 1.7));
         s = s.withMotor(2, new Sequence(java.util.List.of(new Trapezoid(q3, 17500, 4244.294, 21221.471),
-            new org.handsim.sim.trajectory.Hold(17500, 0.3), new Quintic(17500, 0, 1.1))));
+            new org.handsim.trajectory.Hold(17500, 0.3), new Quintic(17500, 0, 1.1))));
         s = s.withDuration(3.1234567);
         s = s.withGravity(new double[] {0.1, -9.7, 1.3});
         Scenario.ObjectPlacement p = s.object();
@@ -89,7 +91,7 @@ class ScenarioSaveTest {
         Scenario m = Scenario.parse(f, String.format(base, "m", "1"));
         assertEquals(1.0, mm.object().meshScale());
         assertEquals(Scenario.Units.M, m.object().units());
-        assertEquals(SceneGeometry.mesh(m.object().file(), 24, m.object().meshScale()).area(),
-            SceneGeometry.mesh(mm.object().file(), 24, mm.object().meshScale()).area());
+        assertEquals(SceneMeshes.mesh(m.object().file(), 24, m.object().meshScale()).area(),
+            SceneMeshes.mesh(mm.object().file(), 24, mm.object().meshScale()).area());
     }
 }

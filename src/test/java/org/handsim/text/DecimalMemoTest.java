@@ -1,4 +1,4 @@
-package org.handsim.util;
+package org.handsim.text;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.trace;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Random;
+import org.handsim.clutch.ClutchState;
 import org.junit.jupiter.api.Test;
 
 /**

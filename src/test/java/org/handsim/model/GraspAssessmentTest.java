@@ -1,4 +1,4 @@
-package org.handsim.sim;
+package org.handsim.model;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -6,7 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import org.handsim.clutch.ClutchState;
+import org.handsim.grasp.GraspAssessment;
 import org.handsim.hand.HandDescription;
+import org.handsim.scenario.Scenario;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -40,7 +43,7 @@ class GraspAssessmentTest {
         HandModel m = plane(1.3);
         assertEquals(ClutchState.BLOCKED, m.state(3));
         assertTrue(m.clutchEngaged(3));
-        GraspAssessment g = GraspAssessment.of(m, 0.5, 8);
+        GraspAssessment g = GraspAssessment.of(m.graspInput(), 0.5, 8);
         assertEquals(1, g.contacts().size());
         assertFalse(g.quality().forceClosure());
         double[] expected = {0, 0, 0, 0, 0, 1.26 / ARM};
@@ -54,7 +57,7 @@ class GraspAssessmentTest {
         HandModel m = plane(4.0);
         assertEquals(ClutchState.STALLED, m.state(3));
         assertFalse(m.clutchEngaged(3), "stalled after a breakaway");
-        GraspAssessment g = GraspAssessment.of(m, 0.5, 8);
+        GraspAssessment g = GraspAssessment.of(m.graspInput(), 0.5, 8);
         assertEquals(1, g.contacts().size());
         double rated = 2 * 9.80665 * (0.070 + 0.056);
         assertEquals(rated / ARM, g.holdN()[5], 1e-6);
@@ -65,7 +68,7 @@ class GraspAssessmentTest {
     @Test
     void contactsAreTheSimulationsWithTheNormalIntoTheObject() {
         HandModel m = plane(1.3);
-        GraspAssessment g = GraspAssessment.of(m, 0.5, 8);
+        GraspAssessment g = GraspAssessment.of(m.graspInput(), 0.5, 8);
         GraspAssessment.Contact c = g.contacts().get(0);
         ContactSet cs = m.contacts(3);
         assertEquals(3, c.finger());
@@ -80,7 +83,7 @@ class GraspAssessmentTest {
     @Test
     void noContacts() {
         HandModel m = plane(0.5);
-        GraspAssessment g = GraspAssessment.of(m, 0.5, 8);
+        GraspAssessment g = GraspAssessment.of(m.graspInput(), 0.5, 8);
         assertEquals(List.of(), g.contacts());
         assertFalse(g.quality().forceClosure());
         assertEquals(0, g.quality().epsilon());
