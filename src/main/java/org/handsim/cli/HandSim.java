@@ -253,6 +253,11 @@ public final class HandSim implements Runnable {
             err.flush();
             return CliError.USAGE;
         }
+        if (t instanceof org.handsim.files.OutputSet.Refused) {   // an output folder the set may not be written into: exit 2
+            err.println(SafeText.line("handsim: " + t.getMessage()));
+            err.flush();
+            return CliError.USAGE;
+        }
         if (t instanceof InputFile.InputFileException) {   // an input that is not a readable regular UTF-8 file: exit 3
             err.println(SafeText.line("handsim: " + t.getMessage()));
             err.flush();

@@ -42,7 +42,9 @@ import org.handsim.text.SafeText;
  * {@code tradeoff.json} — the file a reader takes as "this set is complete"), then the tables,
  * then the charts, then the files of the previous set this one does not have (a chart of a
  * finger that no longer moves), and the new marker last. A reader that sees the marker sees a
- * whole set, old or new. Files of {@code DIR} that are not of the set are never touched.
+ * whole set, old or new. Files of {@code DIR} that are not of the set are never touched, and
+ * no step follows a symbolic link inside {@code DIR} or the private folder ({@link #folderOf}):
+ * nothing a link or a crafted manifest points at outside {@code DIR} is written or removed.
  *
  * <p><b>Failures.</b> An error before {@link #publish()} (or a run that is not published) leaves
  * {@code DIR} as it was: the private folder is deleted, and so is {@code DIR} if this set created
@@ -285,7 +287,14 @@ public final class OutputSet implements AutoCloseable {
         for (Path p : left) {
             Path manifest = p.resolve(MANIFEST);
             if (Files.isDirectory(p, LinkOption.NOFOLLOW_LINKS) && Files.isRegularFile(manifest, LinkOption.NOFOLLOW_LINKS)) {
-                List<String[]> steps = readManifest(manifest);
+                List<String[]> steps;
+                try {
+                    steps = readManifest(manifest);
+                    for (String[] step : steps) check(dir, p, step);   // all of them before the first acts
+                } catch (Refused e) {
+                    throw new Refused("not completing the publication a stopped writer left in " + p + ": " + e.getMessage()
+                        + " (remove " + p + " to discard it)");
+                }
                 for (String[] step : steps) apply(dir, p, step);
             }
             deleteTree(p);
@@ -304,8 +313,16 @@ public final class OutputSet implements AutoCloseable {
     /** The folder the set is published into. */
     public Path target() { return target; }
 
-    /** Refuses early if one of the set's names in the folder is something a rename must not replace. */
+    /**
+     * Refuses early if one of the set's subfolders in the folder is not a folder of its own (a
+     * link could lead the set's files out of the output folder), or one of the set's names is
+     * something a rename must not replace.
+     */
     private void checkMembers() throws IOException {
+        for (String sub : layout.subfolders()) {
+            Path d = target.resolve(sub);
+            if (Files.exists(d, LinkOption.NOFOLLOW_LINKS) && !Files.isDirectory(d, LinkOption.NOFOLLOW_LINKS)) throw notAFolder(d);
+        }
         for (String rel : existingMembers()) {
             Path p = target.resolve(rel);
             if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS) && !Files.isSymbolicLink(p)) {
@@ -428,30 +445,75 @@ public final class OutputSet implements AutoCloseable {
 
     /** One manifest step; each can be repeated (a killed publication is completed from its start). */
     private static void apply(Path dir, Path stage, String[] step) throws IOException {
+        check(dir, stage, step);
         String rel = step[1];
-        if (rel.startsWith("/") || rel.startsWith("\\") || Path.of(rel).isAbsolute() || List.of(rel.split("/")).contains("..")) {
-            throw new IOException("bad manifest entry " + SafeText.quote(rel) + " in " + stage);
-        }
         Path to = dir.resolve(rel), from = stage.resolve(rel);
         switch (step[0]) {
             case "clear":   // the old marker goes first, while the new one is still to come
-                if (Files.exists(from, LinkOption.NOFOLLOW_LINKS)) deleteFile(to);
+                if (Files.exists(from, LinkOption.NOFOLLOW_LINKS) && folderOf(dir, rel, false) != null) deleteFile(to);
                 break;
             case "move":
-                if (!Files.exists(from, LinkOption.NOFOLLOW_LINKS)) break;
-                if (to.getParent() != null) Files.createDirectories(to.getParent());
+                if (!Files.isRegularFile(from, LinkOption.NOFOLLOW_LINKS)) break;   // moved already
+                folderOf(dir, rel, true);
                 try {
                     Files.move(from, to, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
                 } catch (AtomicMoveNotSupportedException e) {
                     Files.move(from, to, StandardCopyOption.REPLACE_EXISTING);
                 }
                 break;
-            case "drop":
-                deleteFile(to);
+            default:   // "drop"
+                if (folderOf(dir, rel, false) != null) deleteFile(to);
                 break;
-            default:
-                throw new IOException("bad manifest step " + SafeText.quote(step[0]) + " in " + stage);
         }
+    }
+
+    /**
+     * Refuses a step that could act outside its folders: an unknown step, a name that is absolute
+     * or has an empty, {@code .} or {@code ..} part, or one whose way in the output folder or in
+     * the private folder passes through anything but a folder of its own (a symbolic link to
+     * another folder, above all).
+     */
+    private static void check(Path dir, Path stage, String[] step) throws IOException {
+        String rel = step[1];
+        if (!List.of("clear", "move", "drop").contains(step[0])) {
+            throw new Refused("bad manifest step " + SafeText.quote(step[0]));
+        }
+        boolean badPart = rel.isEmpty() || rel.startsWith("/") || rel.contains("\\") || rel.indexOf('\0') >= 0;
+        for (String part : rel.split("/", -1)) badPart |= part.isEmpty() || part.equals(".") || part.equals("..");
+        if (badPart) {
+            throw new Refused("bad manifest entry " + SafeText.quote(rel) + ": it leads out of " + dir);
+        }
+        folderOf(stage, rel, false);
+        folderOf(dir, rel, false);
+    }
+
+    /**
+     * The folder that holds {@code rel} inside {@code root}, every folder on the way checked
+     * without following links: a link (or anything but a folder) there is refused, since it could
+     * lead out of {@code root}. A missing folder is made if {@code create}, else the answer is
+     * null (nothing there to act on).
+     */
+    static Path folderOf(Path root, String rel, boolean create) throws IOException {
+        Path at = root;
+        String[] parts = rel.split("/");
+        for (int i = 0; i < parts.length - 1; i++) {
+            at = at.resolve(parts[i]);
+            if (!Files.exists(at, LinkOption.NOFOLLOW_LINKS)) {
+                if (!create) return null;
+                try {
+                    Files.createDirectory(at);
+                } catch (FileAlreadyExistsException e) {
+                    // made meanwhile: checked below
+                }
+            }
+            if (!Files.isDirectory(at, LinkOption.NOFOLLOW_LINKS)) throw notAFolder(at);
+        }
+        return at;
+    }
+
+    private static Refused notAFolder(Path p) {
+        String what = Files.isSymbolicLink(p) ? "a symbolic link" : "not a folder";
+        return new Refused(p + " is " + what + ": an output set is never written through it (it could lead out of the output folder)");
     }
 
     /** Deletes a regular file or a link, never a folder or a device. */
@@ -459,11 +521,21 @@ public final class OutputSet implements AutoCloseable {
         if (Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS) || Files.isSymbolicLink(p)) Files.deleteIfExists(p);
     }
 
+    /** The largest manifest read back (one line per file of a set: a set has tens). */
+    private static final long MAX_MANIFEST_BYTES = 1 << 20;
+
     private static List<String[]> readManifest(Path manifest) throws IOException {
+        String text;
+        try {
+            text = InputFile.readText(manifest, MAX_MANIFEST_BYTES, "the limit of publication manifests");
+        } catch (InputFile.InputFileException e) {
+            throw new Refused(e.getMessage());
+        }
         List<String[]> steps = new ArrayList<>();
-        for (String line : Files.readAllLines(manifest, StandardCharsets.UTF_8)) {
+        for (String line : text.split("\n")) {
+            if (line.isEmpty()) continue;
             int sp = line.indexOf(' ');
-            if (sp > 0) steps.add(new String[] {line.substring(0, sp), line.substring(sp + 1)});
+            steps.add(sp > 0 ? new String[] {line.substring(0, sp), line.substring(sp + 1)} : new String[] {line, ""});
         }
         return steps;
     }

@@ -197,4 +197,91 @@ class OutputSetTest {
             Folders.deleteTree(top);
         }
     }
+
+    /** Everything under {@code dir}, links listed as links (never followed): what a test compares before and after. */
+    static Map<String, String> everything(Path dir) throws Exception {
+        Map<String, String> m = new TreeMap<>();
+        try (Stream<Path> s = Files.walk(dir)) {
+            for (Path p : (Iterable<Path>) s::iterator) {
+                String rel = dir.relativize(p).toString();
+                if (Files.isSymbolicLink(p)) m.put(rel, "-> " + Files.readSymbolicLink(p));
+                else if (Files.isRegularFile(p)) m.put(rel, Files.readString(p));
+                else m.put(rel, "<folder>");
+            }
+        }
+        return m;
+    }
+
+    /**
+     * The battery's crafted manifest: a killed writer's private folder whose manifest moves
+     * {@code sub/evil.txt} and drops {@code sub/keep.txt}, {@code sub} a link to a folder beside
+     * the output folder. Recovery refuses it (with the manifest's folder named) before any step
+     * acts, and nothing outside changes; the same with the link in the private folder, and with
+     * names that climb out.
+     */
+    @Test
+    void aCraftedManifestChangesNothingOutsideTheFolder() throws Exception {
+        Path top = Files.createTempDirectory("handsim-set");
+        try {
+            Path victim = Files.createDirectories(top.resolve("victim"));
+            write(victim, "keep.txt", "keep", "evil.txt", "the victim's own");
+            Path dir = Files.createDirectories(top.resolve("out"));
+            Path stage = dir.resolve(OutputSet.WORK).resolve("stage-4000000-1");
+            write(stage, "sub/evil.txt", "planted", ".publish", "move sub/evil.txt\ndrop sub/keep.txt\n");
+            Files.createSymbolicLink(dir.resolve("sub"), Path.of("../victim"));
+            Map<String, String> outside = everything(victim);
+            OutputSet.Refused e = assertThrows(OutputSet.Refused.class, () -> OutputSet.recover(dir));
+            assertTrue(e.getMessage().startsWith("not completing the publication a stopped writer left in " + stage + ": "
+                + dir.resolve("sub") + " is a symbolic link"), e.getMessage());
+            assertEquals(outside, everything(victim));
+            // the link inside the private folder instead: the victim's file would be moved in
+            Folders.deleteTree(dir);
+            Files.createDirectories(stage);
+            write(stage, ".publish", "move sub/evil.txt\n");
+            Files.createSymbolicLink(stage.resolve("sub"), top.resolve("victim"));
+            assertThrows(OutputSet.Refused.class, () -> OutputSet.recover(dir));
+            assertEquals(outside, everything(victim));
+            // names that climb out, an unknown step: refused whole, the good first step not applied either
+            for (String manifest : new String[] {"move a.txt\ndrop ../victim/keep.txt\n", "move a.txt\ndrop /tmp/x\n",
+                "move a.txt\ndrop ./a.txt\n", "move a.txt\ndrop a//b\n", "move a.txt\nrmdir a\n", "move a.txt\ndrop\n"}) {
+                Folders.deleteTree(dir);
+                write(stage, ".publish", manifest, "a.txt", "a");
+                assertThrows(OutputSet.Refused.class, () -> OutputSet.recover(dir), manifest);
+                assertFalse(Files.exists(dir.resolve("a.txt")), manifest);
+                assertEquals(outside, everything(victim));
+            }
+        } finally {
+            Folders.deleteTree(top);
+        }
+    }
+
+    /**
+     * The battery's symlinked {@code best/}: a subfolder of the set that is a link is refused when
+     * the set is opened, and a link put there after that is refused when it is published; the
+     * files it leads to stay as they were.
+     */
+    @Test
+    void aLinkedSubfolderOfTheSetIsNeverWrittenThrough() throws Exception {
+        Path top = Files.createTempDirectory("handsim-set");
+        try {
+            Path victim = Files.createDirectories(top.resolve("victim"));
+            write(victim, "01.json", "the victim's");
+            Path dir = Files.createDirectories(top.resolve("out"));
+            Files.createSymbolicLink(dir.resolve("best"), Path.of("../victim"));
+            Map<String, String> outside = everything(victim);
+            OutputSet.Refused e = assertThrows(OutputSet.Refused.class, () -> OutputSet.open(dir, RUN, null));
+            assertEquals(dir.resolve("best") + " is a symbolic link: an output set is never written through it (it could lead out of"
+                + " the output folder)", e.getMessage());
+            Files.delete(dir.resolve("best"));
+            try (OutputSet set = OutputSet.open(dir, RUN, null)) {
+                write(set.dir(), "summary.json", "s", "best/01.json", "new 1", "best/02.json", "new 2");
+                Files.createSymbolicLink(dir.resolve("best"), Path.of("../victim"));   // planted while the command ran
+                assertThrows(OutputSet.Refused.class, set::publish);
+            }
+            assertEquals(outside, everything(victim));
+            assertEquals(Map.of("", "<folder>", "best", "-> ../victim"), everything(dir), "nothing published, nothing left");
+        } finally {
+            Folders.deleteTree(top);
+        }
+    }
 }
