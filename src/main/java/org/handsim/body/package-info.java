@@ -11,7 +11,7 @@
  * </ul>
  *
  * <p>Units SI, frames stated per method (world unless said). Uses {@code contact},
- * {@code collision}, {@code mesh} and {@code math} only; never touches files, the console or
- * Swing.
+ * {@code collision}, {@code mesh}, {@code math} and {@code text} (messages) only; never touches
+ * files, the console or Swing.
  */
 package org.handsim.body;
