@@ -6,7 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 
 /**
  * Arguments whose bytes are not UTF-8. The JVM decodes its arguments and puts U+FFFD where a

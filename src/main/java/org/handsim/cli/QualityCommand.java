@@ -1,6 +1,6 @@
 package org.handsim.cli;
 
-import org.handsim.sim.NotFound;
+import org.handsim.scenario.NotFound;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -12,9 +12,9 @@ import org.handsim.grasp.FrictionCone;
 import org.handsim.grasp.GraspQuality;
 import org.handsim.grasp.GraspWrenches;
 import org.handsim.grasp.WrenchSpace;
-import org.handsim.util.CsvInput;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.SteadyTiming;
+import org.handsim.files.CsvInput;
+import org.handsim.text.JsonWriter;
+import org.handsim.process.SteadyTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;

@@ -12,7 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.handsim.TestPaths;
-import org.handsim.sim.Home;
+import org.handsim.scenario.Home;
 import org.junit.jupiter.api.Test;
 
 /**

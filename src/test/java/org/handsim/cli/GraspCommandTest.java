@@ -9,8 +9,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import org.handsim.sim.Home;
-import org.handsim.util.Json;
+import org.handsim.scenario.Home;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -165,7 +165,7 @@ class GraspCommandTest {
         assertEquals(1 + 48, csv.size(), "t = 0, 0.1, ..., 4.7");
         assertTrue(csv.get(1).startsWith("0,false,0,"), csv.get(1));
         for (String line : csv) {
-            assertFalse(line.matches(".*(\\.0(,|$)|E-|-0(,|$)).*"), "numbers as util.Decimal writes them: " + line);
+            assertFalse(line.matches(".*(\\.0(,|$)|E-|-0(,|$)).*"), "numbers as text.Decimal writes them: " + line);
         }
         assertTrue(csv.get(csv.size() - 1).startsWith("4.7,true,"), csv.get(csv.size() - 1));
     }
