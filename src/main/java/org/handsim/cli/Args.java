@@ -7,13 +7,13 @@ import java.nio.file.Path;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.InputRanges;
 import java.util.List;
-import org.handsim.sim.NotFound;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.UnitRule;
-import org.handsim.util.Decimal;
-import org.handsim.util.InputFile;
-import org.handsim.util.OutputSet;
-import org.handsim.util.SafeText;
+import org.handsim.scenario.NotFound;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.UnitRule;
+import org.handsim.text.Decimal;
+import org.handsim.files.InputFile;
+import org.handsim.files.OutputSet;
+import org.handsim.text.SafeText;
 
 /** Parsing of the comma-separated numeric arguments the sub-commands share. */
 final class Args {

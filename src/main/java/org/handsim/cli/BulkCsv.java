@@ -1,11 +1,11 @@
 package org.handsim.cli;
 
-import org.handsim.sim.NotFound;
+import org.handsim.scenario.NotFound;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Path;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.CsvInput;
+import org.handsim.files.AtomicFile;
+import org.handsim.files.CsvInput;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**

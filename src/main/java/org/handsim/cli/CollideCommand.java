@@ -1,8 +1,8 @@
 package org.handsim.cli;
 
-import org.handsim.sim.NotFound;
-import org.handsim.util.SafeText;
-import org.handsim.util.Decimal;
+import org.handsim.scenario.NotFound;
+import org.handsim.text.SafeText;
+import org.handsim.text.Decimal;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -16,17 +16,17 @@ import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.SteadyTiming;
+import org.handsim.text.JsonWriter;
+import org.handsim.process.SteadyTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import org.handsim.sim.MeshFiles;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.sim.UnitRule;
+import org.handsim.scenario.MeshFiles;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.scenario.UnitRule;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 
@@ -47,7 +47,7 @@ import java.io.StringWriter;
         "query including B's placement, once the JIT has compiled it: warm-up of at",
         "least 0.5 s and 10 000 queries, then until the JIT has been idle for 0.25 s",
         "(at most 5 s), then the median of --repeat timed batches of about 1 ms each",
-        "(util.SteadyTiming, the scheme of gradle bench).",
+        "(process.SteadyTiming, the scheme of gradle bench).",
         "At most 100 000 intersecting triangle pairs (coincident meshes: exit 2).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {

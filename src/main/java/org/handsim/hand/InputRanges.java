@@ -1,6 +1,6 @@
 package org.handsim.hand;
 
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 
 /**
  * The ranges of the physical quantities HandSim reads from people (options, CSV rows, scenario

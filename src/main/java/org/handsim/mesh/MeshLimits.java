@@ -55,7 +55,7 @@ public final class MeshLimits {
     /** Why {@code s} is not a usable scale factor, or null when it lies in [{@link #MIN_SCALE}, {@link #MAX_SCALE}]. */
     public static String scaleProblem(double s) {
         if (s >= MIN_SCALE && s <= MAX_SCALE) return null;
-        return "must be in [1e-6, 1e6], got " + org.handsim.util.Decimal.format(s);
+        return "must be in [1e-6, 1e6], got " + org.handsim.text.Decimal.format(s);
     }
 
     /**
@@ -70,7 +70,7 @@ public final class MeshLimits {
             if (!(c <= worst)) worst = c;   // NaN too
         }
         if (worst <= MAX_COORDINATE_M) return null;
-        return "coordinates reach " + (Double.isFinite(worst) ? org.handsim.util.Decimal.format(worst) : String.valueOf(worst))
+        return "coordinates reach " + (Double.isFinite(worst) ? org.handsim.text.Decimal.format(worst) : String.valueOf(worst))
             + " m from the file's origin (after units and scale), more than the limit of 1e6 m";
     }
 

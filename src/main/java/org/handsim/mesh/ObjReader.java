@@ -1,7 +1,7 @@
 package org.handsim.mesh;
 
-import org.handsim.util.InputFile;
-import org.handsim.util.SafeText;
+import org.handsim.files.InputFile;
+import org.handsim.text.SafeText;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.charset.StandardCharsets;

@@ -27,7 +27,7 @@ class TradeoffChartTest {
         TradeoffChart.write(table(), dir);
         List<String> lines = Files.readAllLines(dir.resolve("9-test.csv"));
         assertEquals("series,setting,default,cost_s,error", lines.get(0));
-        assertEquals("a,default,true,0.001,0.00001", lines.get(2), "util.Decimal: plain decimals from 1e-6");
+        assertEquals("a,default,true,0.001,0.00001", lines.get(2), "text.Decimal: plain decimals from 1e-6");
         assertEquals("b,exact,false,0.002,0", lines.get(4), "a zero error stays 0 in the CSV");
         assertTrue(Files.size(dir.resolve("9-test.png")) > 1000);
         assertTrue(Files.readString(dir.resolve("9-test.svg")).contains("<svg"));

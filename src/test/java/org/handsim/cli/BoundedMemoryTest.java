@@ -11,9 +11,9 @@ import java.nio.file.Path;
 import java.util.Map;
 import java.util.zip.GZIPOutputStream;
 import org.handsim.TestPaths;
-import org.handsim.sim.Recorder;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.trace.Recorder;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 

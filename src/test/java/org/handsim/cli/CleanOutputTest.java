@@ -15,7 +15,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.TestPaths;
-import org.handsim.sim.Home;
+import org.handsim.scenario.Home;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -56,7 +56,7 @@ public class CleanOutputTest {
     void noArgumentsListsTheCommandsAndExits2() {
         CliTesting.Run r = CliTesting.run();
         assertEquals(2, r.code());
-        for (Class<?> c : HandSim.SUBCOMMANDS) {
+        for (Class<?> c : CliTesting.COMMANDS) {
             String name = c.getAnnotation(picocli.CommandLine.Command.class).name();
             assertTrue(r.err().contains("\n  " + name + " "), name + " listed: " + r.err());
         }
@@ -66,7 +66,7 @@ public class CleanOutputTest {
     /** The command list shows each command's first description line: a whole sentence. */
     @Test
     void theCommandListShowsWholeFirstSentences() {
-        for (Class<?> c : HandSim.SUBCOMMANDS) {
+        for (Class<?> c : CliTesting.COMMANDS) {
             picocli.CommandLine.Command a = c.getAnnotation(picocli.CommandLine.Command.class);
             String first = a.description()[0].trim();
             assertTrue(first.endsWith(".") || first.endsWith(")"), a.name() + ": first description line is not a whole sentence: " + first);
@@ -75,7 +75,7 @@ public class CleanOutputTest {
 
     @Test
     void helpCommandShowsAnyCommandsHelp() {
-        for (Class<?> c : HandSim.SUBCOMMANDS) {
+        for (Class<?> c : CliTesting.COMMANDS) {
             String name = c.getAnnotation(picocli.CommandLine.Command.class).name();
             CliTesting.Run viaHelp = CliTesting.run("help", name), viaOption = CliTesting.run(name, "--help");
             assertEquals(0, viaHelp.code(), name);
@@ -102,7 +102,7 @@ public class CleanOutputTest {
     @Test
     void helpNeverBreaksInsideAToken() {
         List<String> names = new ArrayList<>(List.of(""));
-        for (Class<?> c : HandSim.SUBCOMMANDS) names.add(c.getAnnotation(picocli.CommandLine.Command.class).name());
+        for (Class<?> c : CliTesting.COMMANDS) names.add(c.getAnnotation(picocli.CommandLine.Command.class).name());
         for (String name : names) {
             CliTesting.Run r = name.isEmpty() ? CliTesting.run("--help") : CliTesting.run(name, "--help");
             boolean synopsis = true;

@@ -9,7 +9,7 @@ import org.handsim.cli.CliTesting.Run;
 import org.handsim.collision.TestMeshes;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Test;
 
 /** {@code handsim collide}: the JSON contract, the argument errors. */

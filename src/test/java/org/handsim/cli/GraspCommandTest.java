@@ -9,8 +9,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import org.handsim.sim.Home;
-import org.handsim.util.Json;
+import org.handsim.scenario.Home;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -83,8 +83,8 @@ class GraspCommandTest {
         CliTesting.Run r = CliTesting.run("grasp", MUG);
         assertEquals(0, r.code(), r.err());
         Map<String, Object> g = json(r.out());
-        org.handsim.sim.Scenario s = org.handsim.sim.Scenario.load(Path.of(MUG));
-        double[] cr = new org.handsim.sim.SceneGeometry(s.object(), org.handsim.sim.SceneGeometry.DEFAULT_K).centroidAndRadius();
+        org.handsim.scenario.Scenario s = org.handsim.scenario.Scenario.load(Path.of(MUG));
+        double[] cr = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K).centroidAndRadius();
         List<Object> c = (List<Object>) g.get("center_m");
         for (int i = 0; i < 3; i++) assertEquals(cr[i], ((Number) c.get(i)).doubleValue());
         assertEquals(cr[3], ((Number) g.get("radius_m")).doubleValue());
@@ -214,7 +214,7 @@ class GraspCommandTest {
         assertEquals(1 + 48, csv.size(), "t = 0, 0.1, ..., 4.7");
         assertTrue(csv.get(1).startsWith("0,false,0,"), csv.get(1));
         for (String line : csv) {
-            assertFalse(line.matches(".*(\\.0(,|$)|E-|-0(,|$)).*"), "numbers as util.Decimal writes them: " + line);
+            assertFalse(line.matches(".*(\\.0(,|$)|E-|-0(,|$)).*"), "numbers as text.Decimal writes them: " + line);
         }
         assertTrue(csv.get(csv.size() - 1).startsWith("4.7,true,"), csv.get(csv.size() - 1));
     }

@@ -13,7 +13,7 @@ import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.TestPaths;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 
@@ -25,7 +25,7 @@ import org.junit.jupiter.api.Test;
 class HelpMatchesTheProgramTest {
     private static List<String> commandNames() {
         List<String> names = new ArrayList<>();
-        for (Class<?> c : HandSim.SUBCOMMANDS) names.add(c.getAnnotation(picocli.CommandLine.Command.class).name());
+        for (Class<?> c : CliTesting.COMMANDS) names.add(c.getAnnotation(picocli.CommandLine.Command.class).name());
         return names;
     }
 
@@ -95,7 +95,7 @@ class HelpMatchesTheProgramTest {
                 Matcher m = Pattern.compile("--[a-z][a-z0-9-]*").matcher(row);
                 while (m.find()) documented.add(m.group());
             }
-            picocli.CommandLine.Model.CommandSpec spec = HandSim.commandLine().getSubcommands().get(name).getCommandSpec();
+            picocli.CommandLine.Model.CommandSpec spec = HandSim.commandLine(null, List.of(org.handsim.server.ServerCommand.class)).getSubcommands().get(name).getCommandSpec();
             TreeSet<String> options = new TreeSet<>();
             for (picocli.CommandLine.Model.OptionSpec o : spec.options()) {
                 if (!o.usageHelp() && !o.versionHelp()) options.add(o.longestName());

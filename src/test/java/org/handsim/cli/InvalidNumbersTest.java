@@ -11,8 +11,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 import org.handsim.TestPaths;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -147,8 +147,8 @@ class InvalidNumbersTest {
             assertFalse(r.contains("9223372036854775807"), r);
         }
         // just inside: 10 million steps are accepted (not run here: the check is before the run)
-        assertEquals(null, org.handsim.sim.Scenario.stepsProblem(10_000, 0.001));
-        assertTrue(org.handsim.sim.Scenario.stepsProblem(10_000.001, 0.001).startsWith("needs 10 million steps"));
+        assertEquals(null, org.handsim.scenario.Scenario.stepsProblem(10_000, 0.001));
+        assertTrue(org.handsim.scenario.Scenario.stepsProblem(10_000.001, 0.001).startsWith("needs 10 million steps"));
     }
 
     @Test

@@ -9,7 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
 import org.handsim.cli.CliTesting.Run;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Test;
 
 /** {@code handsim quality}: the JSON contract, the hand-derived cube grasp, bad input. */

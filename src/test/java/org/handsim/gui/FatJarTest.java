@@ -14,7 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -137,7 +137,7 @@ class FatJarTest {
             }
             try (var s = Files.list(dir.resolve("cache/handsim"))) {
                 List<String> left = new ArrayList<>();
-                // the cache folder also holds the tessellated meshes (sim.MeshCache): only the models' copies count here
+                // the cache folder also holds the tessellated meshes (scenario.MeshCache): only the models' copies count here
                 s.map(p -> p.getFileName().toString()).filter(n -> !n.equals("meshes")).forEach(left::add);
                 assertEquals(1, left.size(), "one copy, no unpacking folder: " + left);
                 assertTrue(left.get(0).startsWith("home-"), left.toString());
