@@ -192,7 +192,7 @@ public class CleanOutputTest {
                 Files.writeString(scenario, paper.replace("../vrml/objects/cube.wrl", f.toString().replace("\\", "/")));
                 Path sweep = dir.resolve("w.json");
                 Files.writeString(sweep, "{\"name\":\"w\",\"scenarios\":[\"s.json\"]}");
-                for (String[] args : new String[][] {{"mesh", f.toString()}, {"collide", good.toString(), f.toString(), "--repeat", "1"},
+                for (String[] args : new String[][] {{"mesh", f.toString()}, {"collide", good.toString(), f.toString()},
                     {"run", scenario.toString(), "--out", dir.resolve("out").toString()}}) {
                     CliTesting.Run r = CliTesting.run(args);
                     assertEquals(3, r.code(), String.join(" ", args) + ": " + r.err());
