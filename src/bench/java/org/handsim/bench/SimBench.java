@@ -3,11 +3,11 @@ package org.handsim.bench;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.handsim.dynamics.HandDynamics;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.Simulation;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SceneGeometry;
+import org.handsim.model.Simulation;
 
 /**
  * The whole model in the process — trajectories, clutch, kinematics, collision and contacts,

@@ -1,7 +1,7 @@
 package org.handsim.cli;
 
-import org.handsim.util.SafeText;
-import org.handsim.util.Decimal;
+import org.handsim.text.SafeText;
+import org.handsim.text.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -12,7 +12,7 @@ import org.handsim.dynamics.HandDynamics;
 import org.handsim.dynamics.LinkChain;
 import org.handsim.hand.HandDescription;
 import org.handsim.hand.InputRanges;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;

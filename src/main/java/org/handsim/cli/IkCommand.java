@@ -1,6 +1,6 @@
 package org.handsim.cli;
 
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -9,7 +9,7 @@ import java.util.concurrent.Callable;
 import org.handsim.kinematics.IkResult;
 import org.handsim.kinematics.InverseKinematics;
 import org.handsim.hand.InputRanges;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;

@@ -5,6 +5,6 @@
  * n-dimensional hull exists on Maven Central), force closure, the Ferrari–Canny ε and the
  * volume ({@link org.handsim.grasp.GraspQuality}), and how much load a grasp holds (a linear
  * program on ojAlgo). Uses {@code contact}, {@code kinematics} and {@code hand}; never
- * {@code sim} and above.
+ * {@code model} and above.
  */
 package org.handsim.grasp;

@@ -6,8 +6,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.handsim.math.RigidTransform;
-import org.handsim.util.Json;
-import org.handsim.util.JsonObject;
+import org.handsim.text.Json;
+import org.handsim.text.JsonObject;
 
 /**
  * The whole hand, loaded from a description file (JSON). {@link #barrettHand()} is the

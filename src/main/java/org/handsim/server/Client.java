@@ -99,7 +99,7 @@ public final class Client {
         report("in-process (" + served.name().toLowerCase(java.util.Locale.ROOT) + (why != null ? ": " + why : "") + ")");
         boolean training = System.getProperty(TRAINING) != null;
         if (training) loadServedPathClasses();
-        int code = org.handsim.cli.HandSim.execute(args);
+        int code = org.handsim.cli.HandSim.execute(java.util.List.of(ServerCommand.class), args);
         if (served == Outcome.NO_SERVER && !training) startServer(identity);
         System.exit(code);
     }

@@ -1,6 +1,6 @@
 /**
  * Speed against accuracy (issue 8): studies that run the model at several settings, measure
  * wall time and error against a reference, and return the rows ({@code chart.StudyTable}) that {@code chart.TradeoffChart} draws.
- * Uses {@code sim} and everything below it; {@code cli.TradeoffCommand} runs the studies.
+ * Uses {@code model} and everything below it; {@code cli.TradeoffCommand} runs the studies.
  */
 package org.handsim.tradeoff;

@@ -9,7 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import org.handsim.util.InputFile;
+import org.handsim.files.InputFile;
 import org.jogamp.java3d.BranchGroup;
 import org.jogamp.java3d.loaders.LoaderBase;
 

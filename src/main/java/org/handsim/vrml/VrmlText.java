@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.zip.GZIPInputStream;
 import org.handsim.mesh.MeshLimits;
-import org.handsim.util.InputFile;
+import org.handsim.files.InputFile;
 
 /**
  * The bytes of one VRML file, with its name for messages, and the mapping from byte offsets to

@@ -17,8 +17,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.handsim.TestPaths;
-import org.handsim.sim.Home;
-import org.handsim.util.DeviceNodes;
+import org.handsim.scenario.Home;
+import org.handsim.files.DeviceNodes;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -278,6 +278,44 @@ class OutputSafetyTest {
             assertTrue(r.err().endsWith("fig8_finger3.svg is a folder, not a file this command may replace"), r.err());
             assertEquals(t.keySet().size() + 1, tree(out).size(), "nothing written");
             assertTrue(tree(out).get("summary.json").contains("\"dt_s\": 0.02"));
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
+    /**
+     * The battery's two symlink tricks through the commands: {@code plan} into a folder whose
+     * {@code best/} links to another folder, and {@code run} into a folder with a killed writer's
+     * crafted manifest that moves and drops files through a linked subfolder. Each is refused
+     * with one line naming the link (exit 2), and the other folder is unchanged, byte for byte.
+     */
+    @Test
+    void symlinksInTheOutputFolderLeadNothingOut() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-links");
+        try {
+            Path victim = Files.createDirectories(dir.resolve("victim"));
+            Files.writeString(victim.resolve("01.json"), "the victim's grasp");
+            Files.writeString(victim.resolve("keep.txt"), "keep");
+            Map<String, String> before = tree(victim);
+            Path plan = Files.createDirectories(dir.resolve("plan"));
+            Files.createSymbolicLink(plan.resolve("best"), Path.of("../victim"));
+            CliTesting.Run r = CliTesting.run("plan", cube().toString(), "--trials", "2", "--units", "m", "--out", plan.toString());
+            assertEquals(2, r.code(), r.err());
+            assertEquals("handsim: --out " + plan + ": " + plan.resolve("best") + " is a symbolic link: an output set is never written"
+                + " through it (it could lead out of the output folder)", r.err());
+            assertEquals(before, tree(victim));
+
+            Path run = Files.createDirectories(dir.resolve("run"));
+            Path stage = Files.createDirectories(run.resolve(".handsim-writing/stage-4000000-1/sub"));
+            Files.writeString(stage.resolve("evil.txt"), "planted");
+            Files.writeString(stage.getParent().resolve(".publish"), "move sub/evil.txt\ndrop sub/keep.txt\n");
+            Files.createSymbolicLink(run.resolve("sub"), Path.of("../victim"));
+            r = CliTesting.run("run", "--dt", "0.01", "--out", run.toString());
+            assertEquals(2, r.code(), r.err());
+            assertTrue(r.err().startsWith("handsim: --out " + run + ": not completing the publication a stopped writer left in "
+                + stage.getParent() + ": " + run.resolve("sub") + " is a symbolic link"), r.err());
+            CleanOutputTest.assertOneLineNoStackTrace("manifest", r.err());
+            assertEquals(before, tree(victim));
         } finally {
             ChildJvm.deleteTree(dir);
         }

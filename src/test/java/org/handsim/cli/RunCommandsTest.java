@@ -8,10 +8,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import org.handsim.sim.Home;
-import org.handsim.sim.Recorder;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.scenario.Home;
+import org.handsim.trace.Recorder;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Test;
 
 /** `handsim run` and `handsim sweep`: the files they promise, and their failures. */

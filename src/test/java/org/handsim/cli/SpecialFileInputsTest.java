@@ -13,9 +13,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.handsim.TestPaths;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.util.SpecialFiles;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.files.SpecialFiles;
 import org.junit.jupiter.api.Test;
 
 /**

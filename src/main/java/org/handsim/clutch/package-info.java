@@ -1,0 +1,6 @@
+/**
+ * The breakaway clutch of one finger (DESIGN.md decision 1): its states FREE, BLOCKED, BROKEN and
+ * STALLED, the transitions between them and the torque through the clutch. It uses {@code hand}
+ * and {@code kinematics}.
+ */
+package org.handsim.clutch;

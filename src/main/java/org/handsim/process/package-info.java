@@ -1,0 +1,7 @@
+/**
+ * The life of a command in its JVM and its timing: the context a command asks about when one JVM
+ * runs many (cancellation, terminal, generation), the cleanup on exit, named points of a command's
+ * work, memory-bounded caches, steady-state timing and the decimal step clock. It uses
+ * {@code text} alone.
+ */
+package org.handsim.process;

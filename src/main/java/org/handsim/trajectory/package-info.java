@@ -1,0 +1,7 @@
+/**
+ * Motor set-point trajectories in encoder counts against time in seconds: trapezoidal velocity
+ * profile, quintic polynomial, a fingertip straight line through inverse kinematics, a hold, and
+ * sequences of these, each immutable and giving position, velocity and acceleration. It uses
+ * {@code kinematics}.
+ */
+package org.handsim.trajectory;
