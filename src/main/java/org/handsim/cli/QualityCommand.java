@@ -23,7 +23,7 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code handsim quality CONTACTS.csv [--friction MU] [--edges M] [--center x,y,z] [--radius R]
- * [--repeat N]}: the quality of a grasp given as point contacts (issue 12): the L1 grasp wrench
+ * [--repeat N]}: the quality of a grasp given as point contacts: the L1 grasp wrench
  * space of their linearised friction cones ({@link GraspWrenches}), its force closure, ε, volume
  * and facets ({@link WrenchSpace#quality}), and the steady-state time of that computation
  * ({@link SteadyTiming}). Output contract: one JSON line with the keys {@link #JSON_KEYS}.
