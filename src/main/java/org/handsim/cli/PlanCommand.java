@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
@@ -135,7 +136,7 @@ public final class PlanCommand implements Callable<Integer> {
             planSpec.name(), trials, output.failed(), output.forceClosure(), fmt(best == null ? 0 : best.epsilon()),
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
-        stdout.println("wrote " + dir + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
             + ".json" + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
         return output.failed() == trials ? 1 : 0;
     }

@@ -24,9 +24,13 @@ import org.handsim.text.Decimal;
  * @param torqueResidualNm per finger (index 0..2) how far its contact forces are from carrying
  *                 its joint torques, N·m (the model's torque residual): 0 up to rounding
  *                 when the forces are a static equilibrium of the finger's state
+ * @param centerM  the wrenches' torque origin c, world frame, m (the object's centroid)
+ * @param radiusM  the length R the torques are divided by, m (the object's largest centroid-to-vertex distance)
+ * @param friction the Coulomb μ of the cones
+ * @param coneEdges the cones' edges m
  */
 public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN, double holdMinN, List<Contact> contacts,
-                              double[] torqueResidualNm) {
+                              double[] torqueResidualNm, double[] centerM, double radiusM, double friction, int coneEdges) {
     /** The disturbance directions of {@link #holdN()}, as the JSON keys of {@code hold_N}. */
     public static final List<String> DIRECTIONS = List.of("+x", "-x", "+y", "-y", "+z", "-z");
 
@@ -78,7 +82,12 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         FrictionCone.checkEdges(edges);
         List<Contact> contacts = in.contacts();
         int n = contacts.size();
-        if (n == 0) return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, List.of(), in.torqueResidualNm().clone());
+        double[] cr0 = in.centroidAndRadius();
+        if (n == 0) {
+            double[] c0 = cr0 == null ? new double[3] : new double[] {cr0[0], cr0[1], cr0[2]};
+            return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, List.of(), in.torqueResidualNm().clone(),
+                c0, cr0 == null ? 0 : cr0[3], mu, edges);
+        }
         double[] points = new double[3 * n], normals = new double[3 * n];
         for (int i = 0; i < n; i++) {
             System.arraycopy(contacts.get(i).point(), 0, points, 3 * i, 3);
@@ -91,7 +100,7 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         double[] hold = hold(in, contacts, mu, edges, c, cr[3]).holdSix();
         double min = hold[0];
         for (double h : hold) min = Math.min(min, h);
-        return new GraspAssessment(in.timeS(), q, hold, min, contacts, in.torqueResidualNm().clone());
+        return new GraspAssessment(in.timeS(), q, hold, min, contacts, in.torqueResidualNm().clone(), c, cr[3], mu, edges);
     }
 
     /**
@@ -154,7 +163,10 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     /**
      * The JSON object of {@code handsim grasp} (and {@code "grasp"} in summary.json): keys
      * {@code time_s, contacts[{finger, link, point, normal, force_N}], force_closure, epsilon,
-     * volume, hold_N{+x, −x, +y, −y, +z, −z}, hold_min_N, torque_residual_Nm[finger 1, 2, 3]}.
+     * volume, hold_N{+x, −x, +y, −y, +z, −z}, hold_min_N, torque_residual_Nm[finger 1, 2, 3],
+     * center_m, radius_m, friction, cone_edges} — the last four the wrench scaling and cones of
+     * ε and volume, so that {@code handsim quality} given this object computes the same.
+     * Contact points and normals are written whole (not rounded), so they read back bit for bit.
      */
     public Map<String, Object> toJson() {
         Map<String, Object> m = new LinkedHashMap<>();
@@ -164,9 +176,10 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
             Map<String, Object> o = new LinkedHashMap<>();
             o.put("finger", c.finger());
             o.put("link", c.link());
-            // physical values: rounding noise below 1e-12 written as 0 (text.Decimal, README)
-            o.put("point", Decimal.clean(c.point()));
-            o.put("normal", Decimal.clean(c.normal()));
+            // the contact unrounded (it reads back bit for bit: quality's ε of this output is
+            // grasp's); the force, a physical value, with noise below 1e-12 written as 0 (text.Decimal)
+            o.put("point", c.point());
+            o.put("normal", c.normal());
             o.put("force_N", Decimal.clean(c.forceN()));
             cs.add(o);
         }
@@ -180,6 +193,10 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         m.put("hold_min_N", holdMinN);
         // a torque error: rounding noise below 1e-12 N·m written as 0, like the trace's residual columns
         m.put("torque_residual_Nm", Decimal.clean(torqueResidualNm));
+        m.put("center_m", centerM);
+        m.put("radius_m", radiusM);
+        m.put("friction", friction);
+        m.put("cone_edges", coneEdges);
         return m;
     }
 }

@@ -496,11 +496,17 @@ public final class HandSimWindow {
     /** What the run is doing, as the status bar's right end says: running, paused, finished, reset, ... */
     public String runStateText() { return runState.getText(); }
 
-    /** An error: status bar, and a dialog when interactive. */
+    /**
+     * An error: status bar, and when interactive a dialog and one line on standard error. A
+     * script reports the error itself (the action that failed names it, or expect-error wanted it),
+     * so under a script the window does not print it too.
+     */
     public void error(String message, String title) {
         status(message, true);
-        System.err.println("handsim gui: " + message);
-        if (interactive) JOptionPane.showMessageDialog(frame, message, title, JOptionPane.ERROR_MESSAGE);
+        if (interactive) {
+            System.err.println("handsim gui: " + message);
+            JOptionPane.showMessageDialog(frame, message, title, JOptionPane.ERROR_MESSAGE);
+        }
     }
 
     /** Regions of the window (relative to its top-left corner) for screenshot checks: view, charts, status bar, tool panel. */

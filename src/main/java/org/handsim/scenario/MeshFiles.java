@@ -130,9 +130,8 @@ public final class MeshFiles {
         try {
             switch (f) {
                 case OBJ: {
-                    ObjReader.Result r = bytes == null ? ObjReader.read(file, scale)
-                        : ObjReader.read(file.toString(), new String(bytes, java.nio.charset.StandardCharsets.UTF_8), scale);
-                    return new Loaded(r.mesh(), f, r.walk().shapes, r.walk().degenerate, List.of());
+                    ObjReader.Result r = bytes == null ? ObjReader.read(file, scale) : ObjReader.read(file, bytes, scale);
+                    return new Loaded(r.mesh(), f, r.walk().shapes, r.degenerate(), List.of());
                 }
                 case STL: {
                     StlReader.Result r = bytes == null ? StlReader.read(file, scale) : StlReader.read(file.toString(), bytes, scale);

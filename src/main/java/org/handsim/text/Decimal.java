@@ -70,6 +70,7 @@ public final class Decimal {
      * {@code 9223372036854775807}: a count too large for a long is given as the double it is.
      */
     public static String count(double n) {
+        if (!Double.isFinite(n)) return Double.isNaN(n) ? "an undefined number of" : "infinitely many";
         if (!(Math.abs(n) < 1e6)) {
             String[] words = {"million", "billion", "trillion"};
             for (int i = 0; i < words.length; i++) {
