@@ -158,7 +158,7 @@ public final class HandModel {
      */
     public static final double RESIDUAL_WARN_NM = 1e-6;
 
-    /** Work counters, for the savings table (issue 8). */
+    /** Work counters, for the savings table. */
     public enum Counter {
         STEPS, FINGER_UPDATES, FINGERS_IDLE, COLLISION_QUERIES, COLLISIONS_SKIPPED, DYNAMICS_CALLS, DYNAMICS_SKIPPED,
         EVENT_QUERIES, SWEPT_SUBSTEPS, TUNNELLING_CAUGHT

@@ -1,5 +1,5 @@
 /**
- * Grasp planning (issue 13): seeded hand poses around an object ({@link org.handsim.plan.TrialSampler}),
+ * Grasp planning: seeded hand poses around an object ({@link org.handsim.plan.TrialSampler}),
  * GraspIt!-style autograsp — approach until the palm or a finger meets the object
  * ({@link org.handsim.plan.Autograsp}), then close every finger with the clutch model until it
  * stalls — and the grasp's evaluation (force closure, ε, volume, minimum hold), one trial per

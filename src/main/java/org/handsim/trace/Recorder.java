@@ -26,7 +26,7 @@ import org.handsim.text.Decimal;
  * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
  * ({@link Decimal#clean}).
  *
- * <p>Two kinds (issue 15, bounded memory):
+ * <p>Two kinds (bounded memory):
  * <ul>
  *   <li>{@link #Recorder()} keeps every row in memory (tests, short runs; the columns double as
  *       they grow);</li>

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 /**
  * Ear clipping of concave, non-planar and degenerate faces: exactly n−2 triangles, the face's
  * area preserved, every triangle inside the face and with the face's orientation. Random
- * star-shaped polygons use a fixed seed (STYLE.md item 12).
+ * star-shaped polygons use a fixed seed (docs/STYLE.md, item 12).
  */
 class FaceTriangulatorTest {
     private static final double TOL = 1e-9;
