@@ -48,5 +48,7 @@
  * Dynamics Algorithms</i>, Springer, 2008; E. Hairer, S. P. Nørsett, G. Wanner, <i>Solving
  * Ordinary Differential Equations I</i>, 2nd ed., Springer, 1993; J. R. Dormand, P. J. Prince,
  * "A family of embedded Runge–Kutta formulae", J. Comput. Appl. Math. 6 (1980).
+ *
+ * <p>May use {@code hand}, {@code math} and {@code process} (docs/DESIGN.md, "Modules").
  */
 package org.handsim.dynamics;

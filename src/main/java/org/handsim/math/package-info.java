@@ -6,5 +6,7 @@
  * ({@code compose}); a method that writes into a caller-supplied array takes it as its last
  * argument ({@code apply(p, out)}), and states whether {@code out} may alias an input.
  * Nothing here allocates in the methods marked "allocation-free".
+ *
+ * <p>May use {@code text} (docs/DESIGN.md, "Modules").
  */
 package org.handsim.math;

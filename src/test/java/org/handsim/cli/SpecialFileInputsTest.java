@@ -61,7 +61,7 @@ class SpecialFileInputsTest {
             for (Map.Entry<String, Path> e : sf.all.entrySet()) {
                 for (String[] cmd : commands(e.getValue(), sf.dir)) {
                     String what = String.join(" ", cmd);
-                    CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> CliTesting.run(cmd), what);
+                    CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(60), () -> CliTesting.run(cmd), what);
                     assertEquals(3, r.code(), what + ": " + r.err());
                     assertTrue(r.err().contains("is not a regular file (" + e.getKey() + ")"), what + ": " + r.err());
                     assertFalse(r.err().contains("\n") || r.err().contains("Exception"), what + ": " + r.err());
@@ -122,7 +122,7 @@ class SpecialFileInputsTest {
     void theWindowsOpenRefusesASpecialFile() throws Exception {
         try (SpecialFiles sf = new SpecialFiles()) {
             for (Map.Entry<String, Path> e : sf.all.entrySet()) {
-                ScenarioException x = assertTimeoutPreemptively(Duration.ofSeconds(10),
+                ScenarioException x = assertTimeoutPreemptively(Duration.ofSeconds(60),
                     () -> assertThrows(ScenarioException.class, () -> Scenario.load(e.getValue())));
                 assertEquals(e.getValue() + ": is not a regular file (" + e.getKey() + ")", x.getMessage());
             }
@@ -134,7 +134,7 @@ class SpecialFileInputsTest {
     void devZeroIsACharacterDevice() {
         List<String> seen = new ArrayList<>();
         for (String cmd : new String[] {"run", "mesh", "sweep", "quality"}) {
-            CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> CliTesting.run(cmd, "/dev/zero"));
+            CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(60), () -> CliTesting.run(cmd, "/dev/zero"));
             assertEquals(3, r.code(), cmd + ": " + r.err());
             assertTrue(r.err().contains("/dev/zero") && r.err().contains("is not a regular file (a character device)"), r.err());
             seen.add(r.err());
