@@ -27,7 +27,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code handsim plan}: grasp planning (issue 13). */
+/** {@code handsim plan}: grasp planning. */
 @Command(name = "plan", mixinStandardHelpOptions = true,
     description = {"Searches grasps of an object and ranks them by epsilon.",
         "Each trial places the open hand on an approach",

@@ -233,6 +233,18 @@ public final class InputFile {
             }
         }
 
+        /**
+         * The lines of bytes the caller read from {@code name} (through {@link #readBytes}), as
+         * {@link #Lines(Path, int, boolean)} reads them from the file: one read of a file serves
+         * both a digest of its bytes and its lines.
+         */
+        public Lines(String name, byte[] bytes, int maxLineBytes, boolean strict) {
+            this.name = name;
+            this.maxLineBytes = maxLineBytes;
+            this.strict = strict;
+            this.in = new java.io.ByteArrayInputStream(bytes);
+        }
+
         /** The 1-based number of the line {@link #next} returned last. */
         public int line() { return line; }
 

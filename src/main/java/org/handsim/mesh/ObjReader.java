@@ -82,6 +82,22 @@ public final class ObjReader {
         return build(file.toString(), c, scale);
     }
 
+    /**
+     * Reads the bytes of an OBJ file that the caller read through the input gate (the mesh
+     * cache's key needs them first), a line at a time as {@link #read(Path, double)} reads the file.
+     *
+     * @throws MeshFileException {@code FILE:LINE:COL: message}
+     */
+    public static Result read(Path file, byte[] bytes, double scale) throws IOException {
+        Checked c;
+        try (InputFile.Lines lines = new InputFile.Lines(file.toString(), bytes, MeshLimits.MAX_LINE_BYTES, false)) {
+            c = check(file.toString(), lines::next);
+        } catch (InputFile.InputFileException e) {   // a line too long: the reader's words, as the mesh readers say it
+            throw new MeshFileException(e.getMessage(), e);
+        }
+        return build(file.toString(), c, scale);
+    }
+
     /** Reads OBJ text; {@code name} names it in messages and the mesh. */
     public static Result read(String name, String text, double scale) {
         int[] at = {0};

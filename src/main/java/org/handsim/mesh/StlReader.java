@@ -14,8 +14,8 @@ import java.util.Map;
 
 /**
  * A strict reader of STL (stereolithography) files, ASCII and binary, into one
- * {@link TriangleMesh}. There is no well-kept STL reader for Java on Maven Central (checked
- * for issue 14; docs/DESIGN.md), and the format is small, so this is ours.
+ * {@link TriangleMesh}. There is no well-kept STL reader for Java on Maven Central (checked;
+ * docs/DESIGN.md), and the format is small, so this is ours.
  *
  * <h2>The two forms</h2>
  * <ul>

@@ -80,7 +80,7 @@ public final class Server {
     private long lastActivity = System.currentTimeMillis();
     private int served;
 
-    private Server(String identity, Path dir, String key, long idleMs) {
+    Server(String identity, Path dir, String key, long idleMs) {
         this.identity = identity;
         this.dir = dir;
         this.key = key;
@@ -118,7 +118,7 @@ public final class Server {
     }
 
     /** Holds the lock, listens, serves until told or timed out; returns the exit code. */
-    private int serve() throws IOException {
+    int serve() throws IOException {
         ServerFiles.Lock lock = ServerFiles.Lock.take(Client.lockFile(dir, key));
         if (lock == null) {
             say("another server has " + key + "; exiting");

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 15, bounded memory, each in a child JVM with {@code -Xmx256m}: a 1 000 s run at
+ * Bounded memory, each in a child JVM with {@code -Xmx256m}: a 1 000 s run at
  * dt = 1 ms with the trace on (10⁶ steps; the in-memory recorder needed about 300 MB for them)
  * completes and its trace has every row; a gzip bomb (1.1 GiB from about 1 MB) is refused with
  * the process under 300 MB resident.

@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 15 at the command line: one-line errors with input escaped, never a stack trace; the
+ * Clean output at the command line: one-line errors with input escaped, never a stack trace; the
  * command list without arguments; help that works; and output files read back with no -0, no
  * integer written as a float and no accumulated time noise.
  */
