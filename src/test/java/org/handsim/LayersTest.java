@@ -157,6 +157,42 @@ class LayersTest {
         assertEquals(List.of(), missing);
     }
 
+    /**
+     * Each room's package-info says what it may use in a paragraph "May use ...": the rooms the
+     * table's row names, or "every room below it" with the same exceptions.
+     */
+    @Test
+    void everyPackageInfoSaysWhatItsRowAllows() throws IOException {
+        List<String> lines = Files.readAllLines(ROOT.resolve("docs/DESIGN.md"), StandardCharsets.UTF_8);
+        Map<String, String> cells = new LinkedHashMap<>();
+        for (String l : lines) {
+            Matcher m = ROW.matcher(l);
+            if (m.matches()) cells.putIfAbsent(m.group(1), m.group(2));
+        }
+        List<String> wrong = new ArrayList<>();
+        for (Map.Entry<String, String> e : cells.entrySet()) {
+            Path info = ROOT.resolve("src/main/java/org/handsim/" + e.getKey() + "/package-info.java");
+            if (!Files.exists(info)) continue;   // everyRoomHasARowAndSaysWhatItHolds names it
+            String text = Files.readString(info, StandardCharsets.UTF_8).replaceAll("\\s*\\n\\s*\\*\\s*", " ");
+            Matcher may = Pattern.compile("<p>May use (.*?)docs/DESIGN\\.md, \"Modules\"\\)").matcher(text);
+            if (!may.find()) {
+                wrong.add(e.getKey() + ": package-info has no \"<p>May use ... (docs/DESIGN.md, \"Modules\")\"");
+                continue;
+            }
+            String says = may.group(1), cell = e.getValue();
+            boolean everything = cell.contains(EVERYTHING);
+            Set<String> named = new TreeSet<>(), allowed = new TreeSet<>();
+            Matcher c = Pattern.compile("\\{@code ([a-z]+)\\}").matcher(everything && says.contains(" but ") ? says.substring(says.indexOf(" but ")) : everything ? "" : says);
+            while (c.find()) named.add(c.group(1));
+            Matcher x = NAME.matcher(everything ? (cell.contains(" but ") ? cell.substring(cell.indexOf(" but ")) : "") : cell);
+            while (x.find()) allowed.add(x.group(1));
+            if (everything != says.startsWith("every room below it") || !named.equals(allowed)) {
+                wrong.add(e.getKey() + ": package-info says it may use " + says.trim() + "; the table says " + cell.trim());
+            }
+        }
+        assertEquals(List.of(), wrong);
+    }
+
     @Test
     void anUpwardImportIsCaught() throws IOException {
         Map<String, Set<String>> rooms = table(ROOT.resolve("docs/DESIGN.md"));

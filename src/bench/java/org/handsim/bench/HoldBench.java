@@ -9,7 +9,7 @@ import org.handsim.scenario.Scenario;
 import org.handsim.model.Simulation;
 
 /**
- * The hold LP and the whole grasp evaluation (issue 12) on the three-finger mug grasp
+ * The hold LP and the whole grasp evaluation on the three-finger mug grasp
  * (scenarios/mug-grasp.json, μ = 0.5, 8 cone edges): at t = 2.0 s (three inner-link contacts,
  * the clutches engaged) and at the end (six contacts, the outer links wrapped). Rows: one LP
  * (one direction, +z), the six directions, and {@code GraspAssessment.of} (contacts, the whole

@@ -15,7 +15,7 @@ import org.handsim.scenario.Scenario;
 import org.handsim.scenario.SceneMeshes;
 
 /**
- * Planning trials on one core (issue 13, item 4): the mug (vrml/objects/mug.wrl, 720
+ * Planning trials on one core: the mug (vrml/objects/mug.wrl, 720
  * triangles) and a 19 880-triangle sphere ({@code generate_models.py --big 20000}, generated
  * into a temporary folder when absent). Per object: the whole trial (approach, closing,
  * evaluation) over a fixed set of trial indices of a 1 000-trial plan (seed 1), and the approach

@@ -20,7 +20,7 @@ import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 
 /**
- * The grasp against time (issue 12), two panels over one time axis: the Ferrari–Canny ε of the
+ * The grasp against time, two panels over one time axis: the Ferrari–Canny ε of the
  * grasp wrench space (top) and the smallest load the grasp holds over the six world directions
  * (bottom, with the hand's rated load, the largest hold reported, dashed), from
  * {@link GraspAssessment}s sampled along a run; the fingers' breakaways marked.

@@ -93,6 +93,12 @@ public final class HandSim implements Runnable {
     public static int execute(PrintWriter out, PrintWriter err, List<Class<?>> more, String... args) {
         int code;
         try {
+            String bytes = ArgumentBytes.problem(args);
+            if (bytes != null) {
+                err.println(SafeText.line(bytes));
+                err.flush();
+                return CliError.USAGE;
+            }
             prepareHeadless(args.length > 0 ? args[0] : null);
             CommandLine cl = commandLine(args.length > 0 ? args[0] : null, more);
             cl.setOut(out);
@@ -231,6 +237,16 @@ public final class HandSim implements Runnable {
      * and code; anything else exit 1, naming the error and a log file with its stack trace.
      */
     static int failure(PrintWriter err, Throwable ex) {
+        java.io.StringWriter line = new java.io.StringWriter();
+        int code = report(new PrintWriter(line), ex);
+        String text = line.toString().stripTrailing();
+        String unpack = org.handsim.scenario.Home.unpackFailure();   // the cause behind a missing model, when the jar's were not unpacked
+        if (!text.isEmpty()) err.println(unpack == null ? text : text + " (" + SafeText.line(unpack) + ")");
+        err.flush();
+        return code;
+    }
+
+    private static int report(PrintWriter err, Throwable ex) {
         // a command the resident server was told to stop: whatever its unwinding threw, no message
         // and no log (the client exits as the signal that stopped it says, as a stopped JVM does)
         if (CommandContext.cancelled()) return CliError.STOPPED;
@@ -257,6 +273,11 @@ public final class HandSim implements Runnable {
             err.println(SafeText.line("handsim: " + t.getMessage()));
             err.flush();
             return CliError.USAGE;
+        }
+        if (t instanceof org.handsim.scenario.ScenarioException) {   // a scenario's object or model that cannot be loaded: exit 3, as run says it
+            err.println(SafeText.line(t.getMessage()));
+            err.flush();
+            return CliError.LOAD;
         }
         if (t instanceof InputFile.InputFileException) {   // an input that is not a readable regular UTF-8 file: exit 3
             err.println(SafeText.line("handsim: " + t.getMessage()));

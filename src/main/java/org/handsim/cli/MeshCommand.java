@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.mesh.MeshLimits;
 import org.handsim.mesh.MeshWelder;
 import org.handsim.mesh.ObjWriter;
@@ -125,7 +126,7 @@ public final class MeshCommand implements Callable<Integer> {
         for (String w : r.warnings()) err.println(w);
         double loadMs = (System.nanoTime() - t0) / 1e6;
         if (spec.commandLine().getParseResult().hasMatchedOption("--divisions") && !dependsOnDivisions(r)) {
-            err.println("handsim mesh: --divisions has no effect: " + file + " has no Sphere, Cylinder or Cone (a fixed mesh)");
+            err.println("handsim mesh: --divisions has no effect: " + SafeText.escape(file.toString()) + " has no Sphere, Cylinder or Cone (a fixed mesh)");
         }
         MeshWelder welder = new MeshWelder();
         TriangleMesh mesh = welder.weld(r.mesh());
@@ -143,13 +144,13 @@ public final class MeshCommand implements Callable<Integer> {
         json.put("load_ms", Math.round(loadMs * 10) / 10.0);
         json.put("units", unit.units().id());
         if (obj != null) {
-            try (AtomicFile f = new AtomicFile(obj)) {
+            try (AtomicFile f = Args.atomicOutput("--obj", obj)) {
                 ObjWriter.write(f.writer(), List.of(mesh));
                 f.commit();
             }
         }
         if (stl != null) {
-            try (AtomicFile f = new AtomicFile(stl)) {
+            try (AtomicFile f = Args.atomicOutput("--stl", stl)) {
                 StlWriter.writeBinary(f.stream(), mesh, 1.0);
                 f.commit();
             }

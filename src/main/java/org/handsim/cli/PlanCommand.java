@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
@@ -26,7 +27,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code handsim plan}: grasp planning (issue 13). */
+/** {@code handsim plan}: grasp planning. */
 @Command(name = "plan", mixinStandardHelpOptions = true,
     description = {"Searches grasps of an object and ranks them by epsilon.",
         "Each trial places the open hand on an approach",
@@ -140,7 +141,7 @@ public final class PlanCommand implements Callable<Integer> {
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
         int nBest = output.bestFirst().size();
-        stdout.println("wrote " + dir + "/{plan.csv, plan.json" + (nBest == 0 ? "" : nBest == 1 ? ", best/01.json"
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{plan.csv, plan.json" + (nBest == 0 ? "" : nBest == 1 ? ", best/01.json"
             : ", best/01.json.." + String.format("%02d", nBest) + ".json")
             + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
         if (output.forceClosure() == 0 && output.failed() < trials) {

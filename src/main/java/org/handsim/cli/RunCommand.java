@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.PaperCharts;
 import org.handsim.grasp.GraspAssessment;
@@ -170,7 +171,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         if (toleranceLine != null) stdout.println(toleranceLine);
         stdout.println(headline(model, wall));
-        stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{" + String.join(", ", written) + "}");
         return 0;
     }
 

@@ -181,7 +181,7 @@ public final class SwingCommand implements Callable<Integer> {
             "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %s J -> %s J (relative drift %.3g)",
             k, integrator, Decimal.format(dt), result.steps(), Decimal.format(duration), wall,
             Decimal.format(result.initialEnergy()), Decimal.format(result.finalEnergy()), result.relativeDrift()));
-        stdout.println("wrote " + out + "/{swing.csv, swing.json}");
+        stdout.println("wrote " + SafeText.escape(out.toString()) + "/{swing.csv, swing.json}");
         return 0;
     }
 

@@ -25,7 +25,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code handsim tradeoff}: the speed-against-accuracy charts of issue 8. */
+/** {@code handsim tradeoff}: the speed-against-accuracy charts. */
 @Command(name = "tradeoff", mixinStandardHelpOptions = true,
     description = {
         "Runs the speed-against-accuracy studies and charts them.",

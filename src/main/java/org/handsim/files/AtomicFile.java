@@ -61,7 +61,10 @@ public final class AtomicFile implements AutoCloseable {
         if (ExitCleanup.stopping()) throw new IOException("not writing " + target + ": the program is being stopped");
         Path dir = t.toAbsolutePath().getParent();
         if (dir != null) Files.createDirectories(dir);
-        String name = t.getFileName().toString();
+        if (t.getFileName().toString().getBytes(StandardCharsets.UTF_8).length > 255) {   // the rename at the end would fail: say so first
+            throw new java.nio.file.FileSystemException(t.toString(), null, "File name too long");
+        }
+        String name = stem(t.getFileName().toString());
         removeDeadPartials(dir == null ? Path.of(".") : dir, name);
         this.temp = (dir == null ? Path.of(".") : dir).resolve("." + name + "." + PID + "-" + SERIAL.incrementAndGet() + PARTIAL);
         this.out = Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
@@ -90,6 +93,26 @@ public final class AtomicFile implements AutoCloseable {
             p = parent == null ? to : parent.resolve(to);
         }
         return p;
+    }
+
+    /**
+     * The part of {@code name} the temporary file's name keeps: all of it, or as many of its first
+     * characters as leave room for the dot, the process, the serial and ".partial" within the
+     * 255 bytes a name may have (a target name near that length must not fail for its temporary
+     * file alone).
+     */
+    static String stem(String name) {
+        int room = 255 - 1 - 1 - 20 - 1 - 19 - PARTIAL.length();
+        if (name.getBytes(StandardCharsets.UTF_8).length <= room) return name;
+        int end = 0, bytes = 0;
+        while (end < name.length()) {
+            int cp = name.codePointAt(end);
+            int b = new String(Character.toChars(cp)).getBytes(StandardCharsets.UTF_8).length;
+            if (bytes + b > room) break;
+            bytes += b;
+            end += Character.charCount(cp);
+        }
+        return name.substring(0, end);
     }
 
     /** Removes {@code .NAME.PID-N.partial} files in {@code dir} whose process is gone (left by SIGKILL). */

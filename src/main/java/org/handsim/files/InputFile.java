@@ -203,6 +203,7 @@ public final class InputFile {
         private final String name;
         private final InputStream in;
         private final int maxLineBytes;
+        private final boolean strict;
         private final byte[] chunk = new byte[1 << 16];
         private int chunkPos, chunkEnd;
         private byte[] buf = new byte[256];
@@ -211,14 +212,37 @@ public final class InputFile {
 
         /** Opens {@code file} ({@link #require} first: a FIFO is refused, never opened). */
         public Lines(Path file, int maxLineBytes) {
+            this(file, maxLineBytes, true);
+        }
+
+        /**
+         * As {@link #Lines(Path, int)}; with {@code strict} false a byte that is not UTF-8 is kept
+         * as the lone surrogate U+DC00 + byte ({@link SafeText#decodeUtf8}), which a message
+         * quoting it shows as that byte, for formats whose text besides the numbers is free
+         * (names and comments of an OBJ file).
+         */
+        public Lines(Path file, int maxLineBytes, boolean strict) {
             require(file);
             this.name = file.toString();
             this.maxLineBytes = maxLineBytes;
+            this.strict = strict;
             try {
                 this.in = Files.newInputStream(file);
             } catch (IOException e) {
                 throw new InputFileException(file + ": cannot be read (" + e.getMessage() + ")", e);
             }
+        }
+
+        /**
+         * The lines of bytes the caller read from {@code name} (through {@link #readBytes}), as
+         * {@link #Lines(Path, int, boolean)} reads them from the file: one read of a file serves
+         * both a digest of its bytes and its lines.
+         */
+        public Lines(String name, byte[] bytes, int maxLineBytes, boolean strict) {
+            this.name = name;
+            this.maxLineBytes = maxLineBytes;
+            this.strict = strict;
+            this.in = new java.io.ByteArrayInputStream(bytes);
         }
 
         /** The 1-based number of the line {@link #next} returned last. */
@@ -265,6 +289,7 @@ public final class InputFile {
             line++;
             if (n > 0 && buf[n - 1] == '\r') n--;
             int start = line == 1 && n >= 3 && startsWithBom(buf) ? BOM.length : 0;
+            if (!strict) return SafeText.decodeUtf8(buf, start, n - start);
             CharsetDecoder dec = StandardCharsets.UTF_8.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPORT).onUnmappableCharacter(CodingErrorAction.REPORT);
             ByteBuffer bb = ByteBuffer.wrap(buf, start, n - start);

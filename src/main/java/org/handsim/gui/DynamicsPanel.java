@@ -33,7 +33,7 @@ import org.handsim.model.Snapshot;
  *
  * <h2>The grasp, live</h2>
  * The <b>Grasp</b> box shows the grasp of the state on screen as {@code handsim grasp} reports
- * it (issue 12; {@link org.handsim.grasp.GraspAssessment}, DESIGN.md decisions 5 and 6): force
+ * it ({@link org.handsim.grasp.GraspAssessment}, DESIGN.md decisions 5 and 6): force
  * closure (yes / no), the Ferrari–Canny ε and the volume of the L1 grasp wrench space, and the
  * minimum hold over the six world directions ±x, ±y, ±z in newtons — with the friction μ and
  * cone edges m of the scenario (the Objects panel's friction field), the simulated time it was

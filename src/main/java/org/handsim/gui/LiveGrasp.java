@@ -8,8 +8,7 @@ import org.handsim.grasp.GraspAssessment;
 import org.handsim.model.HandModel;
 
 /**
- * The grasp of the running model, evaluated live for the window (issue 12, "Where users see
- * it"): force closure, ε, volume and the minimum hold ({@link GraspAssessment}), on a thread of
+ * The grasp of the running model, evaluated live for the window: force closure, ε, volume and the minimum hold ({@link GraspAssessment}), on a thread of
  * its own, so that neither the simulation thread nor the event dispatch thread waits for it.
  *
  * <h2>How it keeps up without holding anything back</h2>

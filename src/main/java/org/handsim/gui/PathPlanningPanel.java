@@ -185,7 +185,7 @@ public final class PathPlanningPanel {
                     try {
                         p[i] = org.handsim.text.Decimal.parse(parts[i]);
                     } catch (NumberFormatException e) {
-                        throw new IllegalArgumentException(motor + " end: '" + parts[i] + "' is not a number");
+                        throw new IllegalArgumentException(motor + " end: '" + org.handsim.text.SafeText.quote(parts[i]) + "' is not a number");
                     }
                 }
                 // palm frame (the panel's) → the finger's base frame {k0} (the trajectory's)

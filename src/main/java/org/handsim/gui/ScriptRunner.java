@@ -92,6 +92,8 @@ public final class ScriptRunner {
                 throw e;
             } catch (Exception e) {
                 failure = message(e);
+                // a message quoting what was typed is one line of bounded length, whatever was typed
+                if (failure.length() > 2 * SHOWN_WHOLE) failure = failure.substring(0, SHOWN_WHOLE) + "..." + failure.substring(failure.length() - 100);
             }
             String where = script.source() + ":" + a.line() + ": " + shown(a.text()) + ": ";
             if (expected != null) {

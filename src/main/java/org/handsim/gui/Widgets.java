@@ -60,7 +60,7 @@ final class Widgets {
             if (!Double.isFinite(v)) throw new NumberFormatException();
             return v;
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(what + ": '" + t + "' is not a number");
+            throw new IllegalArgumentException(what + ": '" + org.handsim.text.SafeText.quote(t) + "' is not a number");
         }
     }
 

@@ -4,9 +4,8 @@
  * contacts, live JFreeChart traces, Play / Pause / Step / Reset, menus and shortcuts, and a
  * scripted mode for tests and documentation ({@link org.handsim.gui.Script}). The simulator
  * itself — view and model — is one embeddable component, {@link org.handsim.gui.HandSimPanel};
- * {@link org.handsim.gui.HandSimWindow} is built around it. Uses {@code model}, {@code scenario} (and the
- * kinematics it is built on), {@code chart} (exports) and JFreeChart; nothing outside
- * {@code gui} and {@code cli} uses this package (the README's embedding example aside).
+ * {@link org.handsim.gui.HandSimWindow} is built around it. Nothing outside {@code gui} and
+ * {@code cli} uses this package (the README's embedding example aside).
  *
  * <h2>Thread rules</h2>
  * <ol>
@@ -39,5 +38,7 @@
  *       appears in the status bar and a dialog; uncaught exceptions (on the EDT or elsewhere)
  *       are recorded by {@link org.handsim.gui.ErrorLog} and make a scripted run fail.</li>
  * </ol>
+ *
+ * <p>May use every room below it (docs/DESIGN.md, "Modules").
  */
 package org.handsim.gui;

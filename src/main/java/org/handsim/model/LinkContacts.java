@@ -50,7 +50,7 @@ public interface LinkContacts {
     }
 
     /**
-     * The object's torque origin and characteristic length for grasp analysis (issue 12): its
+     * The object's torque origin and characteristic length for grasp analysis: its
      * centroid c in the world (metres, {@code TriangleMesh.centroid}) and R, the largest
      * distance from c to a vertex (GraspIt!'s convention), as {cx, cy, cz, R}; null when the
      * back end has no object geometry (analytic test shapes).

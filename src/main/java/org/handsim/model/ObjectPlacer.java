@@ -7,7 +7,7 @@ import org.handsim.scenario.Scenario;
 import org.handsim.scenario.SceneMeshes;
 
 /**
- * Where a newly imported object goes (issue 14): on the palm axis in front of the palm, clear of
+ * Where a newly imported object goes: on the palm axis in front of the palm, clear of
  * the hand, at a sensible size.
  *
  * <h2>Units</h2>

@@ -42,7 +42,7 @@ import org.handsim.scenario.SceneMeshes;
  * instance per model (per thread).
  */
 public final class SceneGeometry implements LinkContacts {
-    /** Default k of the k-DOPs (issue 5's default; see docs/BENCHMARKS.md for the others). */
+    /** Default k of the k-DOPs (docs/BENCHMARKS.md compares the others). */
     public static final int DEFAULT_K = 18;
 
     private final int k;

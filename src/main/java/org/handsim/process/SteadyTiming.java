@@ -6,8 +6,8 @@ import java.util.Arrays;
 import java.util.function.DoubleSupplier;
 
 /**
- * Steady-state timing of one operation for the commands that print a time (issue 15: honest
- * timings). The operation is first run until the JIT has compiled it — at least
+ * Steady-state timing of one operation for the commands that print a time, so the times they
+ * print are honest. The operation is first run until the JIT has compiled it — at least
  * {@link #WARMUP_SECONDS} of wall time <em>and</em> at least {@link #WARMUP_CALLS} calls,
  * whichever comes later, capped at {@link #WARMUP_CAP_SECONDS} for very slow operations — and
  * then timed in {@code samples} batches; each batch runs enough calls to last about

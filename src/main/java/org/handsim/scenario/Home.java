@@ -47,6 +47,7 @@ public final class Home {
     static final String JAR_FOLDER = "handsim-home/";
 
     private static volatile Path unpacked;
+    private static volatile String unpackFailure;
 
     public static Path dir() {
         for (String prop : new String[] {"handsim.home", "handsim.root"}) {
@@ -70,12 +71,27 @@ public final class Home {
             try {
                 Path jar = Path.of(Home.class.getProtectionDomain().getCodeSource().getLocation().toURI());
                 if (!Files.isRegularFile(jar)) return null;
-                unpacked = unpack(jar, userCache());
+                try {
+                    unpacked = unpack(jar, userCache());
+                } catch (IOException | RuntimeException e) {
+                    unpackFailure = "the models and scenarios of " + jar.getFileName() + " could not be unpacked: " + e.getMessage()
+                        + " (the cache " + userCache() + " and the temporary folder " + System.getProperty("java.io.tmpdir")
+                        + " must be writable)";
+                    return null;
+                }
                 return unpacked;
-            } catch (IOException | URISyntaxException | RuntimeException e) {
+            } catch (URISyntaxException | RuntimeException e) {
                 return null;
             }
         }
+    }
+
+    /**
+     * Why the runnable jar's models could not be unpacked (a read-only cache and temporary
+     * folder), or null: an error that follows from their absence says this too.
+     */
+    public static String unpackFailure() {
+        return unpackFailure;
     }
 
     /** Whether the data folders in use are the ones unpacked from the runnable jar (not a checkout's). */

@@ -16,6 +16,7 @@ import java.util.function.Supplier;
 import java.util.zip.CRC32C;
 import java.util.zip.GZIPInputStream;
 import org.handsim.mesh.TriangleMesh;
+import org.handsim.files.InputFile;
 import org.handsim.files.PrivateFolder;
 
 /**
@@ -55,18 +56,17 @@ public final class MeshCache {
     private MeshCache() {}
 
     /**
-     * The mesh of {@code file} at these divisions and scale: from the cache folder, or made by
-     * {@code load} (and stored).
+     * The mesh of {@code file}, whose bytes the caller read ({@link MeshFiles#read}), at these
+     * divisions and scale: from the cache folder, or made by {@code load} (and stored). The file
+     * is not read here.
      */
-    public static TriangleMesh get(Path file, int divisions, double scale, Supplier<TriangleMesh> load) {
+    public static TriangleMesh get(Path file, byte[] bytes, int divisions, double scale, Supplier<TriangleMesh> load) {
         Path dir = folder();
         // entries are trusted (their mesh is not made again), so only from a folder nobody else may write
         if (dir == null || !PrivateFolder.ensure(dir)) return load.get();
         Path entry;
         String key;
-        byte[] bytes;
         try {
-            bytes = Files.readAllBytes(file);
             if (!selfContained(file, bytes)) return load.get();
             key = key(divisions, scale);
             entry = dir.resolve(name(bytes, key));
@@ -147,8 +147,9 @@ public final class MeshCache {
     static TriangleMesh read(Path entry, String key, byte[] source) {
         byte[] b;
         try {
-            b = Files.readAllBytes(entry);
-        } catch (IOException e) {
+            if (!Files.exists(entry)) return null;
+            b = InputFile.readBytes(entry, MAX_BYTES, "the mesh cache's limit");
+        } catch (InputFile.InputFileException e) {
             return null;
         }
         try {

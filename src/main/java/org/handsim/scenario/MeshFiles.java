@@ -85,21 +85,61 @@ public final class MeshFiles {
         return loaded;
     }
 
+    /**
+     * The bytes of an object file through the input gate ({@link InputFile}, with the limit of
+     * object files), for a caller that needs them before the mesh (the mesh cache's key) and then
+     * loads from them ({@link #load(Path, byte[], int, double)}): the file is read once.
+     *
+     * @throws ScenarioException naming the file as {@link #load(Path, int, double)} would (a file
+     *         over the limit, a FIFO or a device, a read error)
+     */
+    public static byte[] read(Path file) {
+        String why = NotFound.problem(file);
+        if (why != null) throw new ScenarioException(file + ":1:1: cannot read the file: " + why);
+        try {
+            return InputFile.readBytes(file, MeshLimits.MAX_FILE_BYTES, MeshLimits.FILE_LIMIT);
+        } catch (InputFile.InputFileException e) {
+            String m = e.getMessage(), at = file + ": ";
+            // the VRML loader names the place as FILE:1:1, the OBJ and STL readers as FILE
+            if (Format.of(file) == Format.VRML && m.startsWith(at)) m = file + ":1:1: " + m.substring(at.length());
+            throw new ScenarioException(m, e);
+        }
+    }
+
+    /**
+     * Loads a file from its bytes, read by {@link #read}: the same result as
+     * {@link #load(Path, int, double)}, without reading the file again.
+     */
+    public static Loaded load(Path file, byte[] bytes, int divisions, double scale) {
+        String scaleWhy = MeshLimits.scaleProblem(scale);
+        if (scaleWhy != null) throw new IllegalArgumentException("scale " + scaleWhy);
+        Loaded loaded = loadChecked(file, bytes, divisions, scale);
+        String far = MeshLimits.coordinateProblem(loaded.mesh());
+        if (far != null) throw new ScenarioException(file + ":1:1: " + far);
+        return loaded;
+    }
+
     private static Loaded loadChecked(Path file, int divisions, double scale) {
+        return loadChecked(file, null, divisions, scale);
+    }
+
+    /** {@code bytes}: the file's, already read, or null to read it here. */
+    private static Loaded loadChecked(Path file, byte[] bytes, int divisions, double scale) {
         String label = file.getFileName().toString();
         Format f = Format.of(file);
         try {
             switch (f) {
                 case OBJ: {
-                    ObjReader.Result r = ObjReader.read(file, scale);
-                    return new Loaded(r.mesh(), f, r.walk().shapes, r.walk().degenerate, List.of());
+                    ObjReader.Result r = bytes == null ? ObjReader.read(file, scale) : ObjReader.read(file, bytes, scale);
+                    return new Loaded(r.mesh(), f, r.walk().shapes, r.degenerate(), List.of());
                 }
                 case STL: {
-                    StlReader.Result r = StlReader.read(file, scale);
+                    StlReader.Result r = bytes == null ? StlReader.read(file, scale) : StlReader.read(file.toString(), bytes, scale);
                     return new Loaded(r.mesh(), f, 1, r.degenerate(), List.of());
                 }
                 default: {
-                    VrmlScene scene = new VrmlLoader().divisions(divisions).normals(false).load(file);
+                    VrmlLoader loader = new VrmlLoader().divisions(divisions).normals(false);
+                    VrmlScene scene = bytes == null ? loader.load(file) : loader.load(file, bytes);
                     TessellationWalk.Result r;
                     try {
                         r = new TessellationWalk().scale(scale).name(label).run(scene.getSceneGroup());

@@ -283,6 +283,14 @@ public final class Scenario implements Cloneable {
         return new double[] {p[0], p[1], p[2], r[0], r[1], r[2]};
     }
 
+    /** A positive number within {@code range}, else an error naming the field. */
+    private static double inRange(JsonObject o, String field, InputRanges.Range range) {
+        double v = o.positive(field);
+        String why = range.problem(v);
+        if (why != null) throw o.error(field, why);
+        return v;
+    }
+
     private static double counts(JsonObject o, String field, double max) {
         double q = o.number(field);
         if (q < 0 || q > max) throw o.error(field, "must be in [0, " + (long) max + "] counts, got " + q);
@@ -303,7 +311,8 @@ public final class Scenario implements Cloneable {
                 switch (type) {
                     case "trapezoid":
                         s.allowOnly("type", "to", "v_max", "a_max");
-                        t = new Trapezoid(at, counts(s, "to", max), s.positive("v_max"), s.positive("a_max"));
+                        t = new Trapezoid(at, counts(s, "to", max), inRange(s, "v_max", InputRanges.MOTOR_SPEED),
+                            inRange(s, "a_max", InputRanges.MOTOR_ACCELERATION));
                         break;
                     case "quintic":
                         s.allowOnly("type", "to", "duration_s");

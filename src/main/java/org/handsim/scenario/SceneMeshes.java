@@ -2,6 +2,8 @@ package org.handsim.scenario;
 
 import java.io.Reader;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
 import org.handsim.process.BoundedCache;
@@ -54,9 +56,9 @@ public final class SceneMeshes {
             if (checked == now) return true;
             if (bytes == null) return false;
             try {
-                if (!java.util.Arrays.equals(java.nio.file.Files.readAllBytes(file), bytes)) return false;
-            } catch (java.io.IOException | RuntimeException e) {
-                return false;   // gone or unreadable: load it again, and let the loader say why
+                if (!java.util.Arrays.equals(read(file), bytes)) return false;
+            } catch (RuntimeException e) {
+                return false;   // gone, unreadable or too large now: load it again, and let the loader say why
             }
             checked = now;
             return true;
@@ -83,17 +85,47 @@ public final class SceneMeshes {
     public static TriangleMesh mesh(Path file, int divisions, double scale) {
         return MESHES.get(file.toAbsolutePath().normalize() + "|" + divisions + "|" + scale, FileMesh::unchanged, x -> {
             long generation = CommandContext.generation();
-            byte[] bytes;
-            try {
-                bytes = java.nio.file.Files.readAllBytes(file);
-                if (!MeshCache.selfContained(file, bytes)) bytes = null;
-            } catch (java.io.IOException | RuntimeException e) {
-                bytes = null;   // the loader says why
-            }
-            TriangleMesh m = MeshCache.get(file, divisions, scale, () -> MeshFiles.load(file, divisions, scale).mesh());
+            byte[] bytes = read(file);
+            TriangleMesh m = MeshCache.get(file, bytes, divisions, scale, () -> MeshFiles.load(file, bytes, divisions, scale).mesh());
             if (m.triangleCount() == 0) throw new ScenarioException(file + ":1:1: the file has no triangles to collide with");
-            return new FileMesh(file, m, bytes, generation);
+            boolean alone;
+            try {
+                alone = MeshCache.selfContained(file, bytes);
+            } catch (java.io.IOException e) {
+                alone = false;
+            }
+            return new FileMesh(file, m, alone ? bytes : null, generation);
         }).mesh;
+    }
+
+    /** The files read in this command, newest last (at most {@link #READS_KEPT}). */
+    private static final Map<Path, Read> READS = new LinkedHashMap<>();
+    private static final int READS_KEPT = 4;
+
+    private record Read(long generation, byte[] bytes) {}
+
+    /**
+     * The bytes of an object file, through the input gate ({@link MeshFiles#read}: the limit of
+     * object files), read once per command: the meshes of one file at several scales (its units
+     * judged at scale 1, then the scenario's) and the check that it has not changed share one read.
+     */
+    private static byte[] read(Path file) {
+        Path key = file.toAbsolutePath().normalize();
+        long generation = CommandContext.generation();
+        synchronized (READS) {
+            Read r = READS.get(key);
+            if (r != null && r.generation == generation) return r.bytes;
+        }
+        byte[] b = MeshFiles.read(file);
+        synchronized (READS) {
+            READS.remove(key);
+            READS.put(key, new Read(generation, b));
+            for (java.util.Iterator<Path> i = READS.keySet().iterator(); READS.size() > READS_KEPT; ) {
+                i.next();
+                i.remove();
+            }
+        }
+        return b;
     }
 
     /**

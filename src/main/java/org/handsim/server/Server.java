@@ -77,7 +77,7 @@ public final class Server {
     private long lastActivity = System.currentTimeMillis();
     private int served;
 
-    private Server(String identity, Path dir, String key, long idleMs) {
+    Server(String identity, Path dir, String key, long idleMs) {
         this.identity = identity;
         this.dir = dir;
         this.key = key;
@@ -108,7 +108,7 @@ public final class Server {
     }
 
     /** Holds the lock, listens, serves until told or timed out; returns the exit code. */
-    private int serve() throws IOException {
+    int serve() throws IOException {
         try (FileChannel lockChannel = FileChannel.open(Client.lockFile(dir, key), StandardOpenOption.CREATE, StandardOpenOption.WRITE)) {
             FileLock lock = lockChannel.tryLock();
             if (lock == null) {

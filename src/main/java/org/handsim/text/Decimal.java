@@ -3,8 +3,8 @@ package org.handsim.text;
 import com.fasterxml.jackson.core.io.NumberOutput;
 
 /**
- * The one number format of every command output — JSON, CSV and console (issue 15, "numbers as
- * people read them"). A double is written as ECMAScript's {@code Number.prototype.toString}
+ * The one number format of every command output — JSON, CSV and console: numbers as people
+ * read them. A double is written as ECMAScript's {@code Number.prototype.toString}
  * writes it (ECMA-262, 7.1.12.1 Number::toString; what {@code JSON.stringify} and Python's
  * {@code json} read back exactly):
  * <ul>
@@ -70,6 +70,7 @@ public final class Decimal {
      * {@code 9223372036854775807}: a count too large for a long is given as the double it is.
      */
     public static String count(double n) {
+        if (!Double.isFinite(n)) return Double.isNaN(n) ? "an undefined number of" : "infinitely many";
         if (!(Math.abs(n) < 1e6)) {
             String[] words = {"million", "billion", "trillion"};
             for (int i = 0; i < words.length; i++) {

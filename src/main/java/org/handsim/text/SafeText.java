@@ -1,8 +1,7 @@
 package org.handsim.text;
 
 /**
- * Input quoted in a message, made safe for tools that read messages line by line (issue 15:
- * "every message quotes input safely"). Every error HandSim prints is exactly one line.
+ * Input quoted in a message, made safe for tools that read messages line by line. Every error HandSim prints is exactly one line.
  *
  * <p>{@link #escape} replaces, each by {@code \}{@code uXXXX} (lower-case hex):
  * <ul>

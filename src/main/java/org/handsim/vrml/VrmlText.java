@@ -58,6 +58,13 @@ final class VrmlText {
         return t;
     }
 
+    /** Wraps the bytes of {@code file}, read by the caller, as {@link #read} would have read them. */
+    static VrmlText fromBytes(String name, byte[] raw, Path file) throws IOException {
+        VrmlText t = fromBytes(name, raw);
+        t.path = file;
+        return t;
+    }
+
     /** Wraps bytes, decompressing them first if they are a gzip stream. */
     static VrmlText fromBytes(String name, byte[] raw) throws IOException {
         if (raw.length >= 2 && (raw[0] & 0xff) == 0x1f && (raw[1] & 0xff) == 0x8b) {

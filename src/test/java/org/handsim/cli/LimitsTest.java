@@ -73,6 +73,36 @@ class LimitsTest {
         assertTrue(run.peakBytes() < 300 * MB, "peak resident " + run.peakBytes() / MB + " MB");
     }
 
+    /**
+     * A scenario naming a 3 GB object file (sparse): {@code run} refuses it with the limit of
+     * object files, the line {@code mesh} prints for the same file, exit 3 (before: out of memory,
+     * "give Java more heap", exit 1, after reading it whole).
+     */
+    @Test
+    void aThreeGigabyteObjectIsRefusedByItsSizeInEveryCommand() throws Exception {
+        for (String name : new String[] {"huge.stl", "huge.wrl"}) {
+            Path huge = dir.resolve(name);
+            try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(huge.toFile(), "rw")) {
+                f.setLength(3L << 30);
+            }
+            try {
+                ChildJvm.Result mesh = ChildJvm.run(dir, "256m", 3, "mesh", huge.toString());
+                assertEquals(3, mesh.code(), mesh.err());
+                String limit = "is 3221225472 bytes, more than the limit of object files (268435456 bytes)";
+                assertTrue(mesh.err().endsWith(limit), mesh.err());
+                Path scenario = Files.writeString(dir.resolve("huge.json"), Files.readString(TestPaths.root().resolve("scenarios/paper-breakaway.json"))
+                    .replaceFirst("\"file\": *\"[^\"]*\"", "\"file\": \"" + huge + "\""));
+                ChildJvm.Result run = ChildJvm.run(dir, "256m", 3, "run", scenario.toString(), "--out", dir.resolve("out").toString());
+                assertEquals(3, run.code(), run.err());
+                oneLine(run);
+                assertEquals(mesh.err().substring(mesh.err().indexOf(huge.toString())), run.err().substring(run.err().indexOf(huge.toString())));
+                assertFalse(Files.exists(dir.resolve("out")));
+            } finally {
+                Files.deleteIfExists(huge);
+            }
+        }
+    }
+
     /** 5 000 contacts: refused at once (more than 1 600 distinct wrenches), in -Xmx512m; 100 are answered with progress lines. */
     @Test
     void qualityTakesAnyNumberOfContactsInBoundedTimeAndMemory() throws Exception {

@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
  *
  * <p>Default resolution: UV spheres with 32 segments round (16 latitude bands), the resolution
  * of {@code vrml/objects/sphere.wrl}; boxes with one square per face (two triangles).
- * Tolerances (STYLE.md item 12): patch centre within {@link #CENTER_TOL_M} = 1 mm, normal
+ * Tolerances (docs/STYLE.md, item 12): patch centre within {@link #CENTER_TOL_M} = 1 mm, normal
  * within {@link #NORMAL_TOL_DEG} = 1°.
  */
 class ContactPatchesTest {
@@ -105,6 +105,7 @@ class ContactPatchesTest {
         ContactPatches cp = new ContactPatches();
         ContactForces cf = new ContactForces();
         int[] patches = new int[1];
+        ContactForces.Problem problem = new ContactForces.Problem().frames(frames).held(0).driven(1, tau[1]).driven(2, tau[2]);
         Runnable step = () -> {
             query.collide(ta, tb, pose12, 0, result);
             cp.build(result, plate, sphere, pose);
@@ -116,7 +117,7 @@ class ContactPatchesTest {
                 System.arraycopy(dirs, 0, dirs, 3 * i, 3);
                 links[i] = 2 + i % 2;
             }
-            cf.solve(frames, 1, tau, n, points, dirs, links);
+            cf.solve(problem.contacts(n, points, dirs, links));
             patches[0] = n;
         };
         for (int i = 0; i < 2000; i++) step.run();   // warm-up (and JIT)
@@ -272,7 +273,7 @@ class ContactPatchesTest {
     }
 
     /**
-     * STYLE.md item 11: the contact error shrinks as the sphere's resolution grows (mean over
+     * docs/STYLE.md, item 11: the contact error shrinks as the sphere's resolution grows (mean over
      * eight fixed random orientations and positions; 8, 16, 32, 64 segments).
      */
     @Test
@@ -329,7 +330,7 @@ class ContactPatchesTest {
     }
 
     /**
-     * STYLE.md item 10: swapping A and B (same object mesh) gives the same patches: same
+     * docs/STYLE.md, item 10: swapping A and B (same object mesh) gives the same patches: same
      * centres, areas, pair counts and triangles (exchanged), normals flipped. The meshes are
      * placed first and queried with the identity, so both orders see bit-identical coordinates.
      */

@@ -29,11 +29,11 @@ class InputFileTest {
                 Path f = e.getValue();
                 assertEquals("is not a regular file (" + e.getKey() + ")", InputFile.problem(f), f.toString());
                 // reading is refused before the file is opened: a FIFO would block here forever
-                InputFile.InputFileException x = assertTimeoutPreemptively(Duration.ofSeconds(10),
+                InputFile.InputFileException x = assertTimeoutPreemptively(Duration.ofSeconds(60),
                     () -> assertThrows(InputFile.InputFileException.class, () -> InputFile.readText(f, 1000, "the test's limit")));
                 assertEquals(f + ": is not a regular file (" + e.getKey() + ")", x.getMessage());
-                assertTimeoutPreemptively(Duration.ofSeconds(10), () -> assertThrows(InputFile.InputFileException.class, () -> new InputFile.Lines(f, 100)));
-                assertTimeoutPreemptively(Duration.ofSeconds(10), () -> assertThrows(InputFile.InputFileException.class, () -> InputFile.head(f, 100)));
+                assertTimeoutPreemptively(Duration.ofSeconds(60), () -> assertThrows(InputFile.InputFileException.class, () -> new InputFile.Lines(f, 100)));
+                assertTimeoutPreemptively(Duration.ofSeconds(60), () -> assertThrows(InputFile.InputFileException.class, () -> InputFile.head(f, 100)));
             }
             assertEquals("no such file", InputFile.problem(sf.dir.resolve("absent")));
         }

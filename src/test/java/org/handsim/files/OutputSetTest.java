@@ -140,7 +140,7 @@ class OutputSetTest {
                         return "failed: " + e;
                     }
                 });
-                long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+                long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
                 while (told.isEmpty() && System.nanoTime() < end) Thread.sleep(10);
                 Thread.sleep(300);
                 assertFalse(second.isDone(), "the second waits");

@@ -27,7 +27,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * The grasp in the window (issue 12, "The window"), end to end in a child JVM on the current
+ * The grasp in the window, end to end in a child JVM on the current
  * display ({@link GuiWindowTest} says how the display reaches the tests). The mug grasp
  * (scenarios/mug-grasp.json) is played to its end:
  * <ul>

@@ -30,7 +30,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * The window as a daily tool (issue 14, "Done means"), end to end in a child JVM on the current
+ * The window as a daily tool, end to end in a child JVM on the current
  * display (see {@link GuiWindowTest} for how the display reaches the tests):
  * <ul>
  *   <li>an STL and an OBJ model that would start inside the hand are placed clear of it (no

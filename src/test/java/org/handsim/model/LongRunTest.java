@@ -14,7 +14,7 @@ import org.handsim.trajectory.Trapezoid;
 import org.junit.jupiter.api.Test;
 
 /**
- * Stability over a long run (issue 8): 10⁶ steps of a finger closing onto an object, breaking
+ * Stability over a long run: 10⁶ steps of a finger closing onto an object, breaking
  * away, opening and re-engaging, again and again. Every cycle must repeat the first exactly:
  * the same contact and breakaway counts, the same states, no NaN, no drift of the clutch.
  */

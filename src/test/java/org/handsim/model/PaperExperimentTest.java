@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The paper's experiment (Section V) as the main job runs it: scenarios/paper-breakaway.json,
- * read back from the recorded trace (issue 6, "Done means").
+ * read back from the recorded trace.
  */
 class PaperExperimentTest {
     static HandModel model;

@@ -14,7 +14,7 @@ import org.handsim.trace.Recorder;
 import org.junit.jupiter.api.Test;
 
 /**
- * What a link/object pair costs (issue 8, "model no more than a scene needs"): a link far from
+ * What a link/object pair costs (the model does no more than a scene needs): a link far from
  * the object costs one bounding-sphere test (no node, k-DOP or triangle test); a link whose
  * bounding sphere overlaps the object's but whose root k-DOP does not costs one k-DOP test; a
  * link in the object costs triangle tests and returns contacts.

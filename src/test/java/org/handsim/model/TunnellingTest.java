@@ -11,7 +11,7 @@ import org.handsim.scenario.SceneMeshes;
 import org.junit.jupiter.api.Test;
 
 /**
- * Tunnelling (issue 8): a 1 mm plate in the path of a fast-closing finger at a large step.
+ * Tunnelling: a 1 mm plate in the path of a fast-closing finger at a large step.
  * With the motor at 50 000 counts/s and dt = 0.1 s the inner link turns 40° per step: the
  * whole link (about 20 mm thick) jumps over the plate, and both end poses miss it. The model
  * must catch it, and find the contact where a fine step finds it.

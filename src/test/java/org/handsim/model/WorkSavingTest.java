@@ -10,7 +10,7 @@ import org.handsim.trace.Recorder;
 import org.junit.jupiter.api.Test;
 
 /**
- * "Model no more than a scene needs" (issue 8): the work the model saves (HandModel.lazy) must
+ * The model does no more than a scene needs: the work the model saves (HandModel.lazy) must
  * not change a single recorded number, and must actually be saved. Compared on the paper's
  * experiment (fingers 1 and 2 never move) and the three-finger mug grasp, against the same run
  * with every finger fully computed every step.

@@ -62,16 +62,16 @@ class MeshCacheTest {
         Files.createDirectory(dir.resolve("meshes"));
         Files.setPosixFilePermissions(dir.resolve("meshes"), java.nio.file.attribute.PosixFilePermissions.fromString("rwxrwxrwx"));
         AtomicInteger calls = new AtomicInteger();
-        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
-        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        MeshCache.get(mug, MeshFiles.read(mug), 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        MeshCache.get(mug, MeshFiles.read(mug), 24, 1.2, () -> counted(calls, mug, 24, 1.2));
         assertEquals(2, calls.get(), "no hit");
         try (var entries = Files.list(dir.resolve("meshes"))) {
             assertEquals(0, entries.count(), "nothing written there");
         }
         // the same folder made private is used
         Files.setPosixFilePermissions(dir.resolve("meshes"), java.nio.file.attribute.PosixFilePermissions.fromString("rwx------"));
-        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
-        MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        MeshCache.get(mug, MeshFiles.read(mug), 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        MeshCache.get(mug, MeshFiles.read(mug), 24, 1.2, () -> counted(calls, mug, 24, 1.2));
         assertEquals(3, calls.get(), "a hit");
     }
 
@@ -79,21 +79,21 @@ class MeshCacheTest {
     void aHitIsTheFreshMeshBitForBit() throws Exception {
         Path mug = Files.copy(Home.dir().resolve("vrml/objects/mug.wrl"), dir.resolve("mug.wrl"));
         AtomicInteger calls = new AtomicInteger();
-        TriangleMesh first = MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
-        TriangleMesh second = MeshCache.get(mug, 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        TriangleMesh first = MeshCache.get(mug, MeshFiles.read(mug), 24, 1.2, () -> counted(calls, mug, 24, 1.2));
+        TriangleMesh second = MeshCache.get(mug, MeshFiles.read(mug), 24, 1.2, () -> counted(calls, mug, 24, 1.2));
         assertEquals(1, calls.get(), "the second came from the cache");
         same(load(mug, 24, 1.2), first);
         same(first, second);
         // other divisions or scale: other entries
-        MeshCache.get(mug, 12, 1.2, () -> counted(calls, mug, 12, 1.2));
-        MeshCache.get(mug, 24, 1.0, () -> counted(calls, mug, 24, 1.0));
+        MeshCache.get(mug, MeshFiles.read(mug), 12, 1.2, () -> counted(calls, mug, 12, 1.2));
+        MeshCache.get(mug, MeshFiles.read(mug), 24, 1.0, () -> counted(calls, mug, 24, 1.0));
         assertEquals(3, calls.get());
         // the same bytes under another name hit; changed bytes miss
         Path copy = Files.copy(mug, dir.resolve("copy.wrl"));
-        MeshCache.get(copy, 24, 1.2, () -> counted(calls, copy, 24, 1.2));
+        MeshCache.get(copy, MeshFiles.read(copy), 24, 1.2, () -> counted(calls, copy, 24, 1.2));
         assertEquals(3, calls.get(), "keyed by content, not name");
         Files.writeString(copy, Files.readString(copy) + "\n# edited\n");
-        MeshCache.get(copy, 24, 1.2, () -> counted(calls, copy, 24, 1.2));
+        MeshCache.get(copy, MeshFiles.read(copy), 24, 1.2, () -> counted(calls, copy, 24, 1.2));
         assertEquals(4, calls.get(), "an edited file misses");
     }
 
@@ -101,7 +101,7 @@ class MeshCacheTest {
     @Test
     void damagedEntriesAreMisses() throws Exception {
         Path cube = Files.copy(Home.dir().resolve("vrml/objects/cube.wrl"), dir.resolve("cube.wrl"));
-        TriangleMesh fresh = MeshCache.get(cube, 32, 1.0, () -> load(cube, 32, 1.0));
+        TriangleMesh fresh = MeshCache.get(cube, MeshFiles.read(cube), 32, 1.0, () -> load(cube, 32, 1.0));
         Path entry;
         try (var s = Files.list(dir.resolve("meshes"))) {
             entry = s.filter(p -> p.toString().endsWith(".mesh")).findFirst().orElseThrow();
@@ -125,7 +125,7 @@ class MeshCacheTest {
             assertNull(MeshCache.read(entry, key, source), "cut to " + n + " bytes");
         }
         AtomicInteger calls = new AtomicInteger();
-        same(fresh, MeshCache.get(cube, 32, 1.0, () -> counted(calls, cube, 32, 1.0)));
+        same(fresh, MeshCache.get(cube, MeshFiles.read(cube), 32, 1.0, () -> counted(calls, cube, 32, 1.0)));
         assertEquals(1, calls.get(), "reloaded");
         assertArrayEquals(good, Files.readAllBytes(entry), "and rewritten");
     }
@@ -142,8 +142,8 @@ class MeshCacheTest {
             for (int i = 0; i < 64; i++) {
                 boolean even = i % 2 == 0;
                 f.add(pool.submit(() -> {
-                    if (even) same(c, MeshCache.get(cube, 32, 1.0, () -> load(cube, 32, 1.0)));
-                    else same(s, MeshCache.get(sphere, 16, 1.0, () -> load(sphere, 16, 1.0)));
+                    if (even) same(c, MeshCache.get(cube, MeshFiles.read(cube), 32, 1.0, () -> load(cube, 32, 1.0)));
+                    else same(s, MeshCache.get(sphere, MeshFiles.read(sphere), 16, 1.0, () -> load(sphere, 16, 1.0)));
                     return null;
                 }));
             }
@@ -165,14 +165,14 @@ class MeshCacheTest {
         Path inl = dir.resolve("inl.wrl");
         Files.writeString(inl, "#VRML V2.0 utf8\nInline { url \"cube.wrl\" }\n");
         AtomicInteger calls = new AtomicInteger();
-        MeshCache.get(inl, 32, 1.0, () -> counted(calls, inl, 32, 1.0));
-        MeshCache.get(inl, 32, 1.0, () -> counted(calls, inl, 32, 1.0));
+        MeshCache.get(inl, MeshFiles.read(inl), 32, 1.0, () -> counted(calls, inl, 32, 1.0));
+        MeshCache.get(inl, MeshFiles.read(inl), 32, 1.0, () -> counted(calls, inl, 32, 1.0));
         assertEquals(2, calls.get());
         System.setProperty("handsim.cache", "off");
         assertNull(MeshCache.folder());
         Path cube = dir.resolve("cube.wrl");
-        MeshCache.get(cube, 32, 1.0, () -> counted(calls, cube, 32, 1.0));
-        MeshCache.get(cube, 32, 1.0, () -> counted(calls, cube, 32, 1.0));
+        MeshCache.get(cube, MeshFiles.read(cube), 32, 1.0, () -> counted(calls, cube, 32, 1.0));
+        MeshCache.get(cube, MeshFiles.read(cube), 32, 1.0, () -> counted(calls, cube, 32, 1.0));
         assertEquals(4, calls.get());
     }
 }
