@@ -115,7 +115,8 @@ class PlanAnyShapeTest {
     }
 
     private static GraspAssessment grasp(GraspAssessment.Contact... c) {
-        return new GraspAssessment(0, GraspQuality.none(c.length, 8), new double[6], 0, List.of(c), new double[3], new double[3], 0.05, 0.5, 8);
+        return new GraspAssessment(0, GraspQuality.none(c.length, 8), new double[6], 0, new double[3][3], 58.84, List.of(c), new double[3],
+            new double[3], 0.05, 0.5, 8, new double[3][3]);
     }
 
     /**
