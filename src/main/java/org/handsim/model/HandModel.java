@@ -28,9 +28,10 @@ import org.handsim.process.StepClock;
  *       motor set-points q_Mk(t) → clutch state machine → joint angles, velocities and
  *       accelerations → forward kinematics → link meshes placed → collision with the object →
  *       patches → point contacts → joint torques (Lagrange–Euler plus the clutch spring) →
- *       contact forces (eq 11: the driven joints' torques carried, a held joint's reaction
- *       within its bounds, the residual where no forces do) → breakaway test (the torque
- *       through the clutch against τ_break) → next state.</li>
+ *       contact forces (eq 11: the driven joints' torques carried, held joints reacting, loads
+ *       locked in at a breakaway kept, the residual where no forces do) → every joint's carried
+ *       torque → breakaway test (the torque through the clutch against τ_break) → next state;
+ *       the spread moves first, and stops at a contact its motion pushes into.</li>
  *   <li><b>Fixed relations</b> — the private methods {@link #placeFinger}, {@link #collide},
  *       {@link #torquesAndForces} that the step calls.</li>
  * </ol>
