@@ -64,8 +64,8 @@ public final class HandModel {
 
     // ------------------------------------------------------------------ parameters
     private final Scenario scenario;
-    private final HandDescription hand = HandDescription.barrettHand();
-    private final Transmission tr = new Transmission(hand);
+    private final HandDescription hand;   // the scenario's (hand.parameters applied)
+    private final Transmission tr;
     private final LinkContacts objectContacts;      // null: no object in the scene
     private final TorqueModel dynamics;
     private final FingerKinematics[] fk = new FingerKinematics[3];
@@ -123,7 +123,7 @@ public final class HandModel {
     // the torque each joint carries, τ_dyn + Jᵀf (N·m), per finger and joint; the largest reaction of a worm-held inner joint (NaN: none)
     private final double[][] carried = new double[3][3];
     private final double[] maxWormReaction = new double[3];
-    private final RatingWatch ratings = new RatingWatch(hand);
+    private final RatingWatch ratings;
     // loads locked into the contacts when an inner joint's worm locked (the breakaway), per finger and link:
     // the forces (3 per contact of the link then), and the joints the link had then (its contacts are a function of them)
     private final double[][][] lockedForces = new double[3][3][0];
@@ -180,6 +180,9 @@ public final class HandModel {
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
         this.scenario = scenario;
+        this.hand = scenario.hand();
+        this.tr = new Transmission(hand);
+        this.ratings = new RatingWatch(hand);
         this.objectContacts = objectContacts;
         this.dynamics = dynamics;
         this.dt = scenario.dt();
