@@ -100,7 +100,7 @@ class JointBalanceTest {
             TrialResult res = r.run(i);
             assertTrue(res.ok(), res.error());
             Scenario s = Scenario.parse(java.nio.file.Path.of(spec.templateFile()),
-                r.scenarioJson(p, res.palmPosition(), res.palmRotation(), "trial" + i, false, null));
+                r.scenarioJson(p, res.standoff(), res.palmPosition(), res.palmRotation(), "trial" + i, false, null));
             held += check(s).heldReactions;
             ran++;
         }
