@@ -24,8 +24,13 @@ import java.util.Arrays;
  * Buffers grow as needed and are kept: no allocation per step once grown. Not thread-safe.
  */
 public final class ContactProblem {
-    /** The default relative regularisation ε (R_c = ε·W_c,nn): far below any rigid-body effect, far above rounding. */
-    public static final double DEFAULT_REGULARISATION = 1e-6;
+    /**
+     * The default relative regularisation ε (R_c = ε·W_c,nn). It makes a contact a stiff spring: a
+     * sticking contact creeps at ε·W·γ_t (a box held by friction on a 25° incline: 0.35 µm in 0.5 s),
+     * a resting one sinks by ε·g·h² (7.5e-9 m on a table). 1e-6 creeps 100× less, but Newton then
+     * needs hundreds of iterations on 4 % of seeded problems; 1e-4 converges within 25 on all.
+     */
+    public static final double DEFAULT_REGULARISATION = 1e-4;
 
     int nv;
     double[] a = new double[0];
@@ -105,6 +110,7 @@ public final class ContactProblem {
         Arrays.fill(jac, 3 * c * nv, 3 * (c + 1) * nv, 0);
         bias[3 * c] = bias[3 * c + 1] = bias[3 * c + 2] = 0;
         mu[c] = frictionCoefficient;
+        reg[c] = 0;
         return c;
     }
 

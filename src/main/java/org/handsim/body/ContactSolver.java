@@ -221,7 +221,7 @@ public final class ContactSolver {
      */
     static void project(double yn, double y1, double y2, double mu, double[] out, int o, double[] dp, int po) {
         double t = Math.sqrt(y1 * y1 + y2 * y2);
-        if (t <= mu * yn) {                                   // inside (yn ≥ 0)
+        if (yn >= 0 && t <= mu * yn) {                       // inside
             out[o] = yn; out[o + 1] = y1; out[o + 2] = y2;
             if (dp != null) {
                 Arrays.fill(dp, po, po + 9, 0);
