@@ -21,7 +21,7 @@ import org.handsim.vrml.VrmlLoader;
 /**
  * Suite "collision": k-DOP tree build and query times against triangle count, for every k and
  * both placements of the moving mesh, and the all-pairs loop, on the meshes and poses of
- * {@code ../shared/bench-meshes/scenarios.csv}; the rotated overlap compared with FCL's 24-DOP
+ * {@code bench-meshes/scenarios.csv} of the shared data folder ({@code handsim.shared}); the rotated overlap compared with FCL's 24-DOP
  * search, FCL measured in the same run by {@code build/fcl/fclbench} ({@code tools/fcl/build}; trees
  * prebuilt in one frame, search only; {@link #FCL_ROT_US} only when it is not built, and the
  * table says so; 56 / 122 / 238 / 486 pairs there and 20 / 32 / 56 / 116 in

@@ -18,7 +18,7 @@ import org.handsim.dynamics.RungeKutta4;
  * together; forward dynamics (D, H, C + Cholesky); one RK4 step. States cycle through 1024
  * seeded random ones so nothing is constant-folded.
  *
- * <p>Anchors (issue 3): Pinocchio (C++) on the same kind of chain and machine, RNEA ≈ 450 ns per
+ * <p>Anchors: Pinocchio (C++) on the same kind of chain and machine, RNEA ≈ 450 ns per
  * τ and CRBA ≈ 200 ns per mass matrix. Goals: the step's τ ≤ 225 ns (half of RNEA), the
  * general Lagrange–Euler ≤ 1350 ns (3× RNEA).
  */

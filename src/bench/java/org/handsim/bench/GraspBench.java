@@ -27,12 +27,12 @@ import org.handsim.grasp.WrenchSpace;
  * {@code tools/grasp/qhull_bench.py} times qhull on them (options QJ, the issue's anchor and
  * GraspIt!'s, and Qt Qx, the reference tests') if a python3 with scipy is found
  * ({@code HANDSIM_PYTHON}, {@code ~/.cache/handsim-py/bin/python}, or {@code python3}); else the
- * command is printed. Anchor (issue 12): qhull 1.6 / 8 / 31 ms; goals: whole quality ≤ qhull,
+ * command is printed. Anchor: qhull 1.6 / 8 / 31 ms; goals: whole quality ≤ qhull,
  * ε and force closure ≤ qhull / 20. Noise on shared cores: {@link #ROUNDS} rounds alternate our
  * measurements and qhull's; each figure is its best round's median, and the load average is printed.
  * Set 0 of each size is also written as contacts ({@code build/bench/grasp-NxM-set0.csv}, the
  * input of {@code handsim quality}) and timed alone, so {@code tools/quality-vs-bench} can set the
- * command's {@code time_us_median} beside the bench's figure (issue 15: honest timings).
+ * command's {@code time_us_median} beside the bench's figure (honest timings).
  */
 final class GraspBench implements BenchMain.Suite {
     static final int[] CONTACTS = {3, 6, 12};

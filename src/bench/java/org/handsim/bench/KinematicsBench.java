@@ -5,7 +5,7 @@ import org.handsim.kinematics.CoupledReach;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.InverseKinematics;
 
-/** ns per forward and inverse kinematics call (issue 2). */
+/** ns per forward and inverse kinematics call. */
 final class KinematicsBench implements BenchMain.Suite {
     @Override
     public void run() {

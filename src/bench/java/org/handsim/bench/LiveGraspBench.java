@@ -1,16 +1,16 @@
 package org.handsim.bench;
 
 import java.util.Locale;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
 
 /**
  * What the window's live grasp (gui.LiveGrasp) costs whom, on the three-finger mug grasp
  * (scenarios/mug-grasp.json, μ = 0.5, 8 cone edges): the simulation thread pays for one copy
- * ({@code GraspAssessment.Input.of}) per publication — set against one step of the same run
+ * ({@code HandModel.graspInput}) per publication — set against one step of the same run
  * (the whole run's time over its steps) —, the grasp thread for the evaluation of a copy
  * ({@code GraspAssessment.of(Input, …)}), at most 10 times a second.
  */
@@ -31,9 +31,9 @@ final class LiveGraspBench implements BenchMain.Suite {
         for (double at : new double[] {2.0, Double.NaN}) {
             HandModel m = Simulation.model(s, false);
             while (m.running() && (Double.isNaN(at) || m.time() < at)) m.step();
-            GraspAssessment.Input in = GraspAssessment.Input.of(m);
+            GraspAssessment.Input in = m.graspInput();
             String name = String.format(Locale.ROOT, "mug-grasp at t = %.1f s", m.time());
-            Bench.Result copy = Bench.measure(name + ": Input.of", () -> GraspAssessment.Input.of(m).contacts().size(), 2000, 15, 50);
+            Bench.Result copy = Bench.measure(name + ": Input.of", () -> m.graspInput().contacts().size(), 2000, 15, 50);
             Bench.Result eval = Bench.measure(name + ": GraspAssessment.of(Input)", () -> GraspAssessment.of(in, s.friction(), s.coneEdges()).holdMinN(),
                 3000, 15, 100);
             table.append(String.format(Locale.ROOT, "| %s | %d | %.2f µs | %.1f %% | %.2f ms |%n", name, in.contacts().size(),

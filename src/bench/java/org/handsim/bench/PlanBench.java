@@ -9,12 +9,13 @@ import org.handsim.plan.PlanSpec;
 import org.handsim.plan.TrialParameters;
 import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
-import org.handsim.sim.HandClearance;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
+import org.handsim.model.HandClearance;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 
 /**
- * Planning trials on one core (issue 13, item 4): the mug (vrml/objects/mug.wrl, 720
+ * Planning trials on one core: the mug (vrml/objects/mug.wrl, 720
  * triangles) and a 19 880-triangle sphere ({@code generate_models.py --big 20000}, generated
  * into a temporary folder when absent). Per object: the whole trial (approach, closing,
  * evaluation) over a fixed set of trial indices of a 1 000-trial plan (seed 1), and the approach
@@ -52,7 +53,7 @@ final class PlanBench implements BenchMain.Suite {
             }, 2000, 11, 300);
             long calls = next[0];
             table.append(String.format(Locale.ROOT, "| %s | %d | %.2f ms | %.2f ms | %.2f ms | %.0f | %.2f s | %.0f %% |%n",
-                f.getFileName(), org.handsim.sim.SceneGeometry.mesh(f, Scenario.DEFAULT_DIVISIONS, 1.0).triangleCount(),
+                f.getFileName(), org.handsim.scenario.SceneMeshes.mesh(f, Scenario.DEFAULT_DIVISIONS, 1.0).triangleCount(),
                 trial.medianMs(), approach.medianMs(), trial.medianMs() - approach.medianMs(), 1e3 / trial.medianMs(),
                 sim[0] / calls, 100 * fc[0] / calls));
         }

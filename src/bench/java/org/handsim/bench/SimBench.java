@@ -3,11 +3,11 @@ package org.handsim.bench;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.handsim.dynamics.HandDynamics;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.Simulation;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SceneGeometry;
+import org.handsim.model.Simulation;
 
 /**
  * The whole model in the process — trajectories, clutch, kinematics, collision and contacts,
@@ -19,7 +19,7 @@ import org.handsim.sim.Simulation;
  * finger collided and run through the dynamics every step) and both off (the full computation).
  * The results of all are checked equal. The last columns are the collision back end's counters
  * (SceneGeometry.Counter).
- * A second table prices friction (issue 12): the default setting with the scenes' μ = 0.5 (the
+ * A second table prices friction: the default setting with the scenes' μ = 0.5 (the
  * least-norm forces in the friction cones) against μ = 0 (the frictionless solve of before),
  * measured alternately in five rounds, the best round's median of each: measured one after the
  * other, whichever runs first after the warm-up came out up to 2× slower.

@@ -11,10 +11,10 @@ import jdk.jfr.Recording;
 import jdk.jfr.consumer.RecordedEvent;
 import jdk.jfr.consumer.RecordedFrame;
 import jdk.jfr.consumer.RecordingFile;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
 
 /**
  * Suite "sim-profile": where the time of the three-finger mug grasp goes. Runs the scene
@@ -35,20 +35,20 @@ final class SimProfileBench implements BenchMain.Suite {
 
     /** Category and the class/method prefixes that put a sample in it, first match wins. */
     private static final String[][] CATEGORIES = {
-        {"event location: first-touch bisection, tunnelling substeps", "org.handsim.sim.HandModel.touchesAt"},
+        {"event location: first-touch bisection, tunnelling substeps", "org.handsim.model.HandModel.touchesAt"},
         {"collision: tree walk (gathering near pairs)", "org.handsim.collision.TreeQuery.near"},
         {"collision: tree walk (full query)", "org.handsim.collision.TreeQuery.run"},
         {"collision: tests of near pairs", "org.handsim.collision.TreeQuery.testNear"},
         {"collision: patches and point contacts", "org.handsim.contact.ContactPatches"},
-        {"collision: displacement bound", "org.handsim.sim.SceneGeometry.displacement"},
-        {"collision: rest (sphere test, poses)", "org.handsim.sim.SceneGeometry", "org.handsim.collision"},
+        {"collision: displacement bound", "org.handsim.model.SceneGeometry.displacement"},
+        {"collision: rest (sphere test, poses)", "org.handsim.model.SceneGeometry", "org.handsim.collision"},
         {"dynamics (eq 8)", "org.handsim.dynamics"},
         {"contact forces (eq 11)", "org.handsim.contact.ContactForces"},
         {"kinematics", "org.handsim.kinematics"},
-        {"clutch", "org.handsim.sim.FingerClutch"},
-        {"trajectories", "org.handsim.sim.trajectory"},
-        {"making the model", "org.handsim.sim.Simulation.model", "org.handsim.sim.HandModel.<init>"},
-        {"HandModel itself (step, bookkeeping, contact sets)", "org.handsim.sim"},
+        {"clutch", "org.handsim.clutch.FingerClutch"},
+        {"trajectories", "org.handsim.trajectory"},
+        {"making the model", "org.handsim.model.Simulation.model", "org.handsim.model.HandModel.<init>"},
+        {"HandModel itself (step, bookkeeping, contact sets)", "org.handsim.model", "org.handsim.trace"},
     };
 
     @Override
@@ -83,7 +83,7 @@ final class SimProfileBench implements BenchMain.Suite {
             if (!e.getEventType().getName().equals("jdk.ExecutionSample") || e.getStackTrace() == null) continue;
             List<RecordedFrame> frames = e.getStackTrace().getFrames();
             boolean ours = false;
-            for (RecordedFrame f : frames) ours |= f.getMethod().getType().getName().startsWith("org.handsim.sim");
+            for (RecordedFrame f : frames) ours |= f.getMethod().getType().getName().startsWith("org.handsim.model");
             if (!ours) continue;   // JIT, GC and other threads
             total++;
             counts.merge(category(frames), 1, Integer::sum);

@@ -20,7 +20,7 @@ import org.handsim.vrml.VrmlScene;
  * (VRMLviewer_terrain_full_80k.wrl, 1.6 MB gzip ⇒ 7.1 MB, 84 231 triangles) and a generated
  * 1 000 000-triangle IndexedFaceSet (written to build/bench/, seed 345, never committed).
  * Also reported separately: loading alone (parse + Java3D scene) and the walk alone, and the
- * first (cold) load of the 1M file in this JVM. Goal (issue 4): the 1M file in under 2 s.
+ * first (cold) load of the 1M file in this JVM. Goal: the 1M file in under 2 s.
  */
 final class VrmlBench implements BenchMain.Suite {
     /** Cells of the generated grid: 500 x 1000 cells x 2 = 1 000 000 triangles. */

@@ -4,7 +4,7 @@ import java.util.Arrays;
 import org.handsim.math.SymmetricEigen3;
 import org.handsim.mesh.MeshWelder;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 
 /**
  * The mass, centre of mass and inertia tensor of a rigid body: an immutable value, SI units, in

@@ -10,8 +10,10 @@
  *       kept to rounding), into which the contact solve fits.</li>
  * </ul>
  *
- * <p>Units SI, frames stated per method (world unless said). Uses {@code contact},
- * {@code collision}, {@code mesh} and {@code math} only; never touches files, the console or
- * Swing.
+ * <p>Units SI, frames stated per method (world unless said). Never touches files, the console
+ * or Swing.
+ *
+ * <p>May use {@code contact}, {@code collision}, {@code mesh}, {@code math} and {@code text}
+ * (docs/DESIGN.md, "Modules").
  */
 package org.handsim.body;

@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
-import org.handsim.sim.GraspAssessment;
+import org.handsim.grasp.GraspAssessment;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.LegendItemCollection;
 import org.jfree.chart.axis.NumberAxis;
@@ -20,12 +20,17 @@ import org.jfree.data.xy.XYSeries;
 import org.jfree.data.xy.XYSeriesCollection;
 
 /**
- * The grasp against time (issue 12), two panels over one time axis: the Ferrari–Canny ε of the
+ * The grasp against time, two panels over one time axis: the Ferrari–Canny ε of the
  * grasp wrench space (top) and the smallest load the grasp holds over the six world directions
  * (bottom, with the hand's rated load, the largest hold reported, dashed), from
  * {@link GraspAssessment}s sampled along a run; the fingers' breakaways marked.
  */
 public final class GraspChart {
+    /**
+     * The ε axis: newtons, since every cone edge has a normal component of 1 N and the torques are
+     * divided by R (the wrench space's force unit, README "handsim quality").
+     */
+    static final String EPSILON_AXIS = "ε (N)";
     static final Color EPSILON = new Color(0x1f77b4), HOLD = new Color(0xd62728), CAP = new Color(0x7f7f7f);
 
     private GraspChart() {}
@@ -44,7 +49,7 @@ public final class GraspChart {
         }
         CombinedDomainXYPlot plot = new CombinedDomainXYPlot(new NumberAxis("time t (s)"));
         plot.setGap(10);
-        XYPlot top = panel(eps, "ε", EPSILON);
+        XYPlot top = panel(eps, EPSILON_AXIS, EPSILON);
         XYPlot bottom = panel(hold, "smallest hold (N)", HOLD);
         // nothing over the data: the rated load's and the breakaways' dashed lines are named in the legend
         bottom.addRangeMarker(new ValueMarker(capN, CAP, dashed(1.2f)));

@@ -4,7 +4,7 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.util.function.IntToDoubleFunction;
-import org.handsim.sim.Recorder;
+import org.handsim.trace.Recorder;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;

@@ -20,7 +20,7 @@ import org.jfree.data.xy.DefaultIntervalXYDataset;
 import org.jfree.data.xy.DefaultXYZDataset;
 
 /**
- * The two charts of {@code handsim plan} (issue 13): the distribution of the Ferrari–Canny ε
+ * The two charts of {@code handsim plan}: the distribution of the Ferrari–Canny ε
  * over the trials, and ε over the approach directions (a map of azimuth and elevation, each
  * cell coloured by the best ε of its trials). Built from binned counts and a grid, so their
  * cost does not grow with the number of trials.

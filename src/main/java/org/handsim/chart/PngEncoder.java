@@ -2,6 +2,8 @@ package org.handsim.chart;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
+import java.awt.image.SinglePixelPackedSampleModel;
+import java.awt.image.WritableRaster;
 import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.zip.CRC32;
@@ -27,7 +29,10 @@ public final class PngEncoder {
 
     private PngEncoder() {}
 
-    /** The PNG file of an image of type {@code TYPE_INT_ARGB} or {@code TYPE_INT_RGB} (others are converted first). */
+    /**
+     * The PNG file of an image of type {@code TYPE_INT_ARGB} or {@code TYPE_INT_RGB} (others are
+     * converted first), a sub-image ({@link BufferedImage#getSubimage}) included: its own pixels.
+     */
     public static byte[] encode(BufferedImage image) {
         BufferedImage img = image;
         if (img.getType() != BufferedImage.TYPE_INT_ARGB && img.getType() != BufferedImage.TYPE_INT_RGB) {
@@ -37,13 +42,21 @@ public final class PngEncoder {
             g.dispose();
         }
         int w = img.getWidth(), h = img.getHeight();
-        int[] px = ((DataBufferInt) img.getRaster().getDataBuffer()).getData();
+        // pixel (x, y) is px[base + y * scan + x]: a sub-image shares its parent's array, with the
+        // parent's row length and an offset to its corner
+        WritableRaster raster = img.getRaster();
+        DataBufferInt data = (DataBufferInt) raster.getDataBuffer();
+        int[] px = data.getData();
+        int scan = ((SinglePixelPackedSampleModel) raster.getSampleModel()).getScanlineStride();
+        int base = data.getOffset() - raster.getSampleModelTranslateY() * scan - raster.getSampleModelTranslateX();
         boolean alpha = false;
         if (img.getType() == BufferedImage.TYPE_INT_ARGB) {
-            for (int p : px) {
-                if (p >>> 24 != 0xff) {
-                    alpha = true;
-                    break;
+            for (int y = 0; y < h && !alpha; y++) {
+                for (int x = 0, o = base + y * scan; x < w; x++) {
+                    if (px[o + x] >>> 24 != 0xff) {
+                        alpha = true;
+                        break;
+                    }
                 }
             }
         }
@@ -62,7 +75,7 @@ public final class PngEncoder {
         ByteArrayOutputStream idat = new ByteArrayOutputStream(64 * 1024);
         try {
             for (int y = 0; y < h; y++) {
-                int o = y * w;
+                int o = base + y * scan;
                 for (int x = 0, i = 1; x < w; x++) {
                     int p = px[o + x];
                     row[i++] = (byte) (p >> 16);
@@ -84,8 +97,8 @@ public final class PngEncoder {
         } finally {
             z.end();
         }
-        byte[] data = idat.toByteArray();
-        chunk(out, "IDAT", data, data.length);
+        byte[] compressed = idat.toByteArray();
+        chunk(out, "IDAT", compressed, compressed.length);
         chunk(out, "IEND", new byte[0], 0);
         return out.toByteArray();
     }

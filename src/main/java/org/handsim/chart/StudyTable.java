@@ -1,6 +1,6 @@
 package org.handsim.chart;
 
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Path;
@@ -9,7 +9,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.handsim.util.AtomicFile;
+import org.handsim.files.AtomicFile;
 
 /**
  * The result of one study: rows of numbers (the CSV behind a chart) and what the chart plots.

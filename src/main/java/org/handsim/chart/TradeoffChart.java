@@ -58,6 +58,8 @@ public final class TradeoffChart {
         LabelPlacingRenderer r = new LabelPlacingRenderer();
         List<String> settings = sharedSettings(t);   // non-null: one marker shape per setting, no point labels
         List<List<String>> labels = new ArrayList<>();
+        List<String> legendNames = new ArrayList<>();
+        List<Boolean> hollow = new ArrayList<>();
         int s = 0;
         for (String name : t.series()) {
             List<StudyTable.Row> rows = t.rows(name);
@@ -84,12 +86,19 @@ public final class TradeoffChart {
             for (int i : onFront) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
             Color c = PALETTE[s % PALETTE.length];
             int pi = data.getSeriesCount();
+            // a series drawn exactly over an earlier one (the cube's centre and normal errors,
+            // both 0 on the floor) would be hidden under it: it gets a larger hollow marker round
+            // the other's, and its legend entry says whose points it shares
+            String under = coveredBy(data, points);
             data.addSeries(points);
             labels.add(pointLabels);
             r.setSeriesPaint(pi, c);
             r.setSeriesLinesVisible(pi, false);
             r.setSeriesShapesVisible(pi, true);
-            r.setSeriesShape(pi, new Ellipse2D.Double(-4, -4, 8, 8));
+            r.setSeriesShape(pi, under == null ? new Ellipse2D.Double(-4, -4, 8, 8) : HOLLOW);
+            if (under != null) r.setSeriesShapesFilled(pi, false);
+            legendNames.add(under == null ? name : name + " (the same points as " + under + ")");
+            hollow.add(under != null);
             r.setSeriesItemLabelsVisible(pi, true);
             data.addSeries(front);
             labels.add(List.of());
@@ -117,10 +126,15 @@ public final class TradeoffChart {
         plot.setRangeGridlinePaint(new Color(0xdddddd));
         LegendItemCollection legend = new LegendItemCollection();
         for (int i = 0; i < t.series().size(); i++) {
-            LegendItem li = new LegendItem(t.series().get(i), null, null, null, new Ellipse2D.Double(-4, -4, 8, 8), PALETTE[i % PALETTE.length]);
-            legend.add(li);
+            Color c = PALETTE[i % PALETTE.length];
+            legend.add(hollow.get(i)
+                ? new LegendItem(legendNames.get(i), null, null, null, true, HOLLOW, false, Color.WHITE, true, c, new BasicStroke(1.5f), false,
+                    new java.awt.geom.Line2D.Double(), new BasicStroke(), Color.WHITE)
+                : new LegendItem(legendNames.get(i), null, null, null, new Ellipse2D.Double(-4, -4, 8, 8), c));
         }
-        legend.add(PaperCharts.line("Pareto front (nothing both faster and more exact); lower left is better", Color.GRAY, DASHED));
+        // y is an error in some studies and a count of work in others (the k-DOPs' triangle tests):
+        // the front is what no other point beats on both axes
+        legend.add(PaperCharts.line(PARETO_LEGEND, Color.GRAY, DASHED));
         if (settings != null) {
             for (int i = 0; i < settings.size(); i++) {
                 legend.add(new LegendItem(settings.get(i), null, null, null, SHAPES[i], Color.DARK_GRAY));
@@ -134,6 +148,34 @@ public final class TradeoffChart {
         chart.setBackgroundPaint(Color.WHITE);
         chart.setPadding(new RectangleInsets(4, 8, 4, 28));   // the last x tick label is centred on the axis end
         return chart;
+    }
+
+    /** The legend entry of the fronts: true whatever the y axis measures. */
+    static final String PARETO_LEGEND = "Pareto front (no other point both faster and lower); lower left is better";
+
+    /** The marker of a series drawn over an earlier one's points: hollow, around the other's. */
+    static final java.awt.Shape HOLLOW = new java.awt.Rectangle(-7, -7, 14, 14);
+
+    /**
+     * The name of an earlier series of {@code data} (its point series, not fronts) that has every
+     * point of {@code s} (the same coordinates as drawn), or null.
+     */
+    static String coveredBy(XYSeriesCollection data, XYSeries s) {
+        if (s.getItemCount() == 0) return null;
+        for (int i = 0; i < data.getSeriesCount(); i++) {
+            XYSeries o = data.getSeries(i);
+            if (o.getKey().toString().endsWith(" (Pareto front)")) continue;
+            boolean all = true;
+            for (int j = 0; j < s.getItemCount() && all; j++) {
+                boolean found = false;
+                for (int k = 0; k < o.getItemCount() && !found; k++) {
+                    found = o.getX(k).doubleValue() == s.getX(j).doubleValue() && o.getY(k).doubleValue() == s.getY(j).doubleValue();
+                }
+                all = found;
+            }
+            if (all) return o.getKey().toString();
+        }
+        return null;
     }
 
     static final BasicStroke DASHED = new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1f, new float[] {6f, 4f}, 0f);

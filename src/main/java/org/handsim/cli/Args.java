@@ -7,13 +7,13 @@ import java.nio.file.Path;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.InputRanges;
 import java.util.List;
-import org.handsim.sim.NotFound;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.UnitRule;
-import org.handsim.util.Decimal;
-import org.handsim.util.InputFile;
-import org.handsim.util.OutputSet;
-import org.handsim.util.SafeText;
+import org.handsim.scenario.NotFound;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.UnitRule;
+import org.handsim.text.Decimal;
+import org.handsim.files.InputFile;
+import org.handsim.files.OutputSet;
+import org.handsim.text.SafeText;
 
 /** Parsing of the comma-separated numeric arguments the sub-commands share. */
 final class Args {
@@ -148,7 +148,40 @@ final class Args {
             });
         } catch (OutputSet.Refused e) {
             throw CliError.usage("handsim: " + option + " " + dir + ": " + e.getMessage());
+        } catch (java.nio.file.FileSystemException e) {
+            throw cannotWrite(option, dir, e);
         }
+    }
+
+    /**
+     * The single output file of {@code option} ({@link AtomicFile}); exit 2 naming the option and
+     * the path when the file system will not have it there (a name too long, no permission, a
+     * read-only file system).
+     */
+    static org.handsim.files.AtomicFile atomicOutput(String option, Path file) throws IOException {
+        try {
+            return new org.handsim.files.AtomicFile(file);
+        } catch (java.nio.file.FileSystemException e) {
+            throw cannotWrite(option, file, e);
+        }
+    }
+
+    /** Exit 2: the file system refused to make {@code path} (or a folder on its way), with its reason and, for a name too long, the name's length. */
+    static CliError cannotWrite(String option, Path path, java.nio.file.FileSystemException e) {
+        String reason = e.getReason() != null ? e.getReason() : e.getClass().getSimpleName();
+        String more = "";
+        if ("File name too long".equals(reason)) {
+            for (Path part : path) {
+                int bytes = part.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
+                if (bytes > 255) {
+                    more = ": the name '" + SafeText.quote(part.toString()) + "' has " + bytes + " bytes, more than the 255 a name may have";
+                    break;
+                }
+            }
+        }
+        String p = path.toString();   // the user's own path, whole unless absurdly long
+        return CliError.usage("handsim: " + option + " '" + (p.length() <= 200 ? SafeText.escape(p) : SafeText.quote(p)) + "' cannot be written: "
+            + reason + more);
     }
 
     /** Exit 2 if an output names the same file as the input (links resolved): the input would be overwritten. */

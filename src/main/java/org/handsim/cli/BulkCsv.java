@@ -1,11 +1,12 @@
 package org.handsim.cli;
 
-import org.handsim.sim.NotFound;
+import org.handsim.text.SafeText;
+import org.handsim.scenario.NotFound;
 import java.io.IOException;
 import java.io.Writer;
 import java.nio.file.Path;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.CsvInput;
+import org.handsim.files.AtomicFile;
+import org.handsim.files.CsvInput;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
@@ -38,7 +39,7 @@ final class BulkCsv {
         Args.notTheInput(input, "--input", output, "--output");
         int rows = 0;
         int inColumns = inHeader.split(",").length;
-        try (CsvInput in = new CsvInput(input, inHeader); AtomicFile af = new AtomicFile(output)) {
+        try (CsvInput in = new CsvInput(input, inHeader); AtomicFile af = Args.atomicOutput("--output", output)) {
             Writer w = af.writer();
             w.write(inHeader + "," + addedHeader + "\n");
             StringBuilder sb = new StringBuilder(256);
@@ -53,7 +54,7 @@ final class BulkCsv {
         } catch (CsvInput.CsvException e) {
             throw CliError.usage("handsim: " + e.getMessage());
         }
-        spec.commandLine().getErr().println("handsim " + command + ": " + rows + " rows written to " + output);
+        spec.commandLine().getErr().println("handsim " + command + ": " + rows + " rows written to " + SafeText.escape(output.toString()));
         return 0;
     }
 

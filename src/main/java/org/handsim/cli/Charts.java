@@ -3,7 +3,7 @@ package org.handsim.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import org.handsim.chart.ChartSet;
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 
 /**
  * How a command ends its {@link ChartSet}: when the charts cannot be drawn it prints the one

@@ -1,8 +1,8 @@
 package org.handsim.cli;
 
-import org.handsim.sim.NotFound;
-import org.handsim.util.SafeText;
-import org.handsim.util.Decimal;
+import org.handsim.scenario.NotFound;
+import org.handsim.text.SafeText;
+import org.handsim.text.Decimal;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -16,38 +16,38 @@ import org.handsim.collision.TreeQuery;
 import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.SteadyTiming;
+import org.handsim.text.JsonWriter;
+import org.handsim.process.SteadyTiming;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import org.handsim.sim.MeshFiles;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.sim.UnitRule;
+import org.handsim.scenario.MeshFiles;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.scenario.UnitRule;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 
 /**
- * {@code handsim collide A B [--units auto|mm|cm|m] [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--repeat N]}:
+ * {@code handsim collide A B [--units auto|mm|cm|m] [--pose-b tx,ty,tz,rx,ry,rz] [--k 18] [--timing [--repeat N]]}:
  * the contact geometry of two objects (VRML97, OBJ or STL; paper Section IV, first two steps).
  */
 @Command(name = "collide", mixinStandardHelpOptions = true,
     description = {"Intersects two objects (VRML97 .wrl, OBJ .obj or STL .stl) with k-DOP trees (B placed by --pose-b).",
         "Prints {\"intersecting\":bool,\"pairs\":n,\"segments\":n,",
         "  \"patches\":[{\"center\":[x,y,z],\"normal\":[x,y,z],\"area_m2\":a,\"pairs\":n}],",
-        "  \"counters\":{\"node_tests\":n,\"tri_tests\":n},\"build_ms\":t,\"query_us_median\":t}",
+        "  \"counters\":{\"node_tests\":n,\"tri_tests\":n}}",
         "pairs: intersecting triangle pairs; segments: their intersection segments;",
         "patches: connected sets of segments, one point contact each: centre of the",
         "bounding box, unit normal out of B (from B's triangles), area estimate;",
         "A's frame, metres (each file's coordinates times its unit, --units).",
-        "build_ms: both trees; query_us_median: the tree query",
-        "including B's placement, once the JIT has compiled it: warm-up of at least",
-        "0.5 s and 10 000 queries, then until the JIT has been idle for 0.25 s (at",
-        "most 5 s), then the median of --repeat timed batches of about 1 ms each",
-        "(util.SteadyTiming, the scheme of gradle bench).",
+        "--timing adds \"build_ms\":t (both trees) and \"query_us_median\":t: the tree",
+        "query including B's placement, once the JIT has compiled it: warm-up of at",
+        "least 0.5 s and 10 000 queries, then until the JIT has been idle for 0.25 s",
+        "(at most 5 s), then the median of --repeat timed batches of about 1 ms each",
+        "(process.SteadyTiming, the scheme of gradle bench).",
         "At most 100 000 intersecting triangle pairs (coincident meshes: exit 2).",
         "Exit codes: 0 ok, 2 bad arguments, 3 a file cannot be loaded."})
 public final class CollideCommand implements Callable<Integer> {
@@ -70,8 +70,11 @@ public final class CollideCommand implements Callable<Integer> {
     @Option(names = "--k", paramLabel = "K", description = "k of the k-DOPs: 6, 14, 18 (default) or 26")
     String kText = "18";
 
-    @Option(names = "--repeat", paramLabel = "N", description = {"timed batches after the warm-up (1..10000,", "default " + DEFAULT_REPEAT + "); the median per query is reported"})
-    String repeatText = String.valueOf(DEFAULT_REPEAT);
+    @Option(names = "--timing", description = "also time the tree building and the query (build_ms, query_us_median; seconds of warm-up)")
+    boolean timing;
+
+    @Option(names = "--repeat", paramLabel = "N", description = {"timed batches of --timing after the warm-up", "(1..10000, default " + DEFAULT_REPEAT + "); the median per query is reported"})
+    String repeatText;
 
     /**
      * Most intersecting triangle pairs collide reports: 100 000. Touching objects meet in far
@@ -96,7 +99,8 @@ public final class CollideCommand implements Callable<Integer> {
         boolean ok = false;
         for (int s : Kdop.SUPPORTED_K) ok |= s == k;
         if (!ok) throw CliError.usage("handsim: --k must be 6, 14, 18 or 26, got " + kText);
-        int repeat = integer("--repeat", repeatText);
+        if (repeatText != null && !timing) throw CliError.usage("handsim: --repeat needs --timing");
+        int repeat = repeatText == null ? DEFAULT_REPEAT : integer("--repeat", repeatText);
         if (repeat < 1 || repeat > 10_000) throw CliError.usage("handsim: --repeat must be in 1..10000, got " + repeatText);
         Scenario.Units chosen = Args.units(units);
         StringWriter notices = new StringWriter();   // said once both files have loaded: an error stays one line
@@ -108,7 +112,7 @@ public final class CollideCommand implements Callable<Integer> {
         java.io.PrintWriter err = spec.commandLine().getErr();
         Map<String, Object> json;
         try {
-            json = collide(a, b, pose, k, repeat, a.triangleCount() + (long) b.triangleCount() > PROGRESS_TRIANGLES ? err : null);
+            json = collide(a, b, pose, k, timing ? repeat : 0, a.triangleCount() + (long) b.triangleCount() > PROGRESS_TRIANGLES ? err : null);
         } catch (CollisionResult.TooManyPairsException e) {
             throw CliError.usage("handsim collide: " + fileA + " and " + fileB + " at --pose-b " + poseB + " intersect in " + e.getMessage()
                 + " (coincident or deeply interpenetrating meshes; the limit of collide, whose contact patches join every pair's"
@@ -164,7 +168,8 @@ public final class CollideCommand implements Callable<Integer> {
     /**
      * The command's JSON object for two meshes (the part that does not read files).
      *
-     * @param repeat timed batches after the warm-up ({@link SteadyTiming}); the median per query is reported
+     * @param repeat timed batches after the warm-up ({@link SteadyTiming}); the median per query is
+     *               reported; 0: not timed (no {@code build_ms}, {@code query_us_median})
      * @param progress where each phase is announced (large meshes), or null
      * @throws CollisionResult.TooManyPairsException beyond {@link #MAX_PAIRS} intersecting pairs
      */
@@ -175,8 +180,8 @@ public final class CollideCommand implements Callable<Integer> {
         double buildMs = (System.nanoTime() - t0) / 1e6;
         TreeQuery q = new TreeQuery();
         CollisionResult r = new CollisionResult().limitPairs(MAX_PAIRS);
-        say(progress, String.format(java.util.Locale.ROOT, "trees built in %.1f s; querying and timing the query", buildMs / 1000));
-        double median = SteadyTiming.median(() -> q.collide(ta, tb, pose, r).pairCount() + r.nodeTests, repeat).medianMicros();
+        say(progress, String.format(java.util.Locale.ROOT, "trees built in %.1f s; querying%s", buildMs / 1000, repeat > 0 ? " and timing the query" : ""));
+        double median = repeat > 0 ? SteadyTiming.median(() -> q.collide(ta, tb, pose, r).pairCount() + r.nodeTests, repeat).medianMicros() : 0;
         q.collide(ta, tb, pose, r);
         say(progress, r.pairCount() + " intersecting pairs; joining their segments into patches");
         ContactPatches cp = new ContactPatches();
@@ -199,8 +204,10 @@ public final class CollideCommand implements Callable<Integer> {
         out.put("segments", r.segmentCount());
         out.put("patches", patches);
         out.put("counters", counters);
-        out.put("build_ms", Math.round(buildMs * 1000) / 1000.0);
-        out.put("query_us_median", Math.round(median * 100) / 100.0);
+        if (repeat > 0) {
+            out.put("build_ms", Math.round(buildMs * 1000) / 1000.0);
+            out.put("query_us_median", Math.round(median * 100) / 100.0);
+        }
         return out;
     }
 }

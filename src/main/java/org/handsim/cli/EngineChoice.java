@@ -32,8 +32,8 @@ record EngineChoice(String name, TrialEngine engine, int threads, String url) {
      * @param threadsOption   --threads, or null
      * @param defaultThreads  the threads when --threads is not given
      */
-    /** Most threads of a {@code local[N]} master (as {@code --threads}, {@link org.handsim.sim.Sweep#MAX_THREADS}). */
-    static final int MAX_LOCAL_THREADS = org.handsim.sim.Sweep.MAX_THREADS;
+    /** Most threads of a {@code local[N]} master (as {@code --threads}, {@link org.handsim.scenario.Sweep#MAX_THREADS}). */
+    static final int MAX_LOCAL_THREADS = org.handsim.scenario.Sweep.MAX_THREADS;
     /** Time allowed to open a TCP connection to each address of a {@code spark://} master, ms. */
     static final int PROBE_MS = 5000;
 
@@ -100,16 +100,16 @@ record EngineChoice(String name, TrialEngine engine, int threads, String url) {
     }
 
     static EngineChoice of(String name, String master, Integer threadsOption, int defaultThreads) {
-        if (threadsOption != null && (threadsOption < 1 || threadsOption > org.handsim.sim.Sweep.MAX_THREADS)) {
-            throw CliError.usage("handsim: --threads must be in [1, " + org.handsim.sim.Sweep.MAX_THREADS + "], got " + threadsOption);
+        if (threadsOption != null && (threadsOption < 1 || threadsOption > org.handsim.scenario.Sweep.MAX_THREADS)) {
+            throw CliError.usage("handsim: --threads must be in [1, " + org.handsim.scenario.Sweep.MAX_THREADS + "], got " + threadsOption);
         }
         if (master != null && !name.equals("spark")) throw CliError.usage("handsim: --master needs --engine spark");
         if (master != null) {   // before Spark is looked for: a bad master is refused without loading it
             String why = masterProblem(master);
-            if (why != null) throw CliError.usage("handsim: --master '" + org.handsim.util.SafeText.quote(master) + "' " + why);
+            if (why != null) throw CliError.usage("handsim: --master '" + org.handsim.text.SafeText.quote(master) + "' " + why);
             why = unreachable(master);
             if (why != null) {
-                throw CliError.usage("handsim: --master " + org.handsim.util.SafeText.quote(master) + ": cannot connect (" + why
+                throw CliError.usage("handsim: --master " + org.handsim.text.SafeText.quote(master) + ": cannot connect (" + why
                     + "); is the cluster running? (tools/spark-cluster start prints its URL)");
             }
         }

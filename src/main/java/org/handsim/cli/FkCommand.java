@@ -1,17 +1,17 @@
 package org.handsim.cli;
 
-import org.handsim.util.SafeText;
-import org.handsim.util.Decimal;
+import org.handsim.text.SafeText;
+import org.handsim.text.Decimal;
 import java.io.IOException;
-import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.hand.InputRanges;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -32,8 +32,7 @@ public final class FkCommand implements Callable<Integer> {
 
     @Spec CommandSpec spec;
 
-    @Option(names = "--finger", paramLabel = "K", description = "finger 1, 2 or 3")
-    Integer finger;
+    @Mixin FingerOptions shared;
 
     @Option(names = "--joints", paramLabel = "t1,t2,t3", description = "joint angles in radians (finger 3: t1 = 0)")
     String joints;
@@ -44,17 +43,11 @@ public final class FkCommand implements Callable<Integer> {
     @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the output: finger base {k0} (default) or palm {P}")
     String frame;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
-    Path input;
-
-    @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
-    Path output;
-
     @Override
     public Integer call() throws IOException {
         boolean palm = Args.palmFrame(frame);
-        if (input != null || output != null) return bulk(palm);
-        int k = Args.finger(finger);
+        if (shared.bulk()) return bulk(palm);
+        int k = Args.finger(shared.finger);
         double[] j;
         if ((joints == null) == (counts == null)) throw CliError.usage("handsim: give exactly one of --joints or --counts");
         if (joints != null) {
@@ -92,7 +85,7 @@ public final class FkCommand implements Callable<Integer> {
         FingerKinematics[] fks = {FingerKinematics.of(1), FingerKinematics.of(2), FingerKinematics.of(3)};
         double[] frames = new double[FingerKinematics.FRAMES_LENGTH];
         double[] j = new double[3];
-        return BulkCsv.run(spec, "fk", input, output, finger != null || joints != null || counts != null,
+        return BulkCsv.run(spec, "fk", shared.input, shared.output, shared.finger != null || joints != null || counts != null,
             "--finger, --joints or --counts", IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) j[i] = in.number(i + 1);

@@ -9,16 +9,16 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.GraspChart;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
-import org.handsim.sim.SimulationException;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.Decimal;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.OutputSet;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
+import org.handsim.model.SimulationException;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.Decimal;
+import org.handsim.text.JsonWriter;
+import org.handsim.files.OutputSet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -33,12 +33,16 @@ import picocli.CommandLine.Model.CommandSpec;
         "  {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
         "   \"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,",
         "   \"volume\":v,\"hold_N\":{\"+x\":F,\"-x\":F,\"+y\":F,\"-y\":F,\"+z\":F,\"-z\":F},",
-        "   \"hold_min_N\":F,\"torque_residual_Nm\":[r1,r2,r3]}",
+        "   \"hold_min_N\":F,\"torque_residual_Nm\":[r1,r2,r3],\"center_m\":[x,y,z],",
+        "   \"radius_m\":R,\"friction\":mu,\"cone_edges\":m}",
         "World frame; normals point into the object; epsilon and volume of the grasp",
-        "wrench space (torques divided by the object's radius R); hold_N: the largest",
-        "force through the object's centroid the grasp holds with every joint within",
-        "its limit, at most the hand's rated 58.84 N; torque_residual_Nm: per finger",
-        "how far its contact forces miss its joint torques (0: a static equilibrium).",
+        "wrench space (torques about center_m, the object's centroid, divided by",
+        "radius_m, its largest centroid-to-vertex distance; cones of friction and",
+        "cone_edges: handsim quality given this output computes the same epsilon);",
+        "hold_N: the largest force through the object's centroid the grasp holds",
+        "with every joint within its limit, at most the hand's rated 58.84 N;",
+        "torque_residual_Nm: per finger how far its contact forces miss its joint",
+        "torques (0: a static equilibrium).",
         "--chart BASE also evaluates the grasp every --every seconds along the run and",
         "writes BASE.png, BASE.svg (epsilon and the smallest hold against time) and",
         "BASE.csv."})
@@ -91,18 +95,18 @@ public final class GraspCommand implements Callable<Integer> {
         List<GraspAssessment> samples = new ArrayList<>();
         try {
             double next = 0;
-            if (chart != null) { samples.add(GraspAssessment.of(model, mu, m)); next = interval; }
+            if (chart != null) { samples.add(GraspAssessment.of(model.graspInput(), mu, m)); next = interval; }
             while (model.running() && model.time() < until - 1e-9 * scenario.dt()) {
                 model.step();
                 if (chart != null && model.time() >= next - 1e-9 * scenario.dt()) {
-                    samples.add(GraspAssessment.of(model, mu, m));
+                    samples.add(GraspAssessment.of(model.graspInput(), mu, m));
                     while (next <= model.time() + 1e-9 * scenario.dt()) next += interval;
                 }
             }
         } catch (SimulationException e) {
             throw new CliError(CliError.NUMERIC, "handsim: " + scenario.file() + ": run stopped: " + e.getMessage() + " (no output written)");
         }
-        GraspAssessment g = GraspAssessment.of(model, mu, m);
+        GraspAssessment g = GraspAssessment.of(model.graspInput(), mu, m);
         if (chart != null) {
             if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
             writeChart(spec.commandLine().getErr(), chart, samples, model, scenario.name());

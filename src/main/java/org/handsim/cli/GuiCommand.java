@@ -1,15 +1,15 @@
 package org.handsim.cli;
 
-import org.handsim.sim.NotFound;
+import org.handsim.scenario.NotFound;
 import java.awt.GraphicsEnvironment;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.handsim.gui.GuiLauncher;
 import org.handsim.gui.Script;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.util.InputFile;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.files.InputFile;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -63,7 +63,7 @@ public final class GuiCommand implements Callable<Integer> {
                 speedFactor = 0.0;
             } else {
                 try {
-                    speedFactor = org.handsim.util.Decimal.parse(speed);
+                    speedFactor = org.handsim.text.Decimal.parse(speed);
                 } catch (NumberFormatException e) {
                     speedFactor = Double.NaN;
                 }

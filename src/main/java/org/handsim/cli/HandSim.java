@@ -7,10 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.handsim.util.CommandContext;
-import org.handsim.util.Decimal;
-import org.handsim.util.InputFile;
-import org.handsim.util.SafeText;
+import org.handsim.process.CommandContext;
+import org.handsim.text.Decimal;
+import org.handsim.files.InputFile;
+import org.handsim.text.SafeText;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -53,9 +53,9 @@ public final class HandSim implements Runnable {
         SwingCommand.class,
         QualityCommand.class,
         GraspCommand.class,
-        PlanCommand.class,
-        ServerCommand.class
-        // sub-commands register here, one line each
+        PlanCommand.class
+        // sub-commands register here, one line each; the launcher adds the resident server's
+        // own (handsim server), which sits above this package (execute(List, String...))
     );
 
     /** Columns of every help text. */
@@ -72,15 +72,35 @@ public final class HandSim implements Runnable {
 
     /** Runs the command line and returns the exit code (does not call System.exit). */
     public static int execute(String... args) {
-        return execute(new PrintWriter(System.out, true), new PrintWriter(System.err, true), args);
+        return execute(List.of(), args);
+    }
+
+    /**
+     * Runs the command line with {@code more} sub-commands after {@link #SUBCOMMANDS} (the
+     * launcher's {@code handsim server}, whose package sits above this one) and returns the exit
+     * code.
+     */
+    public static int execute(List<Class<?>> more, String... args) {
+        return execute(new PrintWriter(System.out, true), new PrintWriter(System.err, true), more, args);
     }
 
     /** Runs the command line with the given streams and returns the exit code. */
     public static int execute(PrintWriter out, PrintWriter err, String... args) {
+        return execute(out, err, List.of(), args);
+    }
+
+    /** Runs the command line with the given streams and {@code more} sub-commands, and returns the exit code. */
+    public static int execute(PrintWriter out, PrintWriter err, List<Class<?>> more, String... args) {
         int code;
         try {
+            String bytes = ArgumentBytes.problem(args);
+            if (bytes != null) {
+                err.println(SafeText.line(bytes));
+                err.flush();
+                return CliError.USAGE;
+            }
             prepareHeadless(args.length > 0 ? args[0] : null);
-            CommandLine cl = commandLine(args.length > 0 ? args[0] : null);
+            CommandLine cl = commandLine(args.length > 0 ? args[0] : null, more);
             cl.setOut(out);
             cl.setErr(err);
             cl.setParameterExceptionHandler((ex, a) -> {
@@ -99,7 +119,7 @@ public final class HandSim implements Runnable {
 
     /** The command line with every sub-command and the help layout. */
     static CommandLine commandLine() {
-        return commandLine(null);
+        return commandLine(null, List.of());
     }
 
     /**
@@ -108,20 +128,22 @@ public final class HandSim implements Runnable {
      * picocli reads every registered command's annotations, which for all of them was a good part
      * of a short command's start-up — else, or if the convention does not hold, with every one.
      */
-    static CommandLine commandLine(String first) {
+    static CommandLine commandLine(String first, List<Class<?>> more) {
         CommandLine cl = new CommandLine(new HandSim());
+        List<Class<?>> all = new ArrayList<>(SUBCOMMANDS);
+        all.addAll(more);
         Class<?> only = null;
-        for (Class<?> c : SUBCOMMANDS) {
+        for (Class<?> c : all) {
             if (first != null && (first.toLowerCase(java.util.Locale.ROOT) + "command").equals(c.getSimpleName().toLowerCase(java.util.Locale.ROOT))) only = c;
         }
         if (only != null) {
             cl.addSubcommand(only);
-            if (!cl.getSubcommands().containsKey(first)) return commandLine(null);
+            if (!cl.getSubcommands().containsKey(first)) return commandLine(null, more);
         } else {
-            for (Class<?> c : SUBCOMMANDS) cl.addSubcommand(c);
+            for (Class<?> c : all) cl.addSubcommand(c);
             cl.addSubcommand("help", new CommandLine.HelpCommand());   // handsim help CMD
         }
-        // numbers as people write them (util.Decimal.parse): '0d', '1f', 'NaN', '0x1p3' are refused
+        // numbers as people write them (text.Decimal.parse): '0d', '1f', 'NaN', '0x1p3' are refused
         CommandLine.ITypeConverter<Double> number = text -> {
             try {
                 return Decimal.parse(text);
@@ -215,6 +237,16 @@ public final class HandSim implements Runnable {
      * and code; anything else exit 1, naming the error and a log file with its stack trace.
      */
     static int failure(PrintWriter err, Throwable ex) {
+        java.io.StringWriter line = new java.io.StringWriter();
+        int code = report(new PrintWriter(line), ex);
+        String text = line.toString().stripTrailing();
+        String unpack = org.handsim.scenario.Home.unpackFailure();   // the cause behind a missing model, when the jar's were not unpacked
+        if (!text.isEmpty()) err.println(unpack == null ? text : text + " (" + SafeText.line(unpack) + ")");
+        err.flush();
+        return code;
+    }
+
+    private static int report(PrintWriter err, Throwable ex) {
         // a command the resident server was told to stop: whatever its unwinding threw, no message
         // and no log (the client exits as the signal that stopped it says, as a stopped JVM does)
         if (CommandContext.cancelled()) return CliError.STOPPED;
@@ -226,7 +258,7 @@ public final class HandSim implements Runnable {
             err.flush();
             return ((CliError) t).exitCode();
         }
-        if (t instanceof org.handsim.util.JsonWriter.NonFiniteException) {   // an input beyond what the computation represents
+        if (t instanceof org.handsim.text.JsonWriter.NonFiniteException) {   // an input beyond what the computation represents
             err.println(SafeText.line("handsim: " + t.getMessage() + ": an input is beyond the range the computation can represent;"
                 + " nothing was written"));
             err.flush();
@@ -237,10 +269,15 @@ public final class HandSim implements Runnable {
             err.flush();
             return CliError.USAGE;
         }
-        if (t instanceof org.handsim.util.OutputSet.Refused) {   // an output folder the set may not be written into: exit 2
+        if (t instanceof org.handsim.files.OutputSet.Refused) {   // an output folder the set may not be written into: exit 2
             err.println(SafeText.line("handsim: " + t.getMessage()));
             err.flush();
             return CliError.USAGE;
+        }
+        if (t instanceof org.handsim.scenario.ScenarioException) {   // a scenario's object or model that cannot be loaded: exit 3, as run says it
+            err.println(SafeText.line(t.getMessage()));
+            err.flush();
+            return CliError.LOAD;
         }
         if (t instanceof InputFile.InputFileException) {   // an input that is not a readable regular UTF-8 file: exit 3
             err.println(SafeText.line("handsim: " + t.getMessage()));

@@ -1,9 +1,8 @@
 package org.handsim.cli;
 
-import org.handsim.util.SafeText;
-import org.handsim.util.Decimal;
+import org.handsim.text.SafeText;
+import org.handsim.text.Decimal;
 import java.io.IOException;
-import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
@@ -12,8 +11,9 @@ import org.handsim.dynamics.HandDynamics;
 import org.handsim.dynamics.LinkChain;
 import org.handsim.hand.HandDescription;
 import org.handsim.hand.InputRanges;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -40,8 +40,7 @@ public final class IdCommand implements Callable<Integer> {
 
     @Spec CommandSpec spec;
 
-    @Option(names = "--finger", paramLabel = "K", description = "finger 1, 2 or 3")
-    Integer finger;
+    @Mixin FingerOptions shared;
 
     @Option(names = "--q", paramLabel = "q1,q2,q3", description = "joint angles, rad")
     String q;
@@ -59,12 +58,6 @@ public final class IdCommand implements Callable<Integer> {
         description = "le: Lagrange-Euler (default, the paper's algorithm); ne: recursive Newton-Euler")
     String method;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
-    Path input;
-
-    @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
-    Path output;
-
     @Override
     public Integer call() throws IOException {
         HandDynamics.Method m;
@@ -72,14 +65,14 @@ public final class IdCommand implements Callable<Integer> {
         else if (method.equals("ne")) m = HandDynamics.Method.NEWTON_EULER;
         else throw CliError.usage("handsim: --method must be le or ne, got '" + SafeText.quote(method) + "'");
         HandDynamics hand = HandDynamics.of(HandDescription.barrettHand(), m);
-        if (input != null || output != null) return bulk(hand);
-        Args.finger(finger);
+        if (shared.bulk()) return bulk(hand);
+        Args.finger(shared.finger);
         double[][] v = {
             Args.numbers("--q", q, 3, InputRanges.JOINT_ANGLE), Args.numbers("--qd", qd, 3, InputRanges.JOINT_SPEED),
             Args.numbers("--qdd", qdd, 3, InputRanges.JOINT_ACCELERATION), Args.numbers("--gravity", gravity, 3, InputRanges.GRAVITY)};
         String[] names = {"q%d (value %d of --q)", "qd%d (value %d of --qd)", "qdd%d (value %d of --qdd)"};
-        ChainDynamics d = hand.finger(finger);
-        String bad = fixedJointViolation(finger, d.chain(), v[0], v[1], v[2], names);
+        ChainDynamics d = hand.finger(shared.finger);
+        String bad = fixedJointViolation(shared.finger, d.chain(), v[0], v[1], v[2], names);
         if (bad != null) throw CliError.usage("handsim: " + bad);
         int n = d.dof();
         double[] qa = active(d.chain(), v[0]), qda = active(d.chain(), v[1]), qdda = active(d.chain(), v[2]);
@@ -89,7 +82,7 @@ public final class IdCommand implements Callable<Integer> {
         double[][] rows = new double[n][n];
         for (int i = 0; i < n; i++) System.arraycopy(dm, i * n, rows[i], 0, n);
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("finger", finger);
+        out.put("finger", shared.finger);
         out.put("tau", Decimal.clean(tau));      // README: |x| < 1e-12 is rounding noise, written as 0
         out.put("D", Decimal.clean(rows));
         out.put("H", Decimal.clean(h));
@@ -101,7 +94,7 @@ public final class IdCommand implements Callable<Integer> {
     private int bulk(HandDynamics hand) throws IOException {
         double[] qf = new double[3], qdf = new double[3], qddf = new double[3], g = new double[3], tau = new double[3];
         String[] names = {"column q%d", "column qd%d", "column qdd%d"};
-        return BulkCsv.run(spec, "id", input, output, finger != null || q != null || qd != null || qdd != null || gravity != null,
+        return BulkCsv.run(spec, "id", shared.input, shared.output, shared.finger != null || q != null || qd != null || qdd != null || gravity != null,
             "--finger, --q, --qd, --qdd or --gravity", IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int j = 0; j < 3; j++) {

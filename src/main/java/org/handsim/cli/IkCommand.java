@@ -1,16 +1,16 @@
 package org.handsim.cli;
 
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 import java.io.IOException;
-import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import org.handsim.kinematics.IkResult;
 import org.handsim.kinematics.InverseKinematics;
 import org.handsim.hand.InputRanges;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -31,8 +31,7 @@ public final class IkCommand implements Callable<Integer> {
 
     @Spec CommandSpec spec;
 
-    @Option(names = "--finger", paramLabel = "K", description = "finger 1, 2 or 3")
-    Integer finger;
+    @Mixin FingerOptions shared;
 
     @Option(names = "--target", paramLabel = "x,y,z", description = "fingertip target in metres")
     String target;
@@ -40,17 +39,11 @@ public final class IkCommand implements Callable<Integer> {
     @Option(names = "--frame", paramLabel = "base|palm", defaultValue = "base", description = "frame of the target: finger base {k0} (default) or palm {P}")
     String frame;
 
-    @Option(names = "--input", paramLabel = "IN.csv", description = "bulk input (the header is given above)")
-    Path input;
-
-    @Option(names = "--output", paramLabel = "OUT.csv", description = "bulk output (written only if every row succeeds)")
-    Path output;
-
     @Override
     public Integer call() throws IOException {
         boolean palm = Args.palmFrame(frame);
-        if (input != null || output != null) return bulk(palm);
-        int k = Args.finger(finger);
+        if (shared.bulk()) return bulk(palm);
+        int k = Args.finger(shared.finger);
         double[] t = Args.numbers("--target", target, 3, InputRanges.POSITION);
         InverseKinematics ik = InverseKinematics.of(k);
         IkResult r = palm ? ik.solveInPalm(t) : ik.solve(t);
@@ -66,7 +59,7 @@ public final class IkCommand implements Callable<Integer> {
     private int bulk(boolean palm) throws IOException {
         InverseKinematics[] iks = {InverseKinematics.of(1), InverseKinematics.of(2), InverseKinematics.of(3)};
         double[] t = new double[3];
-        return BulkCsv.run(spec, "ik", input, output, finger != null || target != null, "--finger or --target",
+        return BulkCsv.run(spec, "ik", shared.input, shared.output, shared.finger != null || target != null, "--finger or --target",
             IN_HEADER, ADDED_HEADER, (in, sb) -> {
                 int k = BulkCsv.finger(in);
                 for (int i = 0; i < 3; i++) t[i] = in.number(i + 1);

@@ -7,17 +7,18 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.mesh.MeshLimits;
 import org.handsim.mesh.MeshWelder;
 import org.handsim.mesh.ObjWriter;
 import org.handsim.mesh.StlWriter;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.MeshFiles;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.UnitRule;
-import org.handsim.sim.ScenarioException;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.JsonWriter;
+import org.handsim.scenario.MeshFiles;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.UnitRule;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.JsonWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -125,7 +126,7 @@ public final class MeshCommand implements Callable<Integer> {
         for (String w : r.warnings()) err.println(w);
         double loadMs = (System.nanoTime() - t0) / 1e6;
         if (spec.commandLine().getParseResult().hasMatchedOption("--divisions") && !dependsOnDivisions(r)) {
-            err.println("handsim mesh: --divisions has no effect: " + file + " has no Sphere, Cylinder or Cone (a fixed mesh)");
+            err.println("handsim mesh: --divisions has no effect: " + SafeText.escape(file.toString()) + " has no Sphere, Cylinder or Cone (a fixed mesh)");
         }
         MeshWelder welder = new MeshWelder();
         TriangleMesh mesh = welder.weld(r.mesh());
@@ -143,13 +144,13 @@ public final class MeshCommand implements Callable<Integer> {
         json.put("load_ms", Math.round(loadMs * 10) / 10.0);
         json.put("units", unit.units().id());
         if (obj != null) {
-            try (AtomicFile f = new AtomicFile(obj)) {
+            try (AtomicFile f = Args.atomicOutput("--obj", obj)) {
                 ObjWriter.write(f.writer(), List.of(mesh));
                 f.commit();
             }
         }
         if (stl != null) {
-            try (AtomicFile f = new AtomicFile(stl)) {
+            try (AtomicFile f = Args.atomicOutput("--stl", stl)) {
                 StlWriter.writeBinary(f.stream(), mesh, 1.0);
                 f.commit();
             }

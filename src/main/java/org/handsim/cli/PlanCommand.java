@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.PlanCharts;
 import org.handsim.grasp.FrictionCone;
@@ -13,20 +14,20 @@ import org.handsim.plan.PlanOutput;
 import org.handsim.plan.PlanSpec;
 import org.handsim.plan.TrialResult;
 import org.handsim.plan.TrialRunner;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.UnitRule;
-import org.handsim.sim.ScenarioException;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.OutputSet;
-import org.handsim.util.Phase;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.UnitRule;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.JsonWriter;
+import org.handsim.files.OutputSet;
+import org.handsim.process.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code handsim plan}: grasp planning (issue 13). */
+/** {@code handsim plan}: grasp planning. */
 @Command(name = "plan", mixinStandardHelpOptions = true,
     description = {"Searches grasps of an object and ranks them by epsilon.",
         "Each trial places the open hand on an approach",
@@ -135,7 +136,7 @@ public final class PlanCommand implements Callable<Integer> {
             planSpec.name(), trials, output.failed(), output.forceClosure(), fmt(best == null ? 0 : best.epsilon()),
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
-        stdout.println("wrote " + dir + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
             + ".json" + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
         return output.failed() == trials ? 1 : 0;
     }

@@ -2,7 +2,7 @@ package org.handsim.cli;
 
 import java.io.PrintWriter;
 import java.util.function.DoubleConsumer;
-import org.handsim.util.CommandContext;
+import org.handsim.process.CommandContext;
 
 /**
  * A console progress bar on standard error for runs longer than a second: silent for the first

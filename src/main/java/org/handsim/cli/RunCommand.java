@@ -8,22 +8,23 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.text.SafeText;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.PaperCharts;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Recorder;
-import org.handsim.sim.Home;
-import org.handsim.sim.RunSummary;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.sim.Simulation;
-import org.handsim.sim.SimulationException;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.trace.Recorder;
+import org.handsim.scenario.Home;
+import org.handsim.model.RunSummary;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.model.Simulation;
+import org.handsim.model.SimulationException;
 import org.handsim.tradeoff.Resolution;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.OutputSet;
-import org.handsim.util.Phase;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.JsonWriter;
+import org.handsim.files.OutputSet;
+import org.handsim.process.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -82,7 +83,7 @@ public final class RunCommand implements Callable<Integer> {
             try {
                 scenario = scenario.withDt(dt);
             } catch (IllegalArgumentException e) {   // too many steps for the scenario's duration
-                throw CliError.usage("handsim: --dt " + org.handsim.util.Decimal.format(dt) + ": " + e.getMessage());
+                throw CliError.usage("handsim: --dt " + org.handsim.text.Decimal.format(dt) + ": " + e.getMessage());
             }
         }
         scenario = GraspCommand.withFriction(scenario, friction, edges);
@@ -141,7 +142,7 @@ public final class RunCommand implements Callable<Integer> {
                 // the charts are drawn on the set's workers while the grasp is evaluated
                 List<String> chartFiles = chartSet != null ? addCharts(chartSet, rec, model, stage) : List.of();
                 summary = RunSummary.of(model, wall);
-                summary.put("grasp", GraspAssessment.of(model, scenario.friction(), scenario.coneEdges()).toJson());
+                summary.put("grasp", GraspAssessment.of(model.graspInput(), scenario.friction(), scenario.coneEdges()).toJson());
                 summary.put("setup_time_s", setup);
                 summary.put("warnings", warnings);
                 if (toleranceM != null) {
@@ -170,7 +171,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         if (toleranceLine != null) stdout.println(toleranceLine);
         stdout.println(headline(model, wall));
-        stdout.println("wrote " + dir + "/{" + String.join(", ", written) + "}");
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{" + String.join(", ", written) + "}");
         return 0;
     }
 

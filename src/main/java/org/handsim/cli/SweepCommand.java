@@ -2,15 +2,16 @@ package org.handsim.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.sim.Simulation;
-import org.handsim.sim.SimulationException;
-import org.handsim.sim.Sweep;
-import org.handsim.util.Decimal;
-import org.handsim.util.SafeText;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.model.Simulation;
+import org.handsim.model.SimulationException;
+import org.handsim.scenario.SceneMeshes;
+import org.handsim.scenario.Sweep;
+import org.handsim.text.Decimal;
+import org.handsim.text.SafeText;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -86,8 +87,8 @@ public final class SweepCommand implements Callable<Integer> {
                 if (o == null) continue;
                 String notice = s.unitNotice("handsim sweep");
                 if (notice != null) said.add(notice);
-                String size = org.handsim.sim.UnitRule.sizeWarning(o.file(),
-                    org.handsim.sim.SceneGeometry.mesh(o.file(), o.divisions(), o.meshScale()), o.units());
+                String size = org.handsim.scenario.UnitRule.sizeWarning(o.file(),
+                    org.handsim.scenario.SceneMeshes.mesh(o.file(), o.divisions(), o.meshScale()), o.units());
                 if (size != null) said.add("handsim: warning: " + run.label() + ": " + size);
             } catch (RuntimeException e) {
                 // the run's row reports it
@@ -114,7 +115,7 @@ public final class SweepCommand implements Callable<Integer> {
                 sb.append(',').append(m.state(k)).append(',').append(Decimal.orEmpty(m.breakawayTime(k))).append(',')
                     .append(Decimal.orEmpty(m.breakawayForce(k))).append(',').append(Decimal.format(m.maxContactForce(k)));
             }
-            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            GraspAssessment g = GraspAssessment.of(m.graspInput(), s.friction(), s.coneEdges());
             sb.append(",,").append(g.quality().forceClosure()).append(',').append(Decimal.format(g.quality().epsilon())).append(',')
                 .append(Decimal.format(g.quality().volume())).append(',').append(Decimal.format(g.holdMinN()));
             return sb.toString();

@@ -4,11 +4,11 @@ import java.io.Writer;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.handsim.plan.IndexedJob;
-import org.handsim.sim.Sweep;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.OutputSet;
-import org.handsim.util.Phase;
-import org.handsim.util.SafeText;
+import org.handsim.scenario.Sweep;
+import org.handsim.files.AtomicFile;
+import org.handsim.files.OutputSet;
+import org.handsim.process.Phase;
+import org.handsim.text.SafeText;
 
 /**
  * The runs of a sweep file as an {@link IndexedJob}, run by any engine ({@code handsim sweep

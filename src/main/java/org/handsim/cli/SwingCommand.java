@@ -1,7 +1,7 @@
 package org.handsim.cli;
 
-import org.handsim.util.SafeText;
-import org.handsim.util.Decimal;
+import org.handsim.text.SafeText;
+import org.handsim.text.Decimal;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -21,10 +21,10 @@ import org.handsim.dynamics.Integrator;
 import org.handsim.dynamics.IntegratorKind;
 import org.handsim.dynamics.IntegrationStoppedException;
 import org.handsim.dynamics.LinkChain;
-import org.handsim.util.AtomicFile;
+import org.handsim.files.AtomicFile;
 import org.handsim.hand.InputRanges;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.OutputSet;
+import org.handsim.text.JsonWriter;
+import org.handsim.files.OutputSet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -181,7 +181,7 @@ public final class SwingCommand implements Callable<Integer> {
             "finger %d, %s, dt = %s s: %d steps over %s s in %.3f s wall; energy %s J -> %s J (relative drift %.3g)",
             k, integrator, Decimal.format(dt), result.steps(), Decimal.format(duration), wall,
             Decimal.format(result.initialEnergy()), Decimal.format(result.finalEnergy()), result.relativeDrift()));
-        stdout.println("wrote " + out + "/{swing.csv, swing.json}");
+        stdout.println("wrote " + SafeText.escape(out.toString()) + "/{swing.csv, swing.json}");
         return 0;
     }
 

@@ -1,6 +1,6 @@
 package org.handsim.cli;
 
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -16,16 +16,16 @@ import org.handsim.chart.StudyTable;
 import org.handsim.chart.TradeoffChart;
 import org.handsim.tradeoff.Studies;
 import org.handsim.tradeoff.Study;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.OutputSet;
-import org.handsim.util.Phase;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.JsonWriter;
+import org.handsim.files.OutputSet;
+import org.handsim.process.Phase;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code handsim tradeoff}: the speed-against-accuracy charts of issue 8. */
+/** {@code handsim tradeoff}: the speed-against-accuracy charts. */
 @Command(name = "tradeoff", mixinStandardHelpOptions = true,
     description = {
         "Runs the speed-against-accuracy studies and charts them.",

@@ -23,7 +23,7 @@ package org.handsim.collision;
  * <tr><td>next 4</td><td>x+y+z, x+y−z, x−y+z, −x+y+z</td><td></td><td>✓ (3..6)</td><td></td><td>✓ (9..12)</td></tr>
  * </table>
  *
- * <p><b>Slot table (STYLE.md item 6).</b> The bounds of one k-DOP are k doubles at
+ * <p><b>Slot table (docs/STYLE.md, item 6).</b> The bounds of one k-DOP are k doubles at
  * {@code b[off .. off+k−1]}: slot {@code 2i} = min over the set of dᵢ·p, slot {@code 2i+1} =
  * max. So for every k, slots 0..5 are the axis-aligned box (xmin, xmax, ymin, ymax, zmin,
  * zmax); for k = 26, slots 6, 7 are min/max of x+y and slots 24, 25 min/max of −x+y+z. An

@@ -20,7 +20,7 @@ import org.handsim.mesh.TriangleMesh;
  * of its children's. The defaults ({@link #DEFAULT_SPLIT}, {@link #DEFAULT_LEAF_SIZE}) are the
  * fastest in the collision benchmark (docs/BENCHMARKS.md).
  *
- * <p><b>Layout (STYLE.md items 5, 6).</b> Nodes are numbered in depth-first pre-order, so the
+ * <p><b>Layout (docs/STYLE.md, items 5, 6).</b> Nodes are numbered in depth-first pre-order, so the
  * left child of internal node i is i + 1. For node i:
  * <ul>
  *   <li>{@code bounds[i·k .. i·k + k − 1]}: its k-DOP, in the slot order of {@link Kdop};</li>

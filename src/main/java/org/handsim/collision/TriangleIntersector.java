@@ -22,7 +22,7 @@ package org.handsim.collision;
  *       denominator never cancels; the end point is as accurate as the two orientation values.</li>
  * </ol>
  *
- * <p><b>Robustness (STYLE.md item 7).</b> Every sign above comes from {@link Predicates}: a
+ * <p><b>Robustness (docs/STYLE.md, item 7).</b> Every sign above comes from {@link Predicates}: a
  * floating-point value with Shewchuk's error bound, and exact expansion arithmetic only when
  * the bound cannot certify the sign (a vertex on or within rounding distance of a plane, a
  * shared edge, coplanar faces). So the answer "intersect or not" is the exact answer for the

@@ -30,7 +30,8 @@
  * </pre>
  * Patches and point contacts are made from a result by {@code org.handsim.contact.ContactPatches}.
  *
- * <p>Units: metres; every array of coordinates is x, y, z per point. Uses {@code mesh} and
- * {@code math} only (DESIGN.md); allocates nothing per query once its buffers have grown.
+ * <p>Units: metres; every array of coordinates is x, y, z per point. Allocates nothing per query once its buffers have grown.
+ *
+ * <p>May use {@code mesh} and {@code math} (docs/DESIGN.md, "Modules").
  */
 package org.handsim.collision;

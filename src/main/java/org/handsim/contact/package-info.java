@@ -20,5 +20,7 @@
  * int n = cp.build(result, meshA, meshB, pose);      // A's frame; normals point out of B
  * cp.center(i, p); cp.normal(i, d); cp.area(i);
  * </pre>
+ *
+ * <p>May use {@code collision}, {@code mesh} and {@code math} (docs/DESIGN.md, "Modules").
  */
 package org.handsim.contact;

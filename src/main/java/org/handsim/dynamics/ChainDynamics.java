@@ -19,7 +19,7 @@ package org.handsim.dynamics;
  * have {@link #dof()} entries (active joints only, {@link LinkChain}); matrices are dof×dof,
  * row-major in a flat array.
  *
- * <p><b>Outputs</b> (STYLE.md item 3): each method writes into the output array it is given and
+ * <p><b>Outputs</b> (docs/STYLE.md, item 3): each method writes into the output array it is given and
  * returns it; {@code null} allocates a new one (convenient, not for hot loops). An output must
  * not be the same array as an input ({@link IllegalArgumentException}). With non-null outputs
  * every method is allocation-free.

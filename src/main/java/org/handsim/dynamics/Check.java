@@ -11,7 +11,7 @@ final class Check {
     }
 
     /**
-     * An output argument (STYLE.md item 3): null gives a new array of {@code n} values; a
+     * An output argument (docs/STYLE.md, item 3): null gives a new array of {@code n} values; a
      * given array must be long enough and must not be one of the inputs.
      */
     static double[] out(String name, double[] out, int n, double[] in1, double[] in2, double[] in3, double[] in4) {

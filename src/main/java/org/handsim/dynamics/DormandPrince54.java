@@ -16,7 +16,7 @@ package org.handsim.dynamics;
  * {@code 1e-12·max(1, |t|)} s or more than {@link #MAX_STEPS} steps would be needed.
  *
  * <p>{@link #fixedStep} takes one step of a given size without error control: with it the
- * fifth order is checked by decreasing steps (STYLE.md item 11).
+ * fifth order is checked by decreasing steps (docs/STYLE.md, item 11).
  */
 public final class DormandPrince54 extends AbstractIntegrator {
     /** Most internal steps per call of {@link #step}. */

@@ -15,7 +15,7 @@ import org.handsim.math.Cholesky;
  * {@link ChainDynamics}; with {@link ClosedFormFinger} one call costs one closed-form evaluation
  * plus an n = 3 factorisation.
  *
- * <p><b>Failure is an outcome</b> (STYLE.md item 8): if D is not numerically positive definite
+ * <p><b>Failure is an outcome</b> (docs/STYLE.md, item 8): if D is not numerically positive definite
  * (a non-physical hand description, NaN inputs) {@link #accelerations} returns false and leaves
  * its output untouched, instead of returning NaN accelerations.
  *

@@ -75,7 +75,7 @@ public final class FreeSwing {
         long every = Math.max(1, steps / 100);
         long evals0 = integrator.evaluations();
         double t = 0, e = e0, worst = 0;
-        org.handsim.util.StepClock clock = new org.handsim.util.StepClock(dt);
+        org.handsim.process.StepClock clock = new org.handsim.process.StepClock(dt);
         for (long i = 1; i <= steps; i++) {
             double tNext = i == steps ? duration : Math.min(clock.at(i), duration);   // i × dt in decimal, never accumulated
             System.arraycopy(y, 0, trial, 0, n);

@@ -10,7 +10,7 @@ package org.handsim.dynamics;
  * fixed-step method takes one step of size h; the adaptive method takes as many internal
  * steps as its error control needs (its step size carries over between calls). A failed step —
  * f undefined somewhere ({@link Ode#derivative} returned false) or the adaptive step size
- * collapsing — returns false and leaves y as it was (STYLE.md item 8: an outcome, not NaN).
+ * collapsing — returns false and leaves y as it was (docs/STYLE.md, item 8: an outcome, not NaN).
  *
  * <p><b>Cost accounting.</b> {@link #evaluations()} counts calls of f since construction, the
  * currency of the speed-versus-accuracy comparison.

@@ -34,7 +34,7 @@
  * SI units, radians; joint vectors hold the active joints of a chain; matrices are row-major
  * flat arrays; gravity is a vector in the chain's base frame ({k0} for a finger), e.g.
  * {@code (0, 0, −9.81)} m/s² when z0 points up. Hot methods are allocation-free with
- * caller-supplied outputs (STYLE.md item 3); misuse throws {@link java.lang.IllegalArgumentException}
+ * caller-supplied outputs (docs/STYLE.md, item 3); misuse throws {@link java.lang.IllegalArgumentException}
  * naming the argument, numerical failure (D not positive definite, an integrator step that
  * cannot be taken) is a false return. Instances keep scratch: one per thread. Nothing here
  * touches files or the console.
@@ -48,5 +48,7 @@
  * Dynamics Algorithms</i>, Springer, 2008; E. Hairer, S. P. Nørsett, G. Wanner, <i>Solving
  * Ordinary Differential Equations I</i>, 2nd ed., Springer, 1993; J. R. Dormand, P. J. Prince,
  * "A family of embedded Runge–Kutta formulae", J. Comput. Appl. Math. 6 (1980).
+ *
+ * <p>May use {@code hand}, {@code math} and {@code process} (docs/DESIGN.md, "Modules").
  */
 package org.handsim.dynamics;

@@ -81,7 +81,7 @@ public final class FrictionCone {
     public static String muProblem(double mu) {
         if (mu >= 0 && mu <= MAX_MU) return null;
         return "must be in [0, 10] (measured coefficients stay below 2; beyond 10 the friction cone is numerically a half-space), got "
-            + (Double.isNaN(mu) ? "NaN" : org.handsim.util.Decimal.format(mu));
+            + (Double.isNaN(mu) ? "NaN" : org.handsim.text.Decimal.format(mu));
     }
 
     /** @throws IllegalArgumentException naming the value unless 1 ≤ m ≤ 1024 */

@@ -7,7 +7,7 @@ import org.ojalgo.optimisation.linear.LinearSolver;
 import org.ojalgo.structure.Mutate2D;
 
 /**
- * How much load a grasp holds (issue 12, DESIGN.md decision 6): for a disturbance force F·d on
+ * How much load a grasp holds (DESIGN.md decision 6): for a disturbance force F·d on
  * the object through the torque origin c, the largest F for which contact forces inside the
  * linearised friction cones balance it — force and torque about c —
  * <pre>  Σ_i f_i + F d = 0,   Σ_i (p_i − c) × f_i = 0,   f_i = Σ_e λ_ie e_ie,  λ_ie ≥ 0,</pre>

@@ -4,7 +4,9 @@
  * ({@link org.handsim.grasp.GraspWrenches}), its convex hull in 6-D (our own Quickhull: no
  * n-dimensional hull exists on Maven Central), force closure, the Ferrari–Canny ε and the
  * volume ({@link org.handsim.grasp.GraspQuality}), and how much load a grasp holds (a linear
- * program on ojAlgo). Uses {@code contact}, {@code kinematics} and {@code hand}; never
- * {@code sim} and above.
+ * program on ojAlgo), and the evaluation of a simulated grasp from a copy the model makes
+ * ({@link org.handsim.grasp.GraspAssessment}).
+ *
+ * <p>May use {@code hand} and {@code text} (and ojAlgo; docs/DESIGN.md, "Modules").
  */
 package org.handsim.grasp;

@@ -15,9 +15,9 @@ import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import javax.swing.table.AbstractTableModel;
-import org.handsim.sim.ClutchState;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Snapshot;
+import org.handsim.clutch.ClutchState;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Snapshot;
 
 /**
  * The <b>Dynamics</b> panel: run the simulation with dynamics (Lagrange–Euler joint torques,
@@ -33,7 +33,7 @@ import org.handsim.sim.Snapshot;
  *
  * <h2>The grasp, live</h2>
  * The <b>Grasp</b> box shows the grasp of the state on screen as {@code handsim grasp} reports
- * it (issue 12; {@link org.handsim.sim.GraspAssessment}, DESIGN.md decisions 5 and 6): force
+ * it ({@link org.handsim.grasp.GraspAssessment}, DESIGN.md decisions 5 and 6): force
  * closure (yes / no), the Ferrari–Canny ε and the volume of the L1 grasp wrench space, and the
  * minimum hold over the six world directions ±x, ±y, ±z in newtons — with the friction μ and
  * cone edges m of the scenario (the Objects panel's friction field), the simulated time it was
@@ -252,7 +252,7 @@ public final class DynamicsPanel {
             note("cannot evaluate: " + g.error());
             return;
         }
-        org.handsim.sim.GraspAssessment a = g.assessment();
+        org.handsim.grasp.GraspAssessment a = g.assessment();
         boolean fc = a.quality().forceClosure();
         closure.setText(fc ? "yes" : "no");
         closure.setForeground(fc ? Widgets.OK : Widgets.ERROR);
@@ -260,7 +260,7 @@ public final class DynamicsPanel {
         volume.setText(Widgets.significant(a.quality().volume(), 4));
         hold.setText(Widgets.significant(a.holdMinN(), 4) + " N");
         note(String.format(Locale.ROOT, "%d contact%s as at t = %.4f s (evaluated when they change), μ %s, %d cone edges",
-            a.contacts().size(), a.contacts().size() == 1 ? "" : "s", a.timeS(), org.handsim.util.Decimal.format(g.mu()), g.edges()));
+            a.contacts().size(), a.contacts().size() == 1 ? "" : "s", a.timeS(), org.handsim.text.Decimal.format(g.mu()), g.edges()));
     }
 
     /**

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
-import org.handsim.sim.Scenario;
+import org.handsim.scenario.Scenario;
 
 /**
  * Opens the window and, in scripted mode, drives it and closes it: the part of

@@ -12,8 +12,8 @@ import javax.swing.JPanel;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.Scenario;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 
 /**
  * The simulator as one Swing component, to put in any frame (an Easy-Java-Simulations-style
@@ -97,8 +97,8 @@ public class HandSimPanel extends JPanel {
      */
     public static MeshSource.Model[] loadHand() throws IOException {
         MeshSource.Model[] m = new MeshSource.Model[4];
-        m[0] = MeshSource.load(SceneGeometry.palmFile(), SceneGeometry.LINK_DIVISIONS);
-        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(SceneGeometry.linkFile(j), SceneGeometry.LINK_DIVISIONS);
+        m[0] = MeshSource.load(SceneMeshes.palmFile(), SceneMeshes.LINK_DIVISIONS);
+        for (int j = 1; j <= 3; j++) m[j] = MeshSource.load(SceneMeshes.linkFile(j), SceneMeshes.LINK_DIVISIONS);
         return m;
     }
 

@@ -54,11 +54,11 @@ import javax.swing.SwingUtilities;
 import javax.swing.ToolTipManager;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.text.JTextComponent;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.JsonWriter;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.JsonWriter;
 
 /**
  * The HandSim window (paper Section V, Fig. 5): the four buttons of the paper at the top —
@@ -148,7 +148,7 @@ public final class HandSimWindow {
         sim.addStepListener(this::update);
         sim.addTickHook(this::tickCharts);
         sim.addTickHook(this::tickGrasp);
-        charts.setDuration(org.handsim.sim.HandModel.endTime(scenario));   // the time label's end, handsim run's
+        charts.setDuration(org.handsim.model.HandModel.endTime(scenario));   // the time label's end, handsim run's
 
         frame = new JFrame("HandSim — BarrettHand simulator");
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
@@ -383,7 +383,7 @@ public final class HandSimWindow {
     public void load(Scenario s) {
         sim.load(s);
         sim.setSpeed(speedFactor());
-        charts.setDuration(org.handsim.sim.HandModel.endTime(s));
+        charts.setDuration(org.handsim.model.HandModel.endTime(s));
         objects.showPlacement(s.object());
         kinematics.previewChanged();
     }
@@ -496,11 +496,17 @@ public final class HandSimWindow {
     /** What the run is doing, as the status bar's right end says: running, paused, finished, reset, ... */
     public String runStateText() { return runState.getText(); }
 
-    /** An error: status bar, and a dialog when interactive. */
+    /**
+     * An error: status bar, and when interactive a dialog and one line on standard error. A
+     * script reports the error itself (the action that failed names it, or expect-error wanted it),
+     * so under a script the window does not print it too.
+     */
     public void error(String message, String title) {
         status(message, true);
-        System.err.println("handsim gui: " + message);
-        if (interactive) JOptionPane.showMessageDialog(frame, message, title, JOptionPane.ERROR_MESSAGE);
+        if (interactive) {
+            System.err.println("handsim gui: " + message);
+            JOptionPane.showMessageDialog(frame, message, title, JOptionPane.ERROR_MESSAGE);
+        }
     }
 
     /** Regions of the window (relative to its top-left corner) for screenshot checks: view, charts, status bar, tool panel. */
@@ -677,7 +683,7 @@ public final class HandSimWindow {
     private void update(SimulationRunner.State s) {
         if (s.generation() != shownGeneration) {
             shownGeneration = s.generation();
-            charts.setDuration(s.scenario() != null ? org.handsim.sim.HandModel.endTime(s.scenario()) : 0);
+            charts.setDuration(s.scenario() != null ? org.handsim.model.HandModel.endTime(s.scenario()) : 0);
             if (!s.warnings().isEmpty() && s.origin() == SimulationRunner.Origin.LOADED) warning(String.join("; ", s.warnings()));
         }
         dynamics.update(s);
@@ -701,7 +707,7 @@ public final class HandSimWindow {
      * written as {@code handsim run} writes them ({@code t = 2.500 s / 8.947 s}).
      */
     static String timeText(SimulationRunner.State s) {
-        double end = s.scenario() == null ? 0 : org.handsim.sim.HandModel.endTime(s.scenario());
+        double end = s.scenario() == null ? 0 : org.handsim.model.HandModel.endTime(s.scenario());
         return String.format(Locale.ROOT, "t = %.3f s / %.3f s", s.time(), end);
     }
 

@@ -19,10 +19,10 @@ import org.handsim.kinematics.IkResult;
 import org.handsim.kinematics.InverseKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.ContactSet;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.trajectory.Hold;
+import org.handsim.model.ContactSet;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SceneGeometry;
+import org.handsim.trajectory.Hold;
 
 /**
  * The <b>Kinematics</b> panel: move the hand by joint values (forward) or by a fingertip
@@ -41,7 +41,7 @@ import org.handsim.sim.trajectory.Hold;
  * <h2>Following the model</h2>
  * Whenever the view shows a state of the model (while it plays, and after a pause, a step, a
  * reset, a load or the end of the run) the panel shows that same state, finger by finger:
- * the motor counts and spread of the published {@link org.handsim.sim.Snapshot}, and the joint
+ * the motor counts and spread of the published {@link org.handsim.model.Snapshot}, and the joint
  * angles the model has — not the coupled angles of the counts, which a finger whose clutch has
  * broken away or stalled no longer has (after a breakaway θk2 stays where the link met the
  * object while the motor winds θk3 on). Editing a value shows the FREE finger's pose of it
@@ -363,7 +363,7 @@ public final class KinematicsPanel {
     void follow(SimulationRunner.State s) {
         if (s.snapshot() == null || window.simulator().previewing()) return;
         for (int k = 0; k < 3; k++) {
-            org.handsim.sim.Snapshot.FingerSnapshot f = s.snapshot().fingers()[k];
+            org.handsim.model.Snapshot.FingerSnapshot f = s.snapshot().fingers()[k];
             q[k] = f.motorCounts();
             angles[k] = f.joints().clone();
         }

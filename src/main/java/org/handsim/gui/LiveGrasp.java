@@ -4,12 +4,11 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
 
 /**
- * The grasp of the running model, evaluated live for the window (issue 12, "Where users see
- * it"): force closure, ε, volume and the minimum hold ({@link GraspAssessment}), on a thread of
+ * The grasp of the running model, evaluated live for the window: force closure, ε, volume and the minimum hold ({@link GraspAssessment}), on a thread of
  * its own, so that neither the simulation thread nor the event dispatch thread waits for it.
  *
  * <h2>How it keeps up without holding anything back</h2>
@@ -90,7 +89,7 @@ public final class LiveGrasp implements AutoCloseable {
      * (scripted runs of one script then show one readout).
      */
     void offer(long generation, HandModel model, double mu, int edges, boolean resting) {
-        Job j = new Job(generation, GraspAssessment.Input.of(model), mu, edges);
+        Job j = new Job(generation, model.graspInput(), mu, edges);
         if (lastOffered != null && sameGrasp(lastOffered, j)
             && (!resting || Double.compare(lastOffered.input().timeS(), j.input().timeS()) == 0)) {
             return;

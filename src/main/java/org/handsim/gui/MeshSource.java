@@ -5,13 +5,14 @@ import java.nio.file.Path;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.ScenarioException;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.util.InputFile;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.model.SceneGeometry;
+import org.handsim.files.InputFile;
+import org.handsim.scenario.SceneMeshes;
 
 /**
- * Where the view gets its triangle meshes: {@link SceneGeometry#mesh}, the meshes the model
- * collides (VRML, OBJ or STL file ⇒ {@code sim.MeshFiles} ⇒ TriangleMesh, DESIGN.md),
+ * Where the view gets its triangle meshes: {@link SceneMeshes#mesh}, the meshes the model
+ * collides (VRML, OBJ or STL file ⇒ {@code scenario.MeshFiles} ⇒ TriangleMesh, DESIGN.md),
  * from the same cache — so the view shows exactly the triangles of the simulation, and a file
  * imported in the window is read once for both. The one place to change if the view should
  * show something else (e.g. the loader's BranchGroup with its own appearances).
@@ -50,7 +51,7 @@ public final class MeshSource {
         }
         TriangleMesh mesh;
         try {
-            mesh = SceneGeometry.mesh(file, divisions, 1.0);
+            mesh = SceneMeshes.mesh(file, divisions, 1.0);
         } catch (ScenarioException e) {
             throw new IOException(e.getMessage(), e);
         }
@@ -69,7 +70,7 @@ public final class MeshSource {
         if (name.endsWith(".stl")) return null;
         if (name.endsWith(".obj")) {
             try {
-                // heads only, regular files only (util.InputFile): an mtllib naming a FIFO or /dev/zero costs nothing
+                // heads only, regular files only (files.InputFile): an mtllib naming a FIFO or /dev/zero costs nothing
                 Matcher lib = MTLLIB.matcher(new String(InputFile.head(file, SNIFF_BYTES), java.nio.charset.StandardCharsets.ISO_8859_1));
                 if (!lib.find()) return null;
                 Path mtl = file.toAbsolutePath().getParent().resolve(lib.group(1));

@@ -14,10 +14,10 @@ import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.handsim.grasp.FrictionCone;
-import org.handsim.sim.Home;
-import org.handsim.sim.MeshFiles;
-import org.handsim.sim.ObjectPlacer;
-import org.handsim.sim.Scenario;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.MeshFiles;
+import org.handsim.model.ObjectPlacer;
+import org.handsim.scenario.Scenario;
 
 /**
  * The <b>Objects</b> panel: import a 3D model from a VRML97, Wavefront OBJ or STL file, choose
@@ -108,7 +108,7 @@ public final class ObjectsPanel {
         panel.add(place);
 
         JPanel fr = Widgets.titled(new JPanel(new GridBagLayout()), "Friction of the contacts");
-        friction = Widgets.field("obj.friction", org.handsim.util.Decimal.format(FrictionCone.DEFAULT_MU), 6, null);
+        friction = Widgets.field("obj.friction", org.handsim.text.Decimal.format(FrictionCone.DEFAULT_MU), 6, null);
         friction.addActionListener(e -> applyFriction());
         fr.add(new JLabel("Coulomb μ"), Widgets.at(0, 0));
         fr.add(friction, Widgets.at(1, 0));
@@ -143,7 +143,7 @@ public final class ObjectsPanel {
      */
     public CompletableFuture<?> importFile(Path f) {
         Path abs = f.toAbsolutePath().normalize();
-        String why = org.handsim.util.InputFile.problem(abs);   // a FIFO or a device is refused before it is opened
+        String why = org.handsim.files.InputFile.problem(abs);   // a FIFO or a device is refused before it is opened
         if (why != null) {
             window.error("cannot import " + abs + ": " + why, "Object not loaded");
             return CompletableFuture.failedFuture(new java.io.IOException(abs + ": " + why));
@@ -160,7 +160,7 @@ public final class ObjectsPanel {
         CompletableFuture<ObjectPlacer.Placed> found = new CompletableFuture<>();
         Thread t = new Thread(() -> {
             try {
-                Scenario.Units u = org.handsim.sim.UnitRule.resolve(abs, divisions, wanted).units();
+                Scenario.Units u = org.handsim.scenario.UnitRule.resolve(abs, divisions, wanted).units();
                 found.complete(ObjectPlacer.place(s, abs, divisions, sc, u));
             } catch (RuntimeException e) {
                 found.completeExceptionally(e);
@@ -273,7 +273,7 @@ public final class ObjectsPanel {
         ry.setText(Widgets.fmt(Math.toDegrees(r[1]), 2));
         rz.setText(Widgets.fmt(Math.toDegrees(r[2]), 2));
         scale.setText(Widgets.fmt(p.scale(), 4));
-        friction.setText(org.handsim.util.Decimal.format(p.friction()));   // the number the scenario holds, shortest
+        friction.setText(org.handsim.text.Decimal.format(p.friction()));   // the number the scenario holds, shortest
         syncing = true;
         try {
             if (chosenUnits() != null) units.setSelectedItem(p.units().id());

@@ -9,12 +9,12 @@ import javax.swing.JPanel;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
 import org.handsim.hand.HandDescription;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.trajectory.CartesianLine;
-import org.handsim.sim.trajectory.Hold;
-import org.handsim.sim.trajectory.Quintic;
-import org.handsim.sim.trajectory.Trajectory;
-import org.handsim.sim.trajectory.Trapezoid;
+import org.handsim.scenario.Scenario;
+import org.handsim.trajectory.CartesianLine;
+import org.handsim.trajectory.Hold;
+import org.handsim.trajectory.Quintic;
+import org.handsim.trajectory.Trajectory;
+import org.handsim.trajectory.Trapezoid;
 
 /**
  * The <b>Path Planning</b> panel: per motor a trajectory type and an end point, from where the
@@ -183,9 +183,9 @@ public final class PathPlanningPanel {
                 double[] p = new double[3];
                 for (int i = 0; i < 3; i++) {
                     try {
-                        p[i] = org.handsim.util.Decimal.parse(parts[i]);
+                        p[i] = org.handsim.text.Decimal.parse(parts[i]);
                     } catch (NumberFormatException e) {
-                        throw new IllegalArgumentException(motor + " end: '" + parts[i] + "' is not a number");
+                        throw new IllegalArgumentException(motor + " end: '" + org.handsim.text.SafeText.quote(parts[i]) + "' is not a number");
                     }
                 }
                 // palm frame (the panel's) → the finger's base frame {k0} (the trajectory's)

@@ -2,7 +2,7 @@ package org.handsim.gui;
 
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.Snapshot;
+import org.handsim.model.Snapshot;
 
 /**
  * What the 3D view draws at one instant, immutable: where the palm and the nine links are,
@@ -71,7 +71,7 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
      * A copy with the contacts of a set (points and outward normals, forces 0: a preview's, not
      * solved), finger by finger: the first {@code perFinger[0]} are finger 1's, and so on.
      */
-    public Pose withContacts(org.handsim.sim.ContactSet c, int[] perFinger) {
+    public Pose withContacts(org.handsim.model.ContactSet c, int[] perFinger) {
         int n = c.size();
         double[] p = new double[3 * n], nn = new double[3 * n];
         int[] fingers = new int[n];

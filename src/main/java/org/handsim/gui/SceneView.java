@@ -474,11 +474,11 @@ public final class SceneView {
      * The scene's bounding sphere in the world {cx, cy, cz, r}: the hand's and the object's
      * (its mesh at its placement), m.
      */
-    public static double[] sceneSphere(org.handsim.sim.Scenario s, MeshSource.Model object) {
+    public static double[] sceneSphere(org.handsim.scenario.Scenario s, MeshSource.Model object) {
         double[] hc = s.worldFromPalm().apply(HAND_CENTRE);
         double[] a = {hc[0], hc[1], hc[2], HAND_RADIUS_M};
         if (object == null || s.object() == null) return a;
-        double[] os = org.handsim.sim.SceneGeometry.boundingSphere(object.mesh());
+        double[] os = org.handsim.model.SceneGeometry.boundingSphere(object.mesh());
         double k = s.object().meshScale();
         double[] oc = s.object().worldFromObject().apply(new double[] {k * os[0], k * os[1], k * os[2]});
         double[] b = {oc[0], oc[1], oc[2], k * os[3]};
@@ -496,7 +496,7 @@ public final class SceneView {
      * loaded) so that all of it is in view; the orbit turns about the scene's centre and Home
      * view returns to the home position. Event dispatch thread.
      */
-    public void camera(Camera c, org.handsim.sim.Scenario s, MeshSource.Model object) {
+    public void camera(Camera c, org.handsim.scenario.Scenario s, MeshSource.Model object) {
         if (c == Camera.HOME) {
             lookAt(s.worldFromPalm());
             return;

@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import org.handsim.sim.ClutchState;
-import org.handsim.util.SafeText;
+import org.handsim.clutch.ClutchState;
+import org.handsim.text.SafeText;
 
 /**
  * The action language of {@code handsim gui --script FILE}: one action per line, run in
@@ -75,12 +75,12 @@ import org.handsim.util.SafeText;
  * {@code assert-*} or an action that cannot be done exits with code 1.
  *
  * <p><b>Limits.</b> A script file is UTF-8 (a leading byte-order mark is dropped) of at most
- * {@link #MAX_BYTES} bytes. Numbers are decimals ({@code util.Decimal.parse}: {@code 0d},
+ * {@link #MAX_BYTES} bytes. Numbers are decimals ({@code text.Decimal.parse}: {@code 0d},
  * {@code NaN}, {@code 1e400} are refused): {@code wait} takes whole milliseconds up to
  * {@link #MAX_WAIT_MS} (one hour), {@code measure-fps} seconds in (0, {@link #MAX_FPS_SECONDS}]
  * as {@code --measure-fps} does, {@code assert-contacts} a count up to {@link #MAX_CONTACTS}.
  * Text quoted from the script in a message has its control characters escaped and is shortened
- * ({@code util.SafeText.quote}), so a message is one short line whatever the script holds.
+ * ({@code text.SafeText.quote}), so a message is one short line whatever the script holds.
  *
  * <h2>Example</h2>
  * <pre>
@@ -333,7 +333,7 @@ public final class Script {
 
     private static double number(String src, int n, Verb v, String text) throws ScriptException {
         try {
-            double d = org.handsim.util.Decimal.parse(text);
+            double d = org.handsim.text.Decimal.parse(text);
             if (!Double.isFinite(d)) throw new NumberFormatException();
             return d;
         } catch (NumberFormatException e) {

@@ -22,8 +22,8 @@ import javax.swing.JComboBox;
 import javax.swing.JSlider;
 import javax.swing.SwingUtilities;
 import javax.swing.text.JTextComponent;
-import org.handsim.sim.ClutchState;
-import org.handsim.sim.Home;
+import org.handsim.clutch.ClutchState;
+import org.handsim.scenario.Home;
 
 /**
  * Runs a {@link Script} against a {@link HandSimWindow}, one action after the other, on the
@@ -47,7 +47,7 @@ public final class ScriptRunner {
         final int exitCode;
 
         ScriptFailure(String message, int exitCode) {
-            super(org.handsim.util.SafeText.line(message));   // one line, no raw control bytes
+            super(org.handsim.text.SafeText.line(message));   // one line, no raw control bytes
             this.exitCode = exitCode;
         }
 
@@ -92,6 +92,8 @@ public final class ScriptRunner {
                 throw e;
             } catch (Exception e) {
                 failure = message(e);
+                // a message quoting what was typed is one line of bounded length, whatever was typed
+                if (failure.length() > 2 * SHOWN_WHOLE) failure = failure.substring(0, SHOWN_WHOLE) + "..." + failure.substring(failure.length() - 100);
             }
             String where = script.source() + ":" + a.line() + ": " + shown(a.text()) + ": ";
             if (expected != null) {
@@ -110,7 +112,7 @@ public final class ScriptRunner {
 
     /** A script line for a message: control characters escaped, shortened beyond {@link #SHOWN_WHOLE} characters. */
     static String shown(String line) {
-        return line.length() <= SHOWN_WHOLE ? org.handsim.util.SafeText.escape(line) : org.handsim.util.SafeText.quote(line);
+        return line.length() <= SHOWN_WHOLE ? org.handsim.text.SafeText.escape(line) : org.handsim.text.SafeText.quote(line);
     }
 
     static String message(Throwable e) {
@@ -292,7 +294,7 @@ public final class ScriptRunner {
         if (window.simulator().previewing()) return window.kinematics().previewContacts();
         SimulationRunner.State s = window.runner().latest();
         int n = 0;
-        if (s.snapshot() != null) for (org.handsim.sim.Snapshot.FingerSnapshot f : s.snapshot().fingers()) n += f.contactCount();
+        if (s.snapshot() != null) for (org.handsim.model.Snapshot.FingerSnapshot f : s.snapshot().fingers()) n += f.contactCount();
         return n;
     }
 
@@ -307,7 +309,7 @@ public final class ScriptRunner {
         if (s.snapshot() == null) return out;
         java.awt.Point at = SwingUtilities.convertPoint(window.view().canvas().getParent(), window.view().canvas().getLocation(), window.frame());
         for (int k = 1; k <= 3; k++) {
-            org.handsim.sim.Snapshot.FingerSnapshot f = s.snapshot().fingers()[k - 1];
+            org.handsim.model.Snapshot.FingerSnapshot f = s.snapshot().fingers()[k - 1];
             double[] p = f.contactPoints();
             for (int i = 0; i < f.contactCount(); i++) {
                 double[] w = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
@@ -350,7 +352,7 @@ public final class ScriptRunner {
     }
 
     private void say(String line) {
-        out.println("gui: " + org.handsim.util.SafeText.line(line));
+        out.println("gui: " + org.handsim.text.SafeText.line(line));
         out.flush();
     }
 
@@ -420,7 +422,7 @@ public final class ScriptRunner {
             f.postActionEvent();
             // the panel refuses a value in the status bar (in red): the action failed then
             if (window.statusSerial() != before && window.statusRefused()) {
-                throw new ScriptFailure("set " + name + " " + org.handsim.util.SafeText.quote(value) + ": the window refused it: " + window.statusText(), 1);
+                throw new ScriptFailure("set " + name + " " + org.handsim.text.SafeText.quote(value) + ": the window refused it: " + window.statusText(), 1);
             }
         } else if (found instanceof JTextComponent) {
             ((JTextComponent) found).setText(value);
@@ -435,7 +437,7 @@ public final class ScriptRunner {
             box.setSelectedIndex(pick);
         } else if (found instanceof JSlider) {
             try {
-                ((JSlider) found).setValue((int) Math.round(org.handsim.util.Decimal.parse(value)));
+                ((JSlider) found).setValue((int) Math.round(org.handsim.text.Decimal.parse(value)));
             } catch (NumberFormatException e) {
                 throw new ScriptFailure("the slider '" + name + "' needs a number, got '" + value + "'", 1);
             }

@@ -6,12 +6,12 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
-import org.handsim.sim.ClutchState;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
-import org.handsim.sim.SimulationException;
-import org.handsim.sim.Snapshot;
+import org.handsim.clutch.ClutchState;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
+import org.handsim.model.SimulationException;
+import org.handsim.model.Snapshot;
 
 /**
  * Runs the {@link HandModel} on its own thread, as an Easy-Java-Simulations program does:
@@ -220,7 +220,7 @@ public final class SimulationRunner implements AutoCloseable {
 
     /**
      * Writes the current model's trace — every step simulated so far, in the trace.csv contract
-     * of {@code handsim run} (the same writer, {@code sim.Recorder}) — on the simulation thread,
+     * of {@code handsim run} (the same writer, {@code trace.Recorder}) — on the simulation thread,
      * between steps. The future completes with the number of rows, or exceptionally (no model,
      * not recorded, an I/O error).
      */

@@ -64,7 +64,7 @@ import org.jfree.data.xy.XYSeriesCollection;
  * event dispatch thread at display rate on a loaded machine. So the chart, its datasets and
  * its drawing belong to one thread of their own ({@code handsim-charts}, low priority):
  * {@link #add} queues rows from any thread; {@link #flush} asks for a redraw; the chart thread
- * moves the queued rows into the series with {@code XYSeries.add(x, y, false)} (STYLE.md item
+ * moves the queued rows into the series with {@code XYSeries.add(x, y, false)} (docs/STYLE.md, item
  * 16), tells each series once, draws the whole chart into a new image of the component's size
  * and hands it over (a volatile field); the Swing component only paints that image. Redraw
  * requests that arrive while a drawing is under way are merged into one. A row of a new

@@ -56,11 +56,11 @@ final class Widgets {
     static double number(JTextField f, String what) {
         String t = f.getText().trim();
         try {
-            double v = org.handsim.util.Decimal.parse(t);   // decimals only: '0d', 'NaN' are not numbers
+            double v = org.handsim.text.Decimal.parse(t);   // decimals only: '0d', 'NaN' are not numbers
             if (!Double.isFinite(v)) throw new NumberFormatException();
             return v;
         } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(what + ": '" + t + "' is not a number");
+            throw new IllegalArgumentException(what + ": '" + org.handsim.text.SafeText.quote(t) + "' is not a number");
         }
     }
 

@@ -4,9 +4,8 @@
  * contacts, live JFreeChart traces, Play / Pause / Step / Reset, menus and shortcuts, and a
  * scripted mode for tests and documentation ({@link org.handsim.gui.Script}). The simulator
  * itself — view and model — is one embeddable component, {@link org.handsim.gui.HandSimPanel};
- * {@link org.handsim.gui.HandSimWindow} is built around it. Uses {@code sim} (and the
- * kinematics it is built on), {@code chart} (exports) and JFreeChart; nothing outside
- * {@code gui} and {@code cli} uses this package (the README's embedding example aside).
+ * {@link org.handsim.gui.HandSimWindow} is built around it. Nothing outside {@code gui} and
+ * {@code cli} uses this package (the README's embedding example aside).
  *
  * <h2>Thread rules</h2>
  * <ol>
@@ -15,7 +14,7 @@
  *       {@code HandModel}. Other threads send it commands (load, play, pause, step, reset,
  *       speed), which it runs in order.</li>
  *   <li><b>Views read immutable values.</b> The simulation thread publishes a
- *       {@link org.handsim.gui.SimulationRunner.State} (holding a {@code sim.Snapshot}) through
+ *       {@link org.handsim.gui.SimulationRunner.State} (holding a {@code model.Snapshot}) through
  *       a volatile field and trace rows through a concurrent queue; nothing published is
  *       changed afterwards.</li>
  *   <li><b>Swing and the scene graph belong to the event dispatch thread.</b> A
@@ -25,7 +24,7 @@
  *       measurement's spin behaviour runs on Java3D's behaviour thread).</li>
  *   <li><b>The grasp has a thread too.</b> At each publication the simulation thread hands
  *       {@link org.handsim.gui.LiveGrasp} a copy of what a grasp evaluation reads
- *       ({@code sim.GraspAssessment.Input}) when the contacts changed, without waiting; the
+ *       ({@code grasp.GraspAssessment.Input}) when the contacts changed, without waiting; the
  *       grasp thread evaluates the newest copy at most 10 times a second and publishes an
  *       immutable result through a volatile field, which the EDT's timer shows.</li>
  *   <li><b>Nothing slow on the EDT.</b> Stepping, the grasp evaluation, and reading VRML files
@@ -39,5 +38,7 @@
  *       appears in the status bar and a dialog; uncaught exceptions (on the EDT or elsewhere)
  *       are recorded by {@link org.handsim.gui.ErrorLog} and make a scripted run fail.</li>
  * </ol>
+ *
+ * <p>May use every room below it (docs/DESIGN.md, "Modules").
  */
 package org.handsim.gui;

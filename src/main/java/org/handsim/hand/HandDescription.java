@@ -3,11 +3,11 @@ package org.handsim.hand;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import org.handsim.files.InputFile;
 import org.handsim.math.RigidTransform;
-import org.handsim.util.Json;
-import org.handsim.util.JsonObject;
+import org.handsim.text.Json;
+import org.handsim.text.JsonObject;
 
 /**
  * The whole hand, loaded from a description file (JSON). {@link #barrettHand()} is the
@@ -119,9 +119,17 @@ public final class HandDescription {
         return h;
     }
 
-    /** Loads a description file. */
+    /** Largest hand description file accepted: the bundled one is 7 KB. */
+    public static final long MAX_FILE_BYTES = 1 << 20;
+
+    /**
+     * Loads a description file through the input gate ({@link InputFile}: a regular file of at
+     * most {@link #MAX_FILE_BYTES}, UTF-8).
+     *
+     * @throws InputFile.InputFileException naming the file: not a regular file, too large, not UTF-8
+     */
     public static HandDescription load(Path file) throws IOException {
-        return parse(file.toString(), Files.readString(file));
+        return parse(file.toString(), InputFile.readText(file, MAX_FILE_BYTES, "the limit of hand files"));
     }
 
     /**

@@ -1,6 +1,6 @@
 package org.handsim.hand;
 
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 
 /**
  * The ranges of the physical quantities HandSim reads from people (options, CSV rows, scenario
@@ -20,6 +20,11 @@ import org.handsim.util.Decimal;
  *       rad/s</td></tr>
  *   <tr><td>joint acceleration</td><td>1e6 rad/s²</td><td>a step of a few rad/s in a
  *       millisecond is 1e3–1e4</td></tr>
+ *   <tr><td>motor speed (trapezoid {@code v_max})</td><td>1e7 counts/s</td><td>about 1 400 rad/s
+ *       of an inner joint (7 162 counts/rad); the motors close a finger in about a second,
+ *       2e4 counts/s</td></tr>
+ *   <tr><td>motor acceleration (trapezoid {@code a_max})</td><td>1e10 counts/s²</td><td>about
+ *       1.4e6 rad/s² of an inner joint; the paper's profile ramps at 2e4 counts/s²</td></tr>
  *   <tr><td>target, position</td><td>1e6 m</td><td>{@code math.RigidTransform.MAX_POSITION_M}:
  *       a finger reaches 0.2 m</td></tr>
  * </table>
@@ -64,4 +69,8 @@ public final class InputRanges {
     public static final Range JOINT_SPEED = new Range(1000, "rad/s", "the fingers turn at a few rad/s");
     public static final Range JOINT_ACCELERATION = new Range(1e6, "rad/s^2", "a few rad/s gained in a millisecond is 1e3 to 1e4");
     public static final Range POSITION = new Range(1e6, "m", "a finger reaches 0.2 m");
+    public static final Range MOTOR_SPEED = new Range(1e7, "counts/s", "the inner joint at 1 400 rad/s; the motors close a finger"
+        + " in about a second, 2e4 counts/s");
+    public static final Range MOTOR_ACCELERATION = new Range(1e10, "counts/s^2", "the inner joint at 1.4e6 rad/s^2; the paper's"
+        + " profile ramps at 2e4 counts/s^2");
 }

@@ -10,7 +10,7 @@ package org.handsim.math;
  * {@code n·n}. {@link #decompose} works in place: on success the lower triangle (diagonal
  * included) holds L; the strict upper triangle is left as it was and never read again.
  *
- * <p><b>Failure is an outcome</b> (STYLE.md item 8, after EJML's {@code decompose} returning
+ * <p><b>Failure is an outcome</b> (docs/STYLE.md, item 8, after EJML's {@code decompose} returning
  * false): a matrix that is not numerically positive definite makes {@link #decompose} return
  * {@code false}. "Numerically" means every pivot {@code d_j = a_jj − Σ l_jk²} must exceed
  * {@link #PIVOT_TOLERANCE} times the original diagonal entry {@code a_jj}: a pivot that small

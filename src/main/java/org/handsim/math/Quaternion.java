@@ -6,7 +6,7 @@ package org.handsim.math;
  * representations", J. Astronautical Sciences 41(4), 1993, for the conventions, here the
  * Hamilton/robotics one).
  *
- * <p><b>Convention</b> (STYLE.md item 1): q = (cos θ/2, sin θ/2·u) is the rotation by θ about
+ * <p><b>Convention</b> (docs/STYLE.md, item 1): q = (cos θ/2, sin θ/2·u) is the rotation by θ about
  * the unit axis u acting on vectors, {@code v' = q ⊗ (0, v) ⊗ q*}; as an orientation it maps
  * body coordinates to world coordinates. {@code a ⊗ b} applies b first. Worked example:
  * q = (cos 45°, 0, 0, sin 45°), a quarter turn about z, maps (1, 0, 0) to (0, 1, 0); its

@@ -38,13 +38,13 @@ public final class RigidTransform {
     public static String poseProblem(String positionName, double[] position, String rotationName, double[] rotation) {
         for (int i = 0; position != null && i < 3; i++) {
             if (!(Math.abs(position[i]) <= MAX_POSITION_M)) {
-                return positionName + "[" + i + "] must be within +-1e6 m, got " + org.handsim.util.Decimal.format(position[i]);
+                return positionName + "[" + i + "] must be within +-1e6 m, got " + org.handsim.text.Decimal.format(position[i]);
             }
         }
         for (int i = 0; rotation != null && i < 3; i++) {
             if (!(Math.abs(rotation[i]) <= MAX_ROTATION_RAD)) {
                 return rotationName + "[" + i + "] must be within +-1000 rad (an axis-angle vector: its length is the angle), got "
-                    + org.handsim.util.Decimal.format(rotation[i]);
+                    + org.handsim.text.Decimal.format(rotation[i]);
             }
         }
         return null;

@@ -1,6 +1,6 @@
 package org.handsim.mesh;
 
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 
 /**
  * A mesh file (OBJ, STL) that cannot be read. The message starts with where the problem is:

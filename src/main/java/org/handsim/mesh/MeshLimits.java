@@ -10,12 +10,18 @@ package org.handsim.mesh;
  *   <caption>Limits and their reasons</caption>
  *   <tr><th>limit</th><th>value</th><th>why</th></tr>
  *   <tr><td>{@link #MAX_FILE_BYTES}</td><td>256 MiB</td><td>file size, and a gzip VRML file's
- *       expanded size: the largest model of the VRML corpus is 7 MB expanded; the parsers hold
- *       the whole text, so memory is a small multiple of this</td></tr>
+ *       expanded size: the largest model of the VRML corpus is 7 MB expanded; the VRML and STL
+ *       parsers hold the whole text, so memory is a small multiple of this; the OBJ reader
+ *       holds one line and the checked copy of what Java3D needs (degenerate faces dropped)</td></tr>
  *   <tr><td>{@link #MAX_TRIANGLES}</td><td>20 million</td><td>the triangles of one file (VRML:
  *       IndexedFaceSet polygons as written and the primitives' tessellations, counted as each
  *       node is parsed; DEF/USE sharing is multiplied out by {@link TessellationWalk}); a
  *       BarrettHand grasp needs thousands, the corpus's largest file has 84 000</td></tr>
+ *   <tr><td>{@link #MAX_FACE_CORNERS}</td><td>1 024</td><td>corners of one OBJ face (Java3D's triangulator):
+ *       triangulating a polygon takes more than linear time and memory (10 000 corners 3 s,
+ *       100 000 corners 83 s and 722 MB); the VRML corpus's largest polygon has 144</td></tr>
+ *   <tr><td>{@link #MAX_LINE_BYTES}</td><td>1 MiB</td><td>one OBJ line (continuations joined): the
+ *       reader holds one line at a time, never the whole text</td></tr>
  *   <tr><td>{@link #MAX_NODES}</td><td>1 million</td><td>VRML nodes parsed (each about 100
  *       bytes; the corpus's largest file has a few thousand)</td></tr>
  *   <tr><td>{@link #MAX_SHAPES}</td><td>50 000</td><td>VRML {@code Shape} nodes and OBJ groups:
@@ -39,6 +45,17 @@ public final class MeshLimits {
     public static final long MAX_TRIANGLES = 20_000_000L;
     /** The words for {@link #MAX_TRIANGLES} in messages. */
     public static final String TRIANGLE_LIMIT = "the limit of " + MAX_TRIANGLES + " triangles per object file";
+    /**
+     * Most corners of one OBJ face: Java3D's triangulator, which ObjectFile uses, takes time and
+     * memory that grow faster than the corners (measured: 10 000 corners 3 s, 100 000 corners
+     * 83 s and 722 MB); the VRML corpus's largest polygon has 144. (VRML polygons go through our
+     * own ear clipping, whose work per face is bounded.)
+     */
+    public static final int MAX_FACE_CORNERS = 1024;
+    /** The words for {@link #MAX_FACE_CORNERS} in messages. */
+    public static final String FACE_LIMIT = "the limit of " + MAX_FACE_CORNERS + " corners per face";
+    /** Longest line of a text object file (OBJ), bytes: a face at the corner limit with long references fits many times. */
+    public static final int MAX_LINE_BYTES = 1 << 20;
     /** Most VRML nodes one load may parse. */
     public static final long MAX_NODES = 1_000_000L;
     /** Most VRML Shape nodes (OBJ groups) one file may hold. */
@@ -55,7 +72,7 @@ public final class MeshLimits {
     /** Why {@code s} is not a usable scale factor, or null when it lies in [{@link #MIN_SCALE}, {@link #MAX_SCALE}]. */
     public static String scaleProblem(double s) {
         if (s >= MIN_SCALE && s <= MAX_SCALE) return null;
-        return "must be in [1e-6, 1e6], got " + org.handsim.util.Decimal.format(s);
+        return "must be in [1e-6, 1e6], got " + org.handsim.text.Decimal.format(s);
     }
 
     /**
@@ -70,7 +87,7 @@ public final class MeshLimits {
             if (!(c <= worst)) worst = c;   // NaN too
         }
         if (worst <= MAX_COORDINATE_M) return null;
-        return "coordinates reach " + (Double.isFinite(worst) ? org.handsim.util.Decimal.format(worst) : String.valueOf(worst))
+        return "coordinates reach " + (Double.isFinite(worst) ? org.handsim.text.Decimal.format(worst) : String.valueOf(worst))
             + " m from the file's origin (after units and scale), more than the limit of 1e6 m";
     }
 

@@ -1,12 +1,13 @@
 package org.handsim.mesh;
 
-import org.handsim.util.InputFile;
-import org.handsim.util.SafeText;
+import org.handsim.files.InputFile;
+import org.handsim.text.SafeText;
 import java.io.IOException;
 import java.io.StringReader;
-import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.jogamp.java3d.BranchGroup;
@@ -46,29 +47,77 @@ public final class ObjReader {
     /**
      * What was read.
      *
-     * @param walk     the tessellation walk's result (meshes, shapes, degenerate triangles dropped)
-     * @param vertices {@code v} statements in the file
-     * @param faces    {@code f}/{@code fo} statements in the file
+     * @param walk       the tessellation walk's result (meshes, shapes, degenerate triangles dropped)
+     * @param vertices   {@code v} statements in the file
+     * @param faces      {@code f}/{@code fo} statements in the file
+     * @param degenerate zero-area triangles dropped: those of faces dropped as the file was read
+     *                   and those the walk dropped
      */
-    public record Result(TessellationWalk.Result walk, int vertices, int faces) {
+    public record Result(TessellationWalk.Result walk, int vertices, int faces, long degenerate) {
         /** All triangles in one mesh. */
         public TriangleMesh mesh() { return walk.merged(); }
     }
 
     /**
-     * Reads an OBJ file into triangles, coordinates multiplied by {@code scale}.
+     * Reads an OBJ file into triangles, coordinates multiplied by {@code scale}. The file is read
+     * a line at a time: what is kept is the checked copy of what ObjectFile needs, never the
+     * whole text.
      *
      * @throws MeshFileException {@code FILE:LINE:COL: message}
      * @throws IOException       if the file cannot be read at all
      */
     public static Result read(Path file, double scale) throws IOException {
-        byte[] b = InputFile.readBytes(file, MeshLimits.MAX_FILE_BYTES, MeshLimits.FILE_LIMIT);
-        return read(file.toString(), new String(b, StandardCharsets.UTF_8), scale);
+        InputFile.require(file);
+        long size = Files.size(file);
+        if (size > MeshLimits.MAX_FILE_BYTES) {
+            throw new InputFile.InputFileException(file + ": is " + size + " bytes, more than " + MeshLimits.FILE_LIMIT + " ("
+                + MeshLimits.MAX_FILE_BYTES + " bytes)");
+        }
+        Checked c;
+        try (InputFile.Lines lines = new InputFile.Lines(file, MeshLimits.MAX_LINE_BYTES, false)) {
+            c = check(file.toString(), lines::next);
+        } catch (InputFile.InputFileException e) {   // a line too long: the reader's words, as the mesh readers say it
+            throw new MeshFileException(e.getMessage(), e);
+        }
+        return build(file.toString(), c, scale);
+    }
+
+    /**
+     * Reads the bytes of an OBJ file that the caller read through the input gate (the mesh
+     * cache's key needs them first), a line at a time as {@link #read(Path, double)} reads the file.
+     *
+     * @throws MeshFileException {@code FILE:LINE:COL: message}
+     */
+    public static Result read(Path file, byte[] bytes, double scale) throws IOException {
+        Checked c;
+        try (InputFile.Lines lines = new InputFile.Lines(file.toString(), bytes, MeshLimits.MAX_LINE_BYTES, false)) {
+            c = check(file.toString(), lines::next);
+        } catch (InputFile.InputFileException e) {   // a line too long: the reader's words, as the mesh readers say it
+            throw new MeshFileException(e.getMessage(), e);
+        }
+        return build(file.toString(), c, scale);
     }
 
     /** Reads OBJ text; {@code name} names it in messages and the mesh. */
     public static Result read(String name, String text, double scale) {
-        Checked c = check(name, text);
+        int[] at = {0};
+        Checked c;
+        try {
+            c = check(name, () -> {
+                if (at[0] > text.length() || at[0] == text.length() && text.endsWith("\n")) return null;
+                int end = text.indexOf('\n', at[0]);
+                if (end < 0) end = text.length();
+                String line = text.substring(at[0], end);
+                at[0] = end + 1;
+                return line;
+            });
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);   // a string is never unreadable
+        }
+        return build(name, c, scale);
+    }
+
+    private static Result build(String name, Checked c, double scale) {
         BranchGroup group;
         try {
             Scene scene = new ObjectFile(ObjectFile.TRIANGULATE).load(new StringReader(c.normalised));
@@ -84,11 +133,16 @@ public final class ObjReader {
         } catch (IllegalStateException | IllegalArgumentException e) {
             throw new MeshFileException(name + ":1:1: " + e.getMessage(), e);
         }
-        return new Result(r, c.vertices, c.faces);
+        return new Result(r, c.vertices, c.faces, r.degenerate + c.dropped);
     }
 
-    /** The text as checked: counts, and the copy ObjectFile reads. */
-    private record Checked(String normalised, int vertices, int faces) {}
+    /** The next line of the text without its line end, or null at its end. */
+    private interface LineSource {
+        String next() throws IOException;
+    }
+
+    /** The text as checked: counts, the copy ObjectFile reads, and the triangles of faces dropped as degenerate. */
+    private record Checked(String normalised, int vertices, int faces, long dropped) {}
 
     private static final List<String> KNOWN = List.of("v", "vn", "vt", "f", "fo", "l", "p", "g", "o", "s",
         "mtllib", "usemtl", "maplib", "usemap");
@@ -96,33 +150,48 @@ public final class ObjReader {
         "parm", "trim", "hole", "scrv", "sp", "end", "con", "mg", "bevel", "c_interp", "d_interp", "lod", "shadow_obj",
         "trace_obj", "ctech", "stech");
 
-    /** Checks every line; returns the counts and the normalised copy. */
-    private static Checked check(String name, String text) {
-        StringBuilder out = new StringBuilder(text.length());
+    /**
+     * Checks every line as it comes; returns the counts and the normalised copy. A face whose
+     * triangles all have zero area — fewer than three distinct corner positions, or a triangle
+     * whose corners are collinear as the tessellation walk computes it — is counted and dropped
+     * here, so a file of millions of them holds no memory; the triangles it would have given are
+     * the walk's degenerate ones, counted the same. The first face of each group is kept
+     * whatever it is, so the groups give the same shapes as before.
+     */
+    private static Checked check(String name, LineSource lines) throws IOException {
+        StringBuilder out = new StringBuilder();
         int nv = 0, nvt = 0, nvn = 0, faces = 0, groups = 0;
-        long triangles = 0;
+        long triangles = 0, dropped = 0;
+        float[] pos = new float[3 * 1024];   // the vertices read so far, as float (as Java3D keeps them)
         boolean model = false;   // a known statement seen: the file is an OBJ file, its tokens may be quoted
-        String[] lines = text.split("\n", -1);
-        for (int i = 0; i < lines.length; i++) {
-            int lineNo = i + 1;
+        boolean groupHasFace = false;   // a face of the group since its g or o statement was kept
+        int physical = 0;
+        String next = lines.next();
+        while (next != null) {
+            physical++;
+            int lineNo = physical;
             // join continuation lines (a backslash at the end), keeping the first line's number
-            StringBuilder joined = new StringBuilder(strip(lines[i]));
-            List<Integer> starts = new ArrayList<>();
-            starts.add(0);
-            while (joined.length() > 0 && joined.charAt(joined.length() - 1) == '\\' && i + 1 < lines.length) {
-                joined.setLength(joined.length() - 1);
-                joined.append(' ');
-                i++;
-                joined.append(strip(lines[i]));
+            String line = strip(next);
+            next = lines.next();
+            if (line.endsWith("\\") && next != null) {
+                StringBuilder joined = new StringBuilder(line);
+                while (joined.length() > 0 && joined.charAt(joined.length() - 1) == '\\' && next != null) {
+                    joined.setLength(joined.length() - 1);
+                    joined.append(' ');
+                    joined.append(strip(next));
+                    physical++;
+                    next = lines.next();
+                    if (joined.length() > MeshLimits.MAX_LINE_BYTES) {
+                        throw MeshFileException.at(name, lineNo, 1, "a statement longer than " + MeshLimits.MAX_LINE_BYTES
+                            + " characters (the limit of OBJ lines)");
+                    }
+                }
+                line = joined.toString();
             }
-            String line = joined.toString();
             int hash = line.indexOf('#');
             if (hash >= 0) line = line.substring(0, hash);
             List<int[]> spans = tokens(line);
-            if (spans.isEmpty()) {
-                out.append('\n');
-                continue;
-            }
+            if (spans.isEmpty()) continue;
             String kw = line.substring(spans.get(0)[0], spans.get(0)[1]);
             String key = kw.toLowerCase(Locale.ROOT);
             int n = spans.size() - 1;
@@ -143,7 +212,11 @@ public final class ObjReader {
             switch (key) {
                 case "v":
                     if (n != 3 && n != 4 && n != 6 && n != 7) throw at(name, lineNo, line, spans, n, "a vertex needs x y z (and optionally w, or r g b), found " + n + " numbers");
-                    for (int t = 1; t <= n; t++) number(name, lineNo, line, spans.get(t), "vertex coordinate");
+                    if (3 * nv + 3 > pos.length) pos = Arrays.copyOf(pos, 2 * pos.length);
+                    for (int t = 1; t <= n; t++) {
+                        double x = number(name, lineNo, line, spans.get(t), "vertex coordinate");
+                        if (t <= 3) pos[3 * nv + t - 1] = (float) x;
+                    }
                     nv++;
                     out.append("v");
                     for (int t = 1; t <= 3; t++) out.append(' ').append(line, spans.get(t)[0], spans.get(t)[1]);
@@ -170,7 +243,12 @@ public final class ObjReader {
                     if (n < min) {
                         throw at(name, lineNo, line, spans, n, (face ? "a face needs at least 3 corners" : key.equals("l") ? "a line needs at least 2 points" : "a point statement needs a vertex") + ", found " + n);
                     }
+                    if (face && n > MeshLimits.MAX_FACE_CORNERS) {
+                        throw MeshFileException.at(name, lineNo, spans.get(MeshLimits.MAX_FACE_CORNERS + 1)[0] + 1, "a face of " + n
+                            + " corners, more than " + MeshLimits.FACE_LIMIT);
+                    }
                     StringBuilder f = new StringBuilder(face ? "f" : "");
+                    int[] corners = new int[n];
                     for (int t = 1; t <= n; t++) {
                         int[] s = spans.get(t);
                         String ref = line.substring(s[0], s[1]);
@@ -190,6 +268,7 @@ public final class ObjReader {
                             resolved[part] = index(name, lineNo, col, parts[part], counts[part], what[part]);
                             col += parts[part].length() + 1;
                         }
+                        corners[t - 1] = resolved[0] - 1;
                         if (face) {
                             // absolute indices: ObjectFile resolves negative ones differently in places
                             f.append(' ').append(resolved[0]);
@@ -201,9 +280,13 @@ public final class ObjReader {
                         faces++;
                         triangles += n - 2;
                         if (triangles > MeshLimits.MAX_TRIANGLES) throw MeshFileException.at(name, lineNo, 1, "more than " + MeshLimits.TRIANGLE_LIMIT);
-                        out.append(f).append('\n');
-                    } else {
-                        out.append('\n');
+                        // the first face of a group stays whatever it is: the group's shape is there as before
+                        if (groupHasFace && degenerate(pos, corners)) {
+                            dropped += n - 2;
+                        } else {
+                            out.append(f).append('\n');
+                            groupHasFace = true;
+                        }
                     }
                     break;
                 }
@@ -213,15 +296,45 @@ public final class ObjReader {
                         throw MeshFileException.at(name, lineNo, 1, "more than " + MeshLimits.MAX_SHAPES + " groups (the limit of shapes per object file)");
                     }
                     out.append(n == 0 ? "g" : "g " + line.substring(spans.get(1)[0]).trim()).append('\n');
+                    groupHasFace = false;
                     break;
                 case "s":
                     out.append(line.trim()).append('\n');
                     break;
                 default:   // materials and maps: not needed for geometry
-                    out.append('\n');
+                    break;
             }
         }
-        return new Checked(out.toString(), nv, faces);
+        return new Checked(out.toString(), nv, faces, dropped);
+    }
+
+    /**
+     * Whether every triangle of a face has zero area whatever the triangulation: fewer than three
+     * distinct corner positions, or a triangle whose corners the tessellation walk's test finds
+     * collinear in each of its three orders (so the walk would drop it in any).
+     */
+    static boolean degenerate(float[] pos, int[] corners) {
+        int a = corners[0], b = -1, c = -1;
+        for (int i = 1; i < corners.length && c < 0; i++) {
+            int k = corners[i];
+            if (same(pos, k, a) || b >= 0 && same(pos, k, b)) continue;
+            if (b < 0) b = k; else c = k;
+        }
+        if (c < 0) return true;
+        if (corners.length > 3) return false;
+        return zeroArea(pos, a, b, c) && zeroArea(pos, b, c, a) && zeroArea(pos, c, a, b);
+    }
+
+    private static boolean same(float[] pos, int i, int j) {
+        return pos[3 * i] == pos[3 * j] && pos[3 * i + 1] == pos[3 * j + 1] && pos[3 * i + 2] == pos[3 * j + 2];
+    }
+
+    /** {@link TessellationWalk}'s test: the cross product of the two edges from the first corner has no length. */
+    private static boolean zeroArea(float[] p, int a, int b, int c) {
+        double ux = (double) p[3 * b] - p[3 * a], uy = (double) p[3 * b + 1] - p[3 * a + 1], uz = (double) p[3 * b + 2] - p[3 * a + 2];
+        double wx = (double) p[3 * c] - p[3 * a], wy = (double) p[3 * c + 1] - p[3 * a + 1], wz = (double) p[3 * c + 2] - p[3 * a + 2];
+        double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+        return !(nx * nx + ny * ny + nz * nz > 0);
     }
 
     private static String strip(String s) {
@@ -249,15 +362,17 @@ public final class ObjReader {
 
     private static final java.util.regex.Pattern DECIMAL = java.util.regex.Pattern.compile("[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
 
-    private static void number(String name, int lineNo, String line, int[] span, String what) {
+    private static double number(String name, int lineNo, String line, int[] span, String what) {
         String s = line.substring(span[0], span[1]);
         if (!DECIMAL.matcher(s).matches()) {
             boolean nonFinite = s.toLowerCase(Locale.ROOT).matches("[-+]?(nan|inf|infinity)");
             throw MeshFileException.at(name, lineNo, span[0] + 1, what + " '" + SafeText.quote(s) + "' is not " + (nonFinite ? "a finite number" : "a number"));
         }
-        if (!(Math.abs(Double.parseDouble(s)) <= Float.MAX_VALUE)) {
-            throw MeshFileException.at(name, lineNo, span[0] + 1, what + " " + s + " is beyond the range of a float (Java3D stores coordinates as float)");
+        double x = Double.parseDouble(s);
+        if (!(Math.abs(x) <= Float.MAX_VALUE)) {
+            throw MeshFileException.at(name, lineNo, span[0] + 1, what + " " + SafeText.quote(s) + " is beyond the range of a float (Java3D stores coordinates as float)");
         }
+        return x;
     }
 
     /** A 1-based (or negative, relative) index resolved to 1-based, or an error at {@code col}. */

@@ -2,7 +2,7 @@ package org.handsim.mesh;
 
 import java.io.IOException;
 import java.io.Writer;
-import org.handsim.util.Decimal;
+import org.handsim.text.Decimal;
 
 /**
  * Writes triangle meshes as Wavefront OBJ text: one {@code o name} per mesh, {@code v x y z} per

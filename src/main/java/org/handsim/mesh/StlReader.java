@@ -1,7 +1,7 @@
 package org.handsim.mesh;
 
-import org.handsim.util.InputFile;
-import org.handsim.util.SafeText;
+import org.handsim.files.InputFile;
+import org.handsim.text.SafeText;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -14,8 +14,8 @@ import java.util.Map;
 
 /**
  * A strict reader of STL (stereolithography) files, ASCII and binary, into one
- * {@link TriangleMesh}. There is no well-kept STL reader for Java on Maven Central (checked
- * for issue 14; docs/DESIGN.md), and the format is small, so this is ours.
+ * {@link TriangleMesh}. There is no well-kept STL reader for Java on Maven Central (checked;
+ * docs/DESIGN.md), and the format is small, so this is ours.
  *
  * <h2>The two forms</h2>
  * <ul>
@@ -157,7 +157,7 @@ public final class StlReader {
     /** The ASCII form, token by token with line and column. */
     private static final class Ascii {
         private final String name;
-        private final String text;
+        private final byte[] text;   // read as ISO-8859-1, byte by byte: no second copy of the file as a String
         private final Builder out;
         private int pos, line = 1, lineStart;
         private int tokLine, tokCol;
@@ -165,7 +165,7 @@ public final class StlReader {
 
         Ascii(String name, byte[] data, double scale) {
             this.name = name;
-            this.text = new String(data, StandardCharsets.ISO_8859_1);
+            this.text = data;
             this.out = new Builder(name, scale, Math.max(16, data.length / 250));
         }
 
@@ -231,14 +231,14 @@ public final class StlReader {
 
         /** Skips to the end of the line (the solid's name). */
         private void restOfLine() {
-            while (pos < text.length() && text.charAt(pos) != '\n') pos++;
+            while (pos < text.length && text[pos] != '\n') pos++;
         }
 
         /** The next whitespace-separated token, or null at the end. */
         private void next() {
-            int n = text.length();
+            int n = text.length;
             while (pos < n) {
-                char c = text.charAt(pos);
+                char c = (char) (text[pos] & 0xff);
                 if (c == '\n') {
                     line++;
                     lineStart = pos + 1;
@@ -252,8 +252,8 @@ public final class StlReader {
                 return;
             }
             int s = pos;
-            while (pos < n && !Character.isWhitespace(text.charAt(pos))) pos++;
-            tok = text.substring(s, pos);
+            while (pos < n && !Character.isWhitespace((char) (text[pos] & 0xff))) pos++;
+            tok = new String(text, s, pos - s, StandardCharsets.ISO_8859_1);
             tokLine = line;
             tokCol = s - lineStart + 1;
         }
@@ -269,26 +269,29 @@ public final class StlReader {
         private int[] tri;
         private int nv, nt, facets, degenerate;
         private final int[] corner = new int[3];
+        private final double[] s = new double[9];
 
         private record Vertex(double x, double y, double z) {}
 
         Builder(String name, double scale, int expected) {
             this.name = name;
             this.scale = scale;
-            v = new double[3 * Math.max(8, Math.min(expected, 1 << 22))];
-            tri = new int[3 * Math.max(8, Math.min(expected, 1 << 22))];
+            v = new double[3 * Math.max(8, Math.min(expected, 1 << 16))];
+            tri = new int[3 * Math.max(8, Math.min(expected, 1 << 16))];
         }
 
+        /** One triangle; a degenerate one is counted before any of its corners is kept (a file of them holds no memory). */
         void triangle(double[] p) {
             facets++;
-            for (int c = 0; c < 3; c++) corner[c] = vertex(p[3 * c] * scale, p[3 * c + 1] * scale, p[3 * c + 2] * scale);
-            double ux = v[3 * corner[1]] - v[3 * corner[0]], uy = v[3 * corner[1] + 1] - v[3 * corner[0] + 1], uz = v[3 * corner[1] + 2] - v[3 * corner[0] + 2];
-            double wx = v[3 * corner[2]] - v[3 * corner[0]], wy = v[3 * corner[2] + 1] - v[3 * corner[0] + 1], wz = v[3 * corner[2] + 2] - v[3 * corner[0] + 2];
+            for (int i = 0; i < 9; i++) s[i] = p[i] * scale + 0.0;   // + 0.0 turns −0 into +0
+            double ux = s[3] - s[0], uy = s[4] - s[1], uz = s[5] - s[2];
+            double wx = s[6] - s[0], wy = s[7] - s[1], wz = s[8] - s[2];
             double cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
             if (!(cx * cx + cy * cy + cz * cz > 0)) {
                 degenerate++;
                 return;
             }
+            for (int c = 0; c < 3; c++) corner[c] = vertex(s[3 * c], s[3 * c + 1], s[3 * c + 2]);
             if (3 * nt + 3 > tri.length) tri = Arrays.copyOf(tri, 2 * tri.length);
             tri[3 * nt] = corner[0];
             tri[3 * nt + 1] = corner[1];

@@ -3,7 +3,7 @@ package org.handsim.mesh;
 import org.handsim.math.RigidTransform;
 
 /**
- * An immutable triangle mesh on primitive arrays (STYLE.md item 5), in metres.
+ * An immutable triangle mesh on primitive arrays (docs/STYLE.md, item 5), in metres.
  *
  * <ul>
  *   <li>{@code vertices}: x, y, z of vertex i at {@code [3i, 3i+1, 3i+2]};</li>

@@ -9,5 +9,7 @@
  * <p>Units: metres (the walk's {@code scale} converts files in other units). Orientation:
  * counter-clockwise seen from outside, so normals point out and the signed volume of a closed
  * mesh is positive.
+ *
+ * <p>May use {@code files}, {@code math} and {@code text} (and Java3D; docs/DESIGN.md, "Modules").
  */
 package org.handsim.mesh;

@@ -1,7 +1,7 @@
 package org.handsim.plan;
 
 import org.handsim.math.RigidTransform;
-import org.handsim.sim.HandClearance;
+import org.handsim.model.HandClearance;
 
 /**
  * The approach of GraspIt!'s autograsp (Miller and Allen, "GraspIt!", IEEE RAM 2004;

@@ -12,9 +12,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.PriorityQueue;
 import java.util.function.Consumer;
-import org.handsim.util.AtomicFile;
-import org.handsim.util.JsonWriter;
-import org.handsim.util.Phase;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.JsonWriter;
+import org.handsim.process.Phase;
 
 /**
  * The outputs of a plan (contracts, README), fed one {@link TrialResult} at a time in trial
@@ -55,7 +55,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     }
 
     /**
-     * @param dir       where the files are written (a private folder of {@link org.handsim.util.OutputSet})
+     * @param dir       where the files are written (a private folder of {@link org.handsim.files.OutputSet})
      * @param published the plan folder they will be read from: the best grasps name the object
      *                  file relative to {@code published/best/}
      * @param scenarios writes the best trials as scenarios (a runner of the same spec)

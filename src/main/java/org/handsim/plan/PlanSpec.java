@@ -1,19 +1,19 @@
 package org.handsim.plan;
 
-import org.handsim.sim.NotFound;
+import org.handsim.scenario.NotFound;
 import java.io.Serializable;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.handsim.grasp.FrictionCone;
-import org.handsim.sim.UnitRule;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.util.FileName;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.scenario.UnitRule;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.model.SceneGeometry;
+import org.handsim.files.FileName;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 
 /**
  * Everything a trial needs, as plain serialisable values (a Spark executor rebuilds its

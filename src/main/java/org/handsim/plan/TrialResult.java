@@ -1,8 +1,8 @@
 package org.handsim.plan;
 
 import java.io.Serializable;
-import org.handsim.util.Decimal;
-import org.handsim.util.SafeText;
+import org.handsim.text.Decimal;
+import org.handsim.text.SafeText;
 
 /**
  * One row of {@code plan.csv} (the contract, README): the trial's parameters, where the hand
@@ -29,7 +29,7 @@ public record TrialResult(int index, boolean ok, double[] approach, double roll,
             null, 0, wallS, e, null, null);
     }
 
-    /** The CSV row (no line end). Numbers in util.Decimal's form (shortest round trip, integers as integers). */
+    /** The CSV row (no line end). Numbers in text.Decimal's form (shortest round trip, integers as integers). */
     public String csvRow() {
         StringBuilder sb = new StringBuilder(256);
         sb.append(index).append(',').append(ok ? "ok" : "failed");

@@ -5,14 +5,14 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.IntConsumer;
 import org.handsim.dynamics.HandDynamics;
-import org.handsim.sim.ClutchState;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandClearance;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.TorqueModel;
-import org.handsim.util.JsonWriter;
+import org.handsim.clutch.ClutchState;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandClearance;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SceneGeometry;
+import org.handsim.model.TorqueModel;
+import org.handsim.text.JsonWriter;
 
 /**
  * Runs trial i of a plan from its {@link PlanSpec} alone: sample its parameters
@@ -49,7 +49,7 @@ public final class TrialRunner {
     private SceneGeometry geometry;
 
     /**
-     * @throws org.handsim.sim.ScenarioException if the template's object cannot be loaded
+     * @throws org.handsim.scenario.ScenarioException if the template's object cannot be loaded
      */
     public TrialRunner(PlanSpec spec) {
         this(spec, null);
@@ -92,7 +92,7 @@ public final class TrialRunner {
         if (sg != null) geometry = sg;
         HandModel m = new HandModel(s, sg, dynamics, false);
         while (m.running() && !allStalled(m)) m.step();
-        GraspAssessment g = GraspAssessment.of(m, spec.mu(), spec.edges());
+        GraspAssessment g = GraspAssessment.of(m.graspInput(), spec.mu(), spec.edges());
         int contacts = 0;
         String[] states = new String[3];
         for (int k = 1; k <= 3; k++) {

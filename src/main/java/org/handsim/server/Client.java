@@ -99,7 +99,7 @@ public final class Client {
         report("in-process (" + served.name().toLowerCase(java.util.Locale.ROOT) + (why != null ? ": " + why : "") + ")");
         boolean training = System.getProperty(TRAINING) != null;
         if (training) loadServedPathClasses();
-        int code = org.handsim.cli.HandSim.execute(args);
+        int code = org.handsim.cli.HandSim.execute(java.util.List.of(ServerCommand.class), args);
         if (served == Outcome.NO_SERVER && !training) startServer(identity);
         System.exit(code);
     }
@@ -175,7 +175,11 @@ public final class Client {
                 }
             };
             Runtime.getRuntime().addShutdownHook(hook);
-            OutputStream stdout = new FileOutputStream(FileDescriptor.out), stderr = new FileOutputStream(FileDescriptor.err);
+            return relay(new FileOutputStream(FileDescriptor.out), new FileOutputStream(FileDescriptor.err));
+        }
+
+        /** Relays the command's output to these streams until its exit code, which it returns. */
+        int relay(OutputStream stdout, OutputStream stderr) throws IOException {
             byte[] buf = new byte[8192];
             try {
                 while (true) {
@@ -228,7 +232,7 @@ public final class Client {
     }
 
     /** Connects to the server of this client's identity and asks it to run {@code args}. */
-    private static Connection connect(String identity, String[] args) throws IOException {
+    static Connection connect(String identity, String[] args) throws IOException {
         Connection c = new Connection();
         Path dir = folder();
         String unsafe = dir == null ? "no cache folder" : unsafe(dir, true);

@@ -26,8 +26,8 @@ import java.util.Map;
 import java.util.Properties;
 import java.util.Set;
 import org.handsim.cli.HandSim;
-import org.handsim.util.CommandContext;
-import org.handsim.util.ExitCleanup;
+import org.handsim.process.CommandContext;
+import org.handsim.process.ExitCleanup;
 
 /**
  * The resident HandSim JVM: it runs the short commands {@link Client}s hand it, one at a time,
@@ -77,7 +77,7 @@ public final class Server {
     private long lastActivity = System.currentTimeMillis();
     private int served;
 
-    private Server(String identity, Path dir, String key, long idleMs) {
+    Server(String identity, Path dir, String key, long idleMs) {
         this.identity = identity;
         this.dir = dir;
         this.key = key;
@@ -108,7 +108,7 @@ public final class Server {
     }
 
     /** Holds the lock, listens, serves until told or timed out; returns the exit code. */
-    private int serve() throws IOException {
+    int serve() throws IOException {
         try (FileChannel lockChannel = FileChannel.open(Client.lockFile(dir, key), StandardOpenOption.CREATE, StandardOpenOption.WRITE)) {
             FileLock lock = lockChannel.tryLock();
             if (lock == null) {
@@ -412,7 +412,7 @@ public final class Server {
         Path tmp = null;
         try {
             tmp = Files.createTempDirectory("handsim-server-warm-up-");
-            Path mug = org.handsim.sim.Home.dir().resolve("scenarios").resolve("mug-grasp.json");
+            Path mug = org.handsim.scenario.Home.dir().resolve("scenarios").resolve("mug-grasp.json");
             PrintStream nowhere = new PrintStream(OutputStream.nullOutputStream(), true, Charset.defaultCharset());
             for (int round = 0; round < WARM_UP_ROUNDS; round++) {
                 for (String[] args : new String[][] {
@@ -447,7 +447,7 @@ public final class Server {
         } finally {
             if (tmp != null) {
                 try {
-                    org.handsim.util.Folders.deleteTree(tmp);
+                    org.handsim.files.Folders.deleteTree(tmp);
                 } catch (IOException e) {
                     // the system's temporary folder keeps it
                 }

@@ -4,10 +4,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.DoubleConsumer;
 import org.handsim.chart.StudyTable;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
 
 /**
  * Chart 1: the time step dt on the paper's experiment (scenarios/paper-breakaway.json, finger 3

@@ -18,11 +18,12 @@ import org.handsim.contact.ContactPatches;
 import org.handsim.hand.HandDescription;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.Simulation;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SceneGeometry;
+import org.handsim.model.Simulation;
+import org.handsim.scenario.SceneMeshes;
 
 /**
  * Chart 3: k of the k-DOPs (6, 14, 18, 26) and the all-pairs loop ({@link BruteForce}) on the
@@ -72,7 +73,7 @@ public final class KdopStudy implements Study {
 
     /** The grasp scenario of an object (see the class comment). */
     static Scenario graspScenario(Path object) {
-        TriangleMesh m = SceneGeometry.mesh(object, Scenario.DEFAULT_DIVISIONS, 1.0);
+        TriangleMesh m = SceneMeshes.mesh(object, Scenario.DEFAULT_DIVISIONS, 1.0);
         double[][] b = m.bounds();
         double cx = 0.5 * (b[0][0] + b[1][0]), cy = 0.5 * (b[0][1] + b[1][1]);
         // the finger bases stand Dw above the palm frame
@@ -92,7 +93,7 @@ public final class KdopStudy implements Study {
         Scenario s = graspScenario(object);
         HandModel model = Simulation.model(s, false);
         model.run(null);
-        TriangleMesh om = SceneGeometry.mesh(s.object().file(), s.object().divisions(), s.object().meshScale());
+        TriangleMesh om = SceneMeshes.mesh(s.object().file(), s.object().divisions(), s.object().meshScale());
         TriangleMesh[] links = new TriangleMesh[9];
         RigidTransform[] poses = new RigidTransform[9];
         RigidTransform worldFromObject = s.object().worldFromObject();
@@ -100,7 +101,7 @@ public final class KdopStudy implements Study {
             double[] frames = model.framesWorld(k);
             for (int j = 1; j <= 3; j++) {
                 RigidTransform worldFromLink = RigidTransform.of(java.util.Arrays.copyOfRange(frames, 12 * j, 12 * j + 12));
-                links[3 * (k - 1) + j - 1] = SceneGeometry.mesh(SceneGeometry.linkFile(j), SceneGeometry.LINK_DIVISIONS, 1.0);
+                links[3 * (k - 1) + j - 1] = SceneMeshes.mesh(SceneMeshes.linkFile(j), SceneMeshes.LINK_DIVISIONS, 1.0);
                 poses[3 * (k - 1) + j - 1] = worldFromLink.inverse().compose(worldFromObject);
             }
         }

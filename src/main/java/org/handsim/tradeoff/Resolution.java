@@ -14,7 +14,8 @@ import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.SceneGeometry;
+import org.handsim.model.SceneGeometry;
+import org.handsim.scenario.SceneMeshes;
 
 /**
  * A contact tolerance turned into a tessellation resolution ({@code handsim run --tolerance}),
@@ -135,7 +136,7 @@ public final class Resolution {
      * @param file      the object's VRML file
      * @param scale     the scenario's scale of it
      * @param tolerance metres, &gt; 0
-     * @throws org.handsim.sim.ScenarioException if the file cannot be loaded
+     * @throws org.handsim.scenario.ScenarioException if the file cannot be loaded
      */
     public static Choice choose(Path file, double scale, double tolerance) {
         return choose(table(), file, scale, tolerance);
@@ -143,12 +144,12 @@ public final class Resolution {
 
     static Choice choose(List<Entry> table, Path file, double scale, double tolerance) {
         int coarsest = table.get(0).divisions(), finest = table.get(table.size() - 1).divisions();
-        TriangleMesh fine = SceneGeometry.mesh(file, finest, scale), coarse = SceneGeometry.mesh(file, coarsest, scale);
+        TriangleMesh fine = SceneMeshes.mesh(file, finest, scale), coarse = SceneMeshes.mesh(file, coarsest, scale);
         double size = SceneGeometry.boundingSphere(fine)[3];
         if (fine.sameTrianglesAs(coarse)) {
             return new Choice(true, fine.triangleCount(), size, true, -1, Double.NaN);
         }
-        return choose(table, size, tolerance, d -> SceneGeometry.mesh(file, d, scale).triangleCount());
+        return choose(table, size, tolerance, d -> SceneMeshes.mesh(file, d, scale).triangleCount());
     }
 
     /** The choice for an object of bounding radius {@code size} (metres). */

@@ -3,7 +3,7 @@ package org.handsim.tradeoff;
 import java.util.List;
 import java.util.function.Supplier;
 
-/** Every study of {@code handsim tradeoff}, in chart order (issue 8: charts 1–4). */
+/** Every study of {@code handsim tradeoff}, in chart order (charts 1–4). */
 public final class Studies {
     private Studies() {}
 

@@ -14,8 +14,9 @@ import org.handsim.contact.ContactPatches;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SceneGeometry;
+import org.handsim.scenario.SceneMeshes;
 import org.handsim.vrml.VrmlLoader;
 
 /**
@@ -146,9 +147,9 @@ public final class TessellationStudy implements Study {
         }
     }
 
-    /** Loads VRML text as {@link SceneGeometry#mesh} loads a scenario's object file. */
+    /** Loads VRML text as {@link SceneMeshes#mesh} loads a scenario's object file. */
     static TriangleMesh mesh(String name, String vrml, int divisions) {
-        return SceneGeometry.mesh(name, new StringReader(vrml), divisions, 1.0);
+        return SceneMeshes.mesh(name, new StringReader(vrml), divisions, 1.0);
     }
 
     /** A cube of edge {@code edge} centred at the origin, each face an n × n grid of squares, as an IndexedFaceSet. */

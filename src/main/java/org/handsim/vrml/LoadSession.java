@@ -170,7 +170,7 @@ final class LoadSession {
         if (!real.startsWith(sandbox)) {
             return "\"" + url + "\" refused: it resolves (through a symbolic link) outside the allowed folder " + sandbox;
         }
-        String why = org.handsim.util.InputFile.problem(real);
+        String why = org.handsim.files.InputFile.problem(real);
         if (why != null) return "\"" + url + "\" " + why;
         String display;
         try {

@@ -1,6 +1,6 @@
 package org.handsim.vrml;
 
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 import java.nio.charset.StandardCharsets;
 
 /**
@@ -134,7 +134,7 @@ final class VrmlLexer {
             p++;
         }
         pos = p;
-        // not ASCII: invalid UTF-8 bytes become lone surrogates (util.SafeText), escaped in messages
+        // not ASCII: invalid UTF-8 bytes become lone surrogates (text.SafeText), escaped in messages
         return ascii ? new String(buf, start, p - start, StandardCharsets.ISO_8859_1) : SafeText.decodeUtf8(buf, start, p - start);
     }
 

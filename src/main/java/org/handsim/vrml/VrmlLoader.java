@@ -9,7 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import org.handsim.util.InputFile;
+import org.handsim.files.InputFile;
 import org.jogamp.java3d.BranchGroup;
 import org.jogamp.java3d.loaders.LoaderBase;
 
@@ -123,15 +123,30 @@ public final class VrmlLoader extends LoaderBase {
         return onWorker(() -> loadHere(file));
     }
 
+    /**
+     * Loads a file whose bytes the caller has read (through the input gate, with its limit), so
+     * the file is not read again: the same scene as {@link #load(Path)}; Inline and EXTERNPROTO
+     * URLs resolve against the file's folder.
+     *
+     * @throws VrmlParseException {@code FILE:LINE:COL: message} if it cannot be loaded
+     */
+    public VrmlScene load(Path file, byte[] bytes) {
+        return onWorker(() -> loadHere(file, bytes));
+    }
+
     private VrmlScene loadHere(Path file) {
+        return loadHere(file, null);
+    }
+
+    private VrmlScene loadHere(Path file, byte[] bytes) {
         String name = file.toString();
         LoadSession s = session();
         try {
             Path real = file.toRealPath();
-            String why = InputFile.problem(real);
+            String why = bytes == null ? InputFile.problem(real) : null;
             if (why != null) throw new VrmlParseException(name, 1, 1, "cannot read the file: " + why);
             if (s.sandbox == null) s.sandbox = real.getParent();
-            VrmlText t = VrmlText.read(name, real);
+            VrmlText t = bytes == null ? VrmlText.read(name, real) : VrmlText.fromBytes(name, bytes, real);
             return finish(s, s.parse(t));
         } catch (NoSuchFileException e) {
             throw new VrmlParseException(name, 1, 1, "cannot read the file: no such file");

@@ -1,6 +1,6 @@
 package org.handsim.vrml;
 
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 import org.jogamp.java3d.loaders.ParsingErrorException;
 
 /**
@@ -38,7 +38,7 @@ public final class VrmlParseException extends ParsingErrorException {
         this.detail = oneLine(detail);
     }
 
-    /** Control and line-breaking characters escaped (util.SafeText): the message stays one line. */
+    /** Control and line-breaking characters escaped (text.SafeText): the message stays one line. */
     private static String oneLine(String s) {
         return SafeText.line(s);
     }

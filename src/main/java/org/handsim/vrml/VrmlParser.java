@@ -1,7 +1,7 @@
 package org.handsim.vrml;
 
 import org.handsim.mesh.MeshLimits;
-import org.handsim.util.SafeText;
+import org.handsim.text.SafeText;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;

@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.zip.GZIPInputStream;
 import org.handsim.mesh.MeshLimits;
-import org.handsim.util.InputFile;
+import org.handsim.files.InputFile;
 
 /**
  * The bytes of one VRML file, with its name for messages, and the mapping from byte offsets to
@@ -53,6 +53,13 @@ final class VrmlText {
             // the message starts with the path: name the file as the caller did
             throw new VrmlParseException(name, 1, 1, m.startsWith(file.toString() + ": ") ? m.substring(file.toString().length() + 2) : m);
         }
+        VrmlText t = fromBytes(name, raw);
+        t.path = file;
+        return t;
+    }
+
+    /** Wraps the bytes of {@code file}, read by the caller, as {@link #read} would have read them. */
+    static VrmlText fromBytes(String name, byte[] raw, Path file) throws IOException {
         VrmlText t = fromBytes(name, raw);
         t.path = file;
         return t;

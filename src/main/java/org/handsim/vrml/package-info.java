@@ -17,5 +17,7 @@
  *
  * <p>Reference: ISO/IEC 14772-1:1997, "The Virtual Reality Modeling Language", Part 1
  * (clauses 4 concepts, 5 field types, 6 nodes, Annex A grammar).
+ *
+ * <p>May use {@code mesh}, {@code files} and {@code text} (and Java3D; docs/DESIGN.md, "Modules").
  */
 package org.handsim.vrml;

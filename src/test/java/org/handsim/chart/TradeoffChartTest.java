@@ -27,7 +27,7 @@ class TradeoffChartTest {
         TradeoffChart.write(table(), dir);
         List<String> lines = Files.readAllLines(dir.resolve("9-test.csv"));
         assertEquals("series,setting,default,cost_s,error", lines.get(0));
-        assertEquals("a,default,true,0.001,0.00001", lines.get(2), "util.Decimal: plain decimals from 1e-6");
+        assertEquals("a,default,true,0.001,0.00001", lines.get(2), "text.Decimal: plain decimals from 1e-6");
         assertEquals("b,exact,false,0.002,0", lines.get(4), "a zero error stays 0 in the CSV");
         assertTrue(Files.size(dir.resolve("9-test.png")) > 1000);
         assertTrue(Files.readString(dir.resolve("9-test.svg")).contains("<svg"));
@@ -162,5 +162,34 @@ class TradeoffChartTest {
             }
         }
         assertEquals(1, together, "the cube's and the mug's defaults share one spot");
+    }
+
+    /**
+     * Every series the legend names is visible: a series whose points all lie on an earlier
+     * series' points (the tessellation study's cube centre and normal, both exact, on the floor)
+     * is drawn with a larger hollow marker around them, and the legend says whose points it shares.
+     * The fronts' legend claims nothing about errors (the k-DOP chart's y is a count of tests).
+     */
+    @Test
+    void aSeriesOnAnotherSeriesPointsIsDrawnAroundThemAndTheLegendSaysSo() {
+        StudyTable t = new StudyTable("9-same", "same", List.of("cost_s", "error"), "cost_s", "error", "cost", "error")
+            .add("centre", "1", true, 1e-5, 0.0).add("centre", "2", false, 2e-5, 0.0)
+            .add("normal", "1", true, 1e-5, 0.0).add("normal", "2", false, 2e-5, 0.0)
+            .add("other", "1", true, 1e-5, 1e-3);
+        JFreeChart c = TradeoffChart.create(t);
+        XYPlot p = c.getXYPlot();
+        var r = (org.jfree.chart.renderer.xy.XYLineAndShapeRenderer) p.getRenderer();
+        // series 0, 2, 4: the points of centre, normal, other (1, 3, 5: their fronts)
+        assertEquals(TradeoffChart.HOLLOW, r.getSeriesShape(2));
+        assertEquals(Boolean.FALSE, r.getSeriesShapesFilled(2));
+        assertTrue(r.getSeriesShapesFilled(0) == null || r.getSeriesShapesFilled(0), "the first one stays filled");
+        assertTrue(r.getSeriesShapesFilled(4) == null || r.getSeriesShapesFilled(4), "a series with its own points stays filled");
+        List<String> legend = new java.util.ArrayList<>();
+        org.jfree.chart.LegendItemCollection items = p.getFixedLegendItems();
+        for (int i = 0; i < items.getItemCount(); i++) legend.add(items.get(i).getLabel());
+        assertTrue(legend.contains("normal (the same points as centre)"), legend.toString());
+        assertTrue(legend.contains("centre") && legend.contains("other"), legend.toString());
+        assertTrue(legend.contains(TradeoffChart.PARETO_LEGEND), legend.toString());
+        for (String l : legend) assertTrue(!l.contains("exact"), "the legend speaks of no error: " + l);
     }
 }

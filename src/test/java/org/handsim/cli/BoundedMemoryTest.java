@@ -11,14 +11,14 @@ import java.nio.file.Path;
 import java.util.Map;
 import java.util.zip.GZIPOutputStream;
 import org.handsim.TestPaths;
-import org.handsim.sim.Recorder;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.trace.Recorder;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 15, bounded memory, each in a child JVM with {@code -Xmx256m}: a 1 000 s run at
+ * Bounded memory, each in a child JVM with {@code -Xmx256m}: a 1 000 s run at
  * dt = 1 ms with the trace on (10⁶ steps; the in-memory recorder needed about 300 MB for them)
  * completes and its trace has every row; a gzip bomb (1.1 GiB from about 1 MB) is refused with
  * the process under 300 MB resident.
@@ -108,6 +108,57 @@ class BoundedMemoryTest {
             assertEquals(bomb + ":1:1: gzip stream expands to more than 268435456 bytes (the limit of object files); refused", r.err());
             assertTrue(r.peakBytes() > 0 && r.peakBytes() < 300 * MB, "peak resident " + r.peakBytes() / MB + " MB");
             System.out.println("BoundedMemoryTest: gzip bomb refused, peak resident " + r.peakBytes() / MB + " MB");
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
+    /**
+     * The battery's two OBJ files, each in a child JVM with a 256 MB heap, under 512 MB resident:
+     * 159 MB of 19.9 million degenerate faces (6.5 GB and out of memory when the whole text and
+     * every face were kept) is read — the faces dropped as they stream, each counted — and one
+     * face of 100 000 corners (83 s and 722 MB in Java3D's triangulator) is refused by the
+     * per-face limit, naming the line and the column of the first corner beyond it.
+     */
+    @Test
+    void degenerateAndHugeObjFacesStayUnder512Megabytes() throws Exception {
+        Path dir = Files.createTempDirectory("handsim-obj-memory");
+        try {
+            Path many = dir.resolve("degenerate.obj");
+            byte[] faces = "f 1 2 3\n".repeat(100_000).getBytes(StandardCharsets.US_ASCII);
+            try (OutputStream o = Files.newOutputStream(many)) {
+                o.write("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 4\n".getBytes(StandardCharsets.US_ASCII));
+                for (int i = 0; i < 199; i++) o.write(faces);   // 19.9 million collinear triangles
+            }
+            assertTrue(Files.size(many) > 159 * 1_000_000L, Files.size(many) + " bytes");
+            ChildJvm.Result r = ChildJvm.run(dir, "256m", 10, "mesh", many.toString(), "--units", "m");
+            assertEquals(0, r.code(), r.err());
+            @SuppressWarnings("unchecked")
+            Map<String, Object> m = (Map<String, Object>) Json.parse("mesh", r.out());
+            assertEquals(1L, ((Number) m.get("triangles")).longValue());
+            assertEquals(19_900_000L, ((Number) m.get("degenerate")).longValue());
+            assertEquals(0.5, ((Number) m.get("area_m2")).doubleValue(), 1e-15);
+            assertTrue(r.peakBytes() > 0 && r.peakBytes() < 512 * MB, "peak resident " + r.peakBytes() / MB + " MB");
+            System.out.println("BoundedMemoryTest: 19.9 M degenerate OBJ faces read, peak resident " + r.peakBytes() / MB + " MB");
+
+            Path huge = dir.resolve("huge-face.obj");
+            StringBuilder sb = new StringBuilder();
+            for (int i = 0; i < 100_000; i++) {
+                double a = 2 * Math.PI * i / 100_000;
+                sb.append("v ").append(Math.cos(a)).append(' ').append(Math.sin(a)).append(" 0\n");
+            }
+            sb.append('f');
+            int col = 0;
+            for (int i = 1; i <= 100_000; i++) {
+                if (i == 1025) col = sb.length() - sb.lastIndexOf("\n") + 1;
+                sb.append(' ').append(i);
+            }
+            Files.writeString(huge, sb.append('\n'));
+            r = ChildJvm.run(dir, "256m", 10, "mesh", huge.toString(), "--units", "m");
+            assertEquals(3, r.code(), r.err());
+            assertEquals(huge + ":100001:" + col + ": a face of 100000 corners, more than the limit of 1024 corners per face", r.err());
+            assertTrue(r.peakBytes() > 0 && r.peakBytes() < 512 * MB, "peak resident " + r.peakBytes() / MB + " MB");
+            System.out.println("BoundedMemoryTest: a 100 000-corner face refused, peak resident " + r.peakBytes() / MB + " MB");
         } finally {
             ChildJvm.deleteTree(dir);
         }

@@ -14,7 +14,7 @@ import org.handsim.TestPaths;
 /**
  * Runs {@code handsim ARGS} in a child JVM with a given heap limit and reports its exit code,
  * what it printed, and its peak resident memory (VmHWM of /proc/self/status, read by the child
- * just before it exits): the tests of bounded memory (issue 15).
+ * just before it exits): the tests of bounded memory.
  */
 public final class ChildJvm {
     /** Exit code, standard output, standard error (without the VmHWM line) and peak resident memory in bytes (-1 if unknown). */

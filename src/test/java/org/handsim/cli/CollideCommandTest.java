@@ -9,7 +9,7 @@ import org.handsim.cli.CliTesting.Run;
 import org.handsim.collision.TestMeshes;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Test;
 
 /** {@code handsim collide}: the JSON contract, the argument errors. */
@@ -21,9 +21,15 @@ class CollideCommandTest {
         RigidTransform pose = RigidTransform.fromPose(1.5, 0, 0, 0.18708286933869706, 0.3741657386773941, 0.5612486080160912);
         Map<String, Object> m = CollideCommand.collide(s, s, pose, 18, 5);
         String json = JsonWriter.write(m);
-        assertTrue(json.matches("\\{\"intersecting\":true,\"pairs\":56,\"segments\":56,\"patches\":\\[\\{\"center\":\\[[^]]*\\],\"normal\":\\[[^]]*\\],"
-            + "\"area_m2\":[0-9.eE-]+,\"pairs\":56\\}\\],\"counters\":\\{\"node_tests\":[0-9]+,\"tri_tests\":[0-9]+\\},"
-            + "\"build_ms\":[0-9.eE-]+,\"query_us_median\":[0-9.eE-]+\\}"), json);
+        String untimed = "\\{\"intersecting\":true,\"pairs\":56,\"segments\":56,\"patches\":\\[\\{\"center\":\\[[^]]*\\],\"normal\":\\[[^]]*\\],"
+            + "\"area_m2\":[0-9.eE-]+,\"pairs\":56\\}\\],\"counters\":\\{\"node_tests\":[0-9]+,\"tri_tests\":[0-9]+\\}";
+        assertTrue(json.matches(untimed + ",\"build_ms\":[0-9.eE-]+,\"query_us_median\":[0-9.eE-]+\\}"), json);
+        // not timed unless asked (--timing): the same object without the two times
+        String plain = JsonWriter.write(CollideCommand.collide(s, s, pose, 18, 0));
+        assertTrue(plain.matches(untimed + "\\}"), plain);
+        m.remove("build_ms");
+        m.remove("query_us_median");
+        assertEquals(JsonWriter.write(m), plain);
     }
 
     @Test
@@ -86,9 +92,12 @@ class CollideCommandTest {
         r = run("collide", "a.wrl", "b.wrl", "--pose-b", "1,2,3");
         assertEquals(2, r.code());
         assertEquals("handsim: --pose-b needs 6 comma-separated numbers, got '1,2,3'", r.err());
-        r = run("collide", "a.wrl", "b.wrl", "--repeat", "0");
+        r = run("collide", "a.wrl", "b.wrl", "--timing", "--repeat", "0");
         assertEquals(2, r.code());
         assertEquals("handsim: --repeat must be in 1..10000, got 0", r.err());
+        r = run("collide", "a.wrl", "b.wrl", "--repeat", "3");
+        assertEquals(2, r.code());
+        assertEquals("handsim: --repeat needs --timing", r.err());
         r = run("collide", "a.wrl");
         assertEquals(2, r.code());
         assertTrue(r.err().contains("Missing required parameter: 'B'"), r.err());

@@ -64,7 +64,7 @@ class EngineChoiceTest {
         assertEquals(2, r.code(), r.err());
         assertEquals("handsim: --master " + url + ": cannot connect (127.0.0.1:" + port + ": Connection refused); is the cluster running?"
             + " (tools/spark-cluster start prints its URL)", r.err());
-        assertTrue(s < 15, s + " s");
+        assertTrue(s < 60, "a hang guard (Spark would retry for minutes): " + s + " s");
         assertTrue(EngineChoice.unreachable("spark://no-such-host.invalid:7077").endsWith(": unknown host"));
         assertNull(EngineChoice.unreachable("local[2]"));
     }

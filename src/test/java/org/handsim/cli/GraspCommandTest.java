@@ -9,8 +9,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import org.handsim.sim.Home;
-import org.handsim.util.Json;
+import org.handsim.scenario.Home;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
 class GraspCommandTest {
     static final String MUG = Home.scenarios().resolve("mug-grasp.json").toString();
     static final List<String> KEYS = List.of("time_s", "contacts", "force_closure", "epsilon", "volume", "hold_N", "hold_min_N",
-        "torque_residual_Nm");
+        "torque_residual_Nm", "center_m", "radius_m", "friction", "cone_edges");
 
     @SuppressWarnings("unchecked")
     static Map<String, Object> json(String text) {
@@ -69,6 +69,55 @@ class GraspCommandTest {
         assertEquals(0, ((Number) g0.get("epsilon")).doubleValue());
         assertEquals(0, ((Number) g0.get("volume")).doubleValue(), "six frictionless wrenches: a hull of at most five dimensions, volume 0");
         assertEquals(0, ((Number) g0.get("hold_min_N")).doubleValue(), 1e-9, "frictionless: some direction is not held at all");
+    }
+
+    /**
+     * grasp prints its wrench scaling (the mug's centroid and largest centroid-to-vertex distance,
+     * as the mesh gives them) and quality, given grasp's output with its default options, computes
+     * the same ε and volume to the last bit; given the same contacts as a CSV file and
+     * {@code --object} the scenario, again the same.
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void qualityOfGraspsOutputGivesGraspsEpsilon() throws Exception {
+        CliTesting.Run r = CliTesting.run("grasp", MUG);
+        assertEquals(0, r.code(), r.err());
+        Map<String, Object> g = json(r.out());
+        org.handsim.scenario.Scenario s = org.handsim.scenario.Scenario.load(Path.of(MUG));
+        double[] cr = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K).centroidAndRadius();
+        List<Object> c = (List<Object>) g.get("center_m");
+        for (int i = 0; i < 3; i++) assertEquals(cr[i], ((Number) c.get(i)).doubleValue());
+        assertEquals(cr[3], ((Number) g.get("radius_m")).doubleValue());
+        assertEquals(0.5, ((Number) g.get("friction")).doubleValue());
+        assertEquals(8, ((Number) g.get("cone_edges")).intValue());
+        Path dir = Files.createTempDirectory("grasp-quality");
+        try {
+            Path out = Files.writeString(dir.resolve("grasp.json"), r.out());
+            CliTesting.Run q = CliTesting.run("quality", out.toString());
+            assertEquals(0, q.code(), q.err());
+            assertEquals("", q.err());
+            Map<String, Object> qm = json(q.out());
+            assertEquals(g.get("epsilon"), qm.get("epsilon"), q.out());
+            assertEquals(g.get("volume"), qm.get("volume"), q.out());
+            assertEquals(g.get("center_m"), qm.get("center_m"));
+            assertEquals(g.get("radius_m"), qm.get("radius_m"));
+            StringBuilder csv = new StringBuilder("x,y,z,nx,ny,nz\n");
+            for (Object o : (List<Object>) g.get("contacts")) {
+                Map<String, Object> ct = (Map<String, Object>) o;
+                List<Object> p = (List<Object>) ct.get("point"), n = (List<Object>) ct.get("normal");
+                csv.append(p.get(0)).append(',').append(p.get(1)).append(',').append(p.get(2)).append(',')
+                    .append(n.get(0)).append(',').append(n.get(1)).append(',').append(n.get(2)).append('\n');
+            }
+            Path rows = Files.writeString(dir.resolve("contacts.csv"), csv);
+            q = CliTesting.run("quality", rows.toString(), "--object", MUG);
+            assertEquals(0, q.code(), q.err());
+            assertEquals(g.get("epsilon"), json(q.out()).get("epsilon"), q.out());
+            // without the scaling, the 1 m default of the CSV gives another number
+            q = CliTesting.run("quality", rows.toString());
+            assertFalse(g.get("epsilon").equals(json(q.out()).get("epsilon")), q.out());
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
     }
 
     /** --at picks the first step at or after T; the inner links alone already hold the mug at 2 s (all BLOCKED). */
@@ -165,7 +214,7 @@ class GraspCommandTest {
         assertEquals(1 + 48, csv.size(), "t = 0, 0.1, ..., 4.7");
         assertTrue(csv.get(1).startsWith("0,false,0,"), csv.get(1));
         for (String line : csv) {
-            assertFalse(line.matches(".*(\\.0(,|$)|E-|-0(,|$)).*"), "numbers as util.Decimal writes them: " + line);
+            assertFalse(line.matches(".*(\\.0(,|$)|E-|-0(,|$)).*"), "numbers as text.Decimal writes them: " + line);
         }
         assertTrue(csv.get(csv.size() - 1).startsWith("4.7,true,"), csv.get(csv.size() - 1));
     }

@@ -11,7 +11,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.handsim.dynamics.HandDynamics;
 import org.handsim.hand.HandDescription;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;

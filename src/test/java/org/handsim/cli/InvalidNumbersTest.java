@@ -11,8 +11,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 import org.handsim.TestPaths;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -147,8 +147,8 @@ class InvalidNumbersTest {
             assertFalse(r.contains("9223372036854775807"), r);
         }
         // just inside: 10 million steps are accepted (not run here: the check is before the run)
-        assertEquals(null, org.handsim.sim.Scenario.stepsProblem(10_000, 0.001));
-        assertTrue(org.handsim.sim.Scenario.stepsProblem(10_000.001, 0.001).startsWith("needs 10 million steps"));
+        assertEquals(null, org.handsim.scenario.Scenario.stepsProblem(10_000, 0.001));
+        assertTrue(org.handsim.scenario.Scenario.stepsProblem(10_000.001, 0.001).startsWith("needs 10 million steps"));
     }
 
     @Test
@@ -179,8 +179,8 @@ class InvalidNumbersTest {
         String rows = "x,y,z,nx,ny,nz\n0.03,0,0,-1,0,0\n-0.03,0,0,1,0,0\n0,0.03,0,0,-1,0\n0,-0.03,0,0,1,0\n0,0,0.03,0,0,-1\n0,0,-0.03,0,0,1\n";
         Path unit = Files.writeString(dir.resolve("unit.csv"), rows);
         Path tiny = Files.writeString(dir.resolve("tiny.csv"), rows.replace(",-1,0,0", ",-1e-300,0,0").replace(",0,0,1\n", ",0,0,1e-300\n"));
-        CliTesting.Run a = CliTesting.run("quality", unit.toString(), "--radius", "0.052", "--edges", "4", "--repeat", "1");
-        CliTesting.Run b = CliTesting.run("quality", tiny.toString(), "--radius", "0.052", "--edges", "4", "--repeat", "1");
+        CliTesting.Run a = CliTesting.run("quality", unit.toString(), "--radius", "0.052", "--edges", "4");
+        CliTesting.Run b = CliTesting.run("quality", tiny.toString(), "--radius", "0.052", "--edges", "4");
         assertEquals(0, b.code(), b.err());
         assertTrue(b.out().contains("\"epsilon\":0.1665433468816228"), b.out());
         assertEquals(a.out().replaceAll("\"time_us_median\":[0-9.e+-]+", ""), b.out().replaceAll("\"time_us_median\":[0-9.e+-]+", ""));

@@ -17,15 +17,15 @@ import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.handsim.TestPaths;
-import org.handsim.util.Json;
-import org.handsim.util.OutputSet;
+import org.handsim.text.Json;
+import org.handsim.files.OutputSet;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * A command stopped at any point leaves its folder with a whole set of outputs, the old one or
  * the new one, never a mixture. Each command runs in a child JVM that pauses at a named point of
- * its work ({@code org.handsim.util.Phase}) and is stopped there with SIGTERM or with SIGKILL,
+ * its work ({@code org.handsim.process.Phase}) and is stopped there with SIGTERM or with SIGKILL,
  * at ten points of {@code run}, {@code plan}, {@code sweep} and {@code tradeoff}: during the
  * computation, between the files, and between the renames of the publication. The folder starts
  * with the previous run's set plus a file of the set the new run does not write (a chart of a

@@ -25,7 +25,7 @@ class KinematicsCommandsTest {
     @SuppressWarnings("unchecked")
     private static java.util.Map<String, Object> json(Run r) {
         assertEquals(0, r.code(), r.err());
-        return (java.util.Map<String, Object>) org.handsim.util.Json.parse("stdout", r.out());
+        return (java.util.Map<String, Object>) org.handsim.text.Json.parse("stdout", r.out());
     }
 
     /** A JSON array of numbers. */
@@ -105,7 +105,7 @@ class KinematicsCommandsTest {
 
     @Test
     void everySubcommandHasHelp() {
-        for (Class<?> c : HandSim.SUBCOMMANDS) {
+        for (Class<?> c : CliTesting.COMMANDS) {
             String name = c.getAnnotation(picocli.CommandLine.Command.class).name();
             Run r = run(name, "--help");
             assertEquals(0, r.code(), name);

@@ -73,6 +73,36 @@ class LimitsTest {
         assertTrue(run.peakBytes() < 300 * MB, "peak resident " + run.peakBytes() / MB + " MB");
     }
 
+    /**
+     * A scenario naming a 3 GB object file (sparse): {@code run} refuses it with the limit of
+     * object files, the line {@code mesh} prints for the same file, exit 3 (before: out of memory,
+     * "give Java more heap", exit 1, after reading it whole).
+     */
+    @Test
+    void aThreeGigabyteObjectIsRefusedByItsSizeInEveryCommand() throws Exception {
+        for (String name : new String[] {"huge.stl", "huge.wrl"}) {
+            Path huge = dir.resolve(name);
+            try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(huge.toFile(), "rw")) {
+                f.setLength(3L << 30);
+            }
+            try {
+                ChildJvm.Result mesh = ChildJvm.run(dir, "256m", 3, "mesh", huge.toString());
+                assertEquals(3, mesh.code(), mesh.err());
+                String limit = "is 3221225472 bytes, more than the limit of object files (268435456 bytes)";
+                assertTrue(mesh.err().endsWith(limit), mesh.err());
+                Path scenario = Files.writeString(dir.resolve("huge.json"), Files.readString(TestPaths.root().resolve("scenarios/paper-breakaway.json"))
+                    .replaceFirst("\"file\": *\"[^\"]*\"", "\"file\": \"" + huge + "\""));
+                ChildJvm.Result run = ChildJvm.run(dir, "256m", 3, "run", scenario.toString(), "--out", dir.resolve("out").toString());
+                assertEquals(3, run.code(), run.err());
+                oneLine(run);
+                assertEquals(mesh.err().substring(mesh.err().indexOf(huge.toString())), run.err().substring(run.err().indexOf(huge.toString())));
+                assertFalse(Files.exists(dir.resolve("out")));
+            } finally {
+                Files.deleteIfExists(huge);
+            }
+        }
+    }
+
     /** 5 000 contacts: refused at once (more than 1 600 distinct wrenches), in -Xmx512m; 100 are answered with progress lines. */
     @Test
     void qualityTakesAnyNumberOfContactsInBoundedTimeAndMemory() throws Exception {
@@ -92,7 +122,7 @@ class LimitsTest {
         for (int i = 0; i < 5000; i++) rows.append(lines.get(1 + i % 150)).append('\n');
         Path repeated = Files.writeString(dir.resolve("repeated.csv"), rows);
         t0 = System.nanoTime();
-        ChildJvm.Result a = ChildJvm.run(dir, "512m", 3, "quality", repeated.toString(), "--repeat", "1");
+        ChildJvm.Result a = ChildJvm.run(dir, "512m", 3, "quality", repeated.toString());
         double sa = (System.nanoTime() - t0) / 1e9;
         assertEquals(0, a.code(), a.err());
         assertTrue(a.out().startsWith("{\"contacts\":5000,\"wrenches\":40000,\"force_closure\":true"), a.out());
@@ -107,7 +137,7 @@ class LimitsTest {
         Path four = contacts("c4.csv", 4, 3);
         // progress from the start, so the line is there however fast the machine reaches the limit
         ChildJvm.Result r = ChildJvm.run(dir, "512m", List.of("-Dhandsim.quality.progressAfterS=0"), 3,
-            "quality", four.toString(), "--edges", "256", "--repeat", "1");
+            "quality", four.toString(), "--edges", "256");
         assertEquals(2, r.code(), r.err());
         oneLine(r);
         assertEquals("handsim: " + four + ": 4 contacts x 256 cone edges: the convex hull of 1024 points needs more than 1048576 facets"
@@ -147,7 +177,7 @@ class LimitsTest {
             + " move B with --pose-b", lines[2]);
         System.out.printf("LimitsTest: coincident 358 800-triangle spheres refused in %.1f s%n", s);
         // crossing at 40 mm: 3 582 pairs along a circle, answered
-        ChildJvm.Result x = ChildJvm.run(dir, "1g", 3, "collide", stl.toString(), stl.toString(), "--units", "m", "--pose-b", "0.04,0,0,0,0,0", "--repeat", "1");
+        ChildJvm.Result x = ChildJvm.run(dir, "1g", 3, "collide", stl.toString(), stl.toString(), "--units", "m", "--pose-b", "0.04,0,0,0,0,0");
         assertEquals(0, x.code(), x.err());
         assertTrue(x.out().contains("\"pairs\":3582"), x.out());
     }

@@ -11,14 +11,14 @@ import java.util.List;
 import java.util.Map;
 import org.handsim.TestPaths;
 import org.handsim.cli.CliTesting.Run;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /**
- * OBJ and STL in {@code handsim mesh} and {@code collide} (issue 14): what {@code mesh --obj}
+ * OBJ and STL in {@code handsim mesh} and {@code collide}: what {@code mesh --obj}
  * and {@code --stl} write reads back to the same triangles, and the collision of the OBJ and STL
  * twins of a VRML model is the VRML model's; malformed files exit 3 naming the place.
  */

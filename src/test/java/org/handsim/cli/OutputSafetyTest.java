@@ -17,8 +17,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.handsim.TestPaths;
-import org.handsim.sim.Home;
-import org.handsim.util.DeviceNodes;
+import org.handsim.scenario.Home;
+import org.handsim.files.DeviceNodes;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -8,10 +8,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
 import org.handsim.plan.PlanTesting;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -73,7 +73,7 @@ class PlanCommandTest {
             assertTrue(s.writeTrace() && s.computeTorques(), "the best scenario keeps the template's outputs");
             HandModel m = Simulation.model(s, true);
             m.run(null);
-            GraspAssessment g = GraspAssessment.of(m, s.friction(), s.coneEdges());
+            GraspAssessment g = GraspAssessment.of(m.graspInput(), s.friction(), s.coneEdges());
             assertEquals(bestEps, g.quality().epsilon(), "epsilon of trial " + best.get("trial") + ", to the last bit");
             assertEquals(Boolean.parseBoolean(best.get("force_closure")), g.quality().forceClosure());
             assertEquals(Integer.parseInt(best.get("contacts")), g.contacts().size());
@@ -82,7 +82,7 @@ class PlanCommandTest {
             CliTesting.Run run = CliTesting.run("run", dir.resolve("best/01.json").toString(), "--no-charts", "--out", dir.resolve("run").toString());
             assertEquals(0, run.code(), run.err());
             @SuppressWarnings("unchecked")
-            Map<String, Object> summary = (Map<String, Object>) org.handsim.util.Json.parse("summary.json",
+            Map<String, Object> summary = (Map<String, Object>) org.handsim.text.Json.parse("summary.json",
                 Files.readString(dir.resolve("run/summary.json")));
             if (summary.get("grasp") instanceof Map) {
                 @SuppressWarnings("unchecked")

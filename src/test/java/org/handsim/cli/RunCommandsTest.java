@@ -8,10 +8,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import org.handsim.sim.Home;
-import org.handsim.sim.Recorder;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.scenario.Home;
+import org.handsim.trace.Recorder;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Test;
 
 /** `handsim run` and `handsim sweep`: the files they promise, and their failures. */
@@ -80,13 +80,13 @@ class RunCommandsTest {
     @Test
     void aRunWithoutStaticEquilibriumWarnsOncePerFingerAndStretch() throws Exception {
         Path dir = Files.createTempDirectory("handsim-run");
-        org.handsim.sim.Scenario s = org.handsim.sim.Scenario.load(Home.paperScenario());
-        org.handsim.sim.ObjectPlacer.Placed p = org.handsim.sim.ObjectPlacer.place(s, Home.dir().resolve("vrml/objects/mug_mm.stl"),
-            org.handsim.sim.Scenario.DEFAULT_DIVISIONS, 1, org.handsim.sim.Scenario.Units.MM);
+        org.handsim.scenario.Scenario s = org.handsim.scenario.Scenario.load(Home.paperScenario());
+        org.handsim.model.ObjectPlacer.Placed p = org.handsim.model.ObjectPlacer.place(s, Home.dir().resolve("vrml/objects/mug_mm.stl"),
+            org.handsim.scenario.Scenario.DEFAULT_DIVISIONS, 1, org.handsim.scenario.Scenario.Units.MM);
         s = s.withObject(p.placement()).withFriction(0).withDuration(2.4);
-        for (int m = 0; m < 3; m++) s = s.withMotor(m, new org.handsim.sim.trajectory.Trapezoid(0, 17500, 5000, 25000));
+        for (int m = 0; m < 3; m++) s = s.withMotor(m, new org.handsim.trajectory.Trapezoid(0, 17500, 5000, 25000));
         Path file = dir.resolve("stalled.json");
-        Files.writeString(file, org.handsim.util.JsonWriter.pretty(s.toJson(dir)));
+        Files.writeString(file, org.handsim.text.JsonWriter.pretty(s.toJson(dir)));
         CliTesting.Run r = CliTesting.run("run", file.toString(), "--no-charts", "--out", dir.resolve("out").toString());
         assertEquals(0, r.code(), r.err());
         String summary = Files.readString(dir.resolve("out").resolve("summary.json"));
@@ -102,7 +102,7 @@ class RunCommandsTest {
             double largest = 0;
             for (String line : trace.subList(1, trace.size())) largest = Math.max(largest, Double.parseDouble(line.split(",")[col]));
             assertTrue(largest > 0.05, "finger " + k + ": the trace shows the residual: " + largest);
-            assertTrue(summary.replaceAll("\\s", "").contains("\"torque_residual_Nm\":" + org.handsim.util.Decimal.format(largest)),
+            assertTrue(summary.replaceAll("\\s", "").contains("\"torque_residual_Nm\":" + org.handsim.text.Decimal.format(largest)),
                 "summary.json has the trace's largest residual " + largest);
         }
     }

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.handsim.sim.Home;
+import org.handsim.scenario.Home;
 import org.junit.jupiter.api.Test;
 
 /** {@code handsim run --tolerance}: the choice on stdout and in summary.json, and its three refusals. */

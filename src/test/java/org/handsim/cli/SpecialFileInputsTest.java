@@ -13,9 +13,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.handsim.TestPaths;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.ScenarioException;
-import org.handsim.util.SpecialFiles;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
+import org.handsim.files.SpecialFiles;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -61,7 +61,7 @@ class SpecialFileInputsTest {
             for (Map.Entry<String, Path> e : sf.all.entrySet()) {
                 for (String[] cmd : commands(e.getValue(), sf.dir)) {
                     String what = String.join(" ", cmd);
-                    CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(30), () -> CliTesting.run(cmd), what);
+                    CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(60), () -> CliTesting.run(cmd), what);
                     assertEquals(3, r.code(), what + ": " + r.err());
                     assertTrue(r.err().contains("is not a regular file (" + e.getKey() + ")"), what + ": " + r.err());
                     assertFalse(r.err().contains("\n") || r.err().contains("Exception"), what + ": " + r.err());
@@ -71,12 +71,58 @@ class SpecialFileInputsTest {
         }
     }
 
+    /** A hand description file goes through the same gate. */
+    @Test
+    void aHandFileThatIsNotARegularFileIsRefused() throws Exception {
+        try (SpecialFiles sf = new SpecialFiles()) {
+            for (Map.Entry<String, Path> e : sf.all.entrySet()) {
+                org.handsim.files.InputFile.InputFileException x = assertTimeoutPreemptively(Duration.ofSeconds(60),
+                    () -> assertThrows(org.handsim.files.InputFile.InputFileException.class, () -> org.handsim.hand.HandDescription.load(e.getValue())));
+                assertEquals(e.getValue() + ": is not a regular file (" + e.getKey() + ")", x.getMessage());
+            }
+        }
+    }
+
+    /**
+     * An entry of the mesh cache that is a FIFO, a folder or a socket is a miss, at once: the mesh
+     * is made from the file (before, a FIFO planted at an entry's name hung every load of that
+     * object).
+     */
+    @Test
+    void aMeshCacheEntryThatIsNotARegularFileIsAMiss() throws Exception {
+        String before = System.getProperty("handsim.cache");
+        try (SpecialFiles sf = new SpecialFiles()) {
+            Path cache = sf.dir.resolve("cache");
+            System.setProperty("handsim.cache", cache.toString());
+            Path first = Files.copy(CUBE, sf.dir.resolve("cube-first.wrl"));
+            org.handsim.mesh.TriangleMesh made = org.handsim.scenario.SceneMeshes.mesh(first, 24, 1.0);
+            List<String> entries = TestPaths.names(cache.resolve("meshes"));
+            assertEquals(1, entries.size(), entries.toString());
+            Path entry = cache.resolve("meshes").resolve(entries.get(0));
+            int n = 0;
+            for (Map.Entry<String, Path> e : sf.all.entrySet()) {
+                if (e.getKey().equals("a character device")) continue;   // cannot be moved into the folder
+                Files.delete(entry);
+                Files.move(e.getValue(), entry);
+                Path again = Files.copy(CUBE, sf.dir.resolve("cube-" + n++ + ".wrl"));   // a new path: not in memory
+                org.handsim.mesh.TriangleMesh m = assertTimeoutPreemptively(Duration.ofSeconds(60),
+                    () -> org.handsim.scenario.SceneMeshes.mesh(again, 24, 1.0), e.getKey());
+                assertEquals(made.triangleCount(), m.triangleCount(), e.getKey());
+                Files.move(entry, e.getValue());
+                Files.writeString(entry, "");
+            }
+            assertTrue(n >= 2, "special files tried: " + n);
+        } finally {
+            if (before == null) System.clearProperty("handsim.cache"); else System.setProperty("handsim.cache", before);
+        }
+    }
+
     /** The window's File ▸ Open reads the scenario through Scenario.load, as run does. */
     @Test
     void theWindowsOpenRefusesASpecialFile() throws Exception {
         try (SpecialFiles sf = new SpecialFiles()) {
             for (Map.Entry<String, Path> e : sf.all.entrySet()) {
-                ScenarioException x = assertTimeoutPreemptively(Duration.ofSeconds(10),
+                ScenarioException x = assertTimeoutPreemptively(Duration.ofSeconds(60),
                     () -> assertThrows(ScenarioException.class, () -> Scenario.load(e.getValue())));
                 assertEquals(e.getValue() + ": is not a regular file (" + e.getKey() + ")", x.getMessage());
             }
@@ -88,7 +134,7 @@ class SpecialFileInputsTest {
     void devZeroIsACharacterDevice() {
         List<String> seen = new ArrayList<>();
         for (String cmd : new String[] {"run", "mesh", "sweep", "quality"}) {
-            CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> CliTesting.run(cmd, "/dev/zero"));
+            CliTesting.Run r = assertTimeoutPreemptively(Duration.ofSeconds(60), () -> CliTesting.run(cmd, "/dev/zero"));
             assertEquals(3, r.code(), cmd + ": " + r.err());
             assertTrue(r.err().contains("/dev/zero") && r.err().contains("is not a regular file (a character device)"), r.err());
             seen.add(r.err());

@@ -10,7 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.handsim.util.JsonObject;
+import org.handsim.text.JsonObject;
 import org.junit.jupiter.api.Test;
 
 /** `handsim swing`: the files it promises, the energy guard's stop, bad arguments. */

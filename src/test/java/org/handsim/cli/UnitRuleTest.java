@@ -19,13 +19,13 @@ import org.handsim.collision.KdopTree;
 import org.handsim.collision.TreeQuery;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
-import org.handsim.sim.Simulation;
-import org.handsim.sim.UnitRule;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
+import org.handsim.scenario.SceneMeshes;
+import org.handsim.scenario.UnitRule;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 
@@ -83,11 +83,11 @@ class UnitRuleTest {
         assertEquals("handsim collide: mug_mm.stl: units mm by its size (--units to choose)\n"
             + "handsim collide: cube.wrl: units m by its size (--units to choose)", err.toString().trim().replace("\r", ""));
         // the same meshes as loading each in its unit
-        assertTrue(mug.sameTrianglesAs(SceneGeometry.mesh(MUG_MM, CollideCommand.VRML_DIVISIONS, 0.001)));
-        assertTrue(cube.sameTrianglesAs(SceneGeometry.mesh(CUBE, CollideCommand.VRML_DIVISIONS, 1.0)));
+        assertTrue(mug.sameTrianglesAs(SceneMeshes.mesh(MUG_MM, CollideCommand.VRML_DIVISIONS, 0.001)));
+        assertTrue(cube.sameTrianglesAs(SceneMeshes.mesh(CUBE, CollideCommand.VRML_DIVISIONS, 1.0)));
         // the command: the cube pushed into the mug's wall touches it in millimetres, not in metres
         String pose = "0.05,0,0,0,0,0";
-        CliTesting.Run auto = CliTesting.run("collide", MUG_MM.toString(), CUBE.toString(), "--pose-b", pose, "--repeat", "1");
+        CliTesting.Run auto = CliTesting.run("collide", MUG_MM.toString(), CUBE.toString(), "--pose-b", pose);
         assertEquals(0, auto.code(), auto.err());
         assertEquals(err.toString().trim().replace("\r", ""), auto.err());
         Map<String, Object> a = json(auto.out());
@@ -168,12 +168,12 @@ class UnitRuleTest {
         assertEquals(Scenario.Units.CM, UnitRule.parse("cm"));
         // a hand's reach: palm offset + three links of Table I (25 + 50 + 70 + 55 mm = 0.2 m)
         assertEquals(0.2, UnitRule.handReach(org.handsim.hand.HandDescription.barrettHand()), 0.01);
-        TriangleMesh mugM = SceneGeometry.mesh(MUG_MM, 24, 1.0), mugMm = SceneGeometry.mesh(MUG_MM, 24, 0.001);
+        TriangleMesh mugM = SceneMeshes.mesh(MUG_MM, 24, 1.0), mugMm = SceneMeshes.mesh(MUG_MM, 24, 0.001);
         assertEquals(Scenario.Units.MM, UnitRule.bySize(mugM));
         assertEquals(Scenario.Units.M, UnitRule.bySize(mugMm));
         assertNotNull(UnitRule.sizeWarning(MUG_MM, mugM, Scenario.Units.M));
         assertNull(UnitRule.sizeWarning(MUG_MM, mugMm, Scenario.Units.MM));
         // in centimetres the mug is 11.4 m: still far larger than 20 reaches (4 m)
-        assertNotNull(UnitRule.sizeWarning(MUG_MM, SceneGeometry.mesh(MUG_MM, 24, 0.1), Scenario.Units.CM));
+        assertNotNull(UnitRule.sizeWarning(MUG_MM, SceneMeshes.mesh(MUG_MM, 24, 0.1), Scenario.Units.CM));
     }
 }

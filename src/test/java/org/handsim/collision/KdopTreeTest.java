@@ -15,7 +15,7 @@ import org.handsim.testing.TestEffort;
 import org.junit.jupiter.api.Test;
 
 /**
- * {@link KdopTree} and {@link TreeQuery}: structure, conservative bounds, and (STYLE.md
+ * {@link KdopTree} and {@link TreeQuery}: structure, conservative bounds, and (docs/STYLE.md,
  * item 10) the same intersecting pairs as the all-pairs loop {@link BruteForce} for every k,
  * both split rules, two leaf sizes and both placements, on 200 random mesh pairs and poses.
  */
@@ -35,7 +35,7 @@ class KdopTreeTest {
     static final String[] MODELS = {"objects/cube.wrl", "objects/sphere.wrl", "objects/cylinder.wrl", "objects/cone.wrl",
         "objects/lblock.wrl", "objects/ring.wrl", "objects/mug.wrl", "hand/finger_link1.wrl", "hand/finger_link2.wrl",
         "hand/finger_link3.wrl", "hand/palm.wrl"};
-    /** Real-world files of ../shared/vrml-corpus (scaled to 6 cm; some have zero-area triangles). */
+    /** Real-world files of the shared VRML corpus ({@link org.handsim.TestPaths#shared}; scaled to 6 cm; some have zero-area triangles). */
     static final String[] CORPUS = {"rl-examples_puma560/unimation-puma560.wrl", "freewrl_40.wrl", "java3d-vrml97_test.wrl",
         "openhrp3_pa10_3.wrl", "rl-examples_alpha1/alpha1.wrl", "choreonoid_hand_base.wrl", "freewrl_14.wrl"};
     private static final java.util.Map<String, TriangleMesh> LOADED = new java.util.HashMap<>();

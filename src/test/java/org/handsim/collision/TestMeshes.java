@@ -17,7 +17,7 @@ public final class TestMeshes {
     /**
      * Icosphere: the icosahedron with every triangle split in four {@code level} times, new
      * vertices pushed to the sphere (20·4^level triangles), the construction of
-     * {@code ../shared/bench-meshes/icosphere_s*.wrl}.
+     * the shared data folder's {@code bench-meshes/icosphere_s*.wrl} ({@link org.handsim.TestPaths#shared}).
      */
     public static TriangleMesh icosphere(int level, double radius) {
         double t = (1 + Math.sqrt(5)) / 2;

@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
  *
  * <p>Default resolution: UV spheres with 32 segments round (16 latitude bands), the resolution
  * of {@code vrml/objects/sphere.wrl}; boxes with one square per face (two triangles).
- * Tolerances (STYLE.md item 12): patch centre within {@link #CENTER_TOL_M} = 1 mm, normal
+ * Tolerances (docs/STYLE.md, item 12): patch centre within {@link #CENTER_TOL_M} = 1 mm, normal
  * within {@link #NORMAL_TOL_DEG} = 1°.
  */
 class ContactPatchesTest {
@@ -272,7 +272,7 @@ class ContactPatchesTest {
     }
 
     /**
-     * STYLE.md item 11: the contact error shrinks as the sphere's resolution grows (mean over
+     * docs/STYLE.md, item 11: the contact error shrinks as the sphere's resolution grows (mean over
      * eight fixed random orientations and positions; 8, 16, 32, 64 segments).
      */
     @Test
@@ -329,7 +329,7 @@ class ContactPatchesTest {
     }
 
     /**
-     * STYLE.md item 10: swapping A and B (same object mesh) gives the same patches: same
+     * docs/STYLE.md, item 10: swapping A and B (same object mesh) gives the same patches: same
      * centres, areas, pair counts and triangles (exchanged), normals flipped. The meshes are
      * placed first and queried with the identity, so both orders see bit-identical coordinates.
      */

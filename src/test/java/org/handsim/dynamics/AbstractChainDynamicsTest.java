@@ -21,7 +21,7 @@ import org.handsim.math.Cholesky;
 import org.junit.jupiter.api.Test;
 
 /**
- * The contract of {@link ChainDynamics} (STYLE.md item 9, after EJML's generic decomposition
+ * The contract of {@link ChainDynamics} (docs/STYLE.md, item 9, after EJML's generic decomposition
  * tests): every implementation runs these cases on the three BarrettHand fingers — a value
  * worked by hand, checks against the definitions (τ = D·q̈ + H + C, H quadratic, C = ∂V/∂q,
  * D symmetric positive definite, kinetic energy ½q̇ᵀDq̇), a cross-check with a second algorithm

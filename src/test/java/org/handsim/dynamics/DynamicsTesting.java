@@ -4,7 +4,7 @@ import java.lang.management.ManagementFactory;
 import java.util.Random;
 import org.handsim.hand.HandDescription;
 
-/** Named tolerances, seeded random states and measures shared by the dynamics tests (STYLE.md item 12). */
+/** Named tolerances, seeded random states and measures shared by the dynamics tests (docs/STYLE.md, item 12). */
 final class DynamicsTesting {
     private DynamicsTesting() {}
 

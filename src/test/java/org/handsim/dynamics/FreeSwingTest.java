@@ -142,7 +142,7 @@ class FreeSwingTest {
         // at rest without gravity: steps of 0.3 s under gravity would swing the light outer link
         // faster than RK4 can follow, and the guard would stop the run; only the times matter here
         FreeSwing.run(ode(2, new double[3]), new RungeKutta4(6), new double[6], 0.3, 1.0, (s, t, y, e) -> times.add(t), null);
-        assertEquals(List.of(0.0, 0.3, 0.6, 0.9, 1.0), times, "step × dt in decimal (util.StepClock): 0.9, not 3 × 0.3 = 0.8999999999999999");
+        assertEquals(List.of(0.0, 0.3, 0.6, 0.9, 1.0), times, "step × dt in decimal (process.StepClock): 0.9, not 3 × 0.3 = 0.8999999999999999");
         assertThrows(IllegalArgumentException.class, () -> FreeSwing.steps(0, 1));
     }
 

@@ -9,7 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 
 /**
- * The integrators' order is a test, not a claim (STYLE.md item 11, after Hipparchus'
+ * The integrators' order is a test, not a claim (docs/STYLE.md, item 11, after Hipparchus'
  * {@code doTestDecreasingSteps}): on problems with an exact solution the global error at a
  * fixed end time must shrink by 2ᵖ when the step halves.
  */

@@ -8,7 +8,7 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Map;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -7,7 +7,7 @@ import java.net.URISyntaxException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.handsim.util.CsvInput;
+import org.handsim.files.CsvInput;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -12,8 +12,8 @@ import javax.swing.JFrame;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.SwingUtilities;
-import org.handsim.sim.Home;
-import org.handsim.sim.Scenario;
+import org.handsim.scenario.Home;
+import org.handsim.scenario.Scenario;
 
 /**
  * The README's example of the embeddable simulator: another Swing program puts

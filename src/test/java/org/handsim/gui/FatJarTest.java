@@ -14,7 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -115,6 +115,35 @@ class FatJarTest {
     }
 
     /**
+     * A cache and a temporary folder the models cannot be unpacked into (here below a file, which
+     * even root cannot write into): the error that follows — no scenario — says why, naming the
+     * failed unpack and both folders.
+     */
+    @Test
+    void aFailedUnpackIsNamedInTheError() throws Exception {
+        Path dir = Files.createTempDirectory(Path.of("/tmp"), "handsim-fatjar");   // outside the checkout: the jar must unpack
+        try {
+            Path file = Files.writeString(dir.resolve("file"), "");
+            List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.io.tmpdir=" + file.resolve("tmp"), "-jar", jar().toString(), "run", "--out", "paper");
+            ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true);
+            pb.environment().remove("DISPLAY");
+            pb.environment().put("XDG_CACHE_HOME", file.resolve("cache").toString());
+            Process p = pb.start();
+            String log = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            assertTrue(p.waitFor(2, TimeUnit.MINUTES));
+            assertEquals(3, p.exitValue(), log);
+            assertTrue(log.startsWith(dir.toRealPath().resolve("scenarios/paper-breakaway.json") + ": no such file (the models and scenarios of "
+                + jar().getFileName() + " could not be unpacked: "), log);
+            assertTrue(log.trim().endsWith("(the cache " + file.resolve("cache/handsim") + " and the temporary folder " + file.resolve("tmp")
+                + " must be writable))"), log);
+            assertEquals(1, log.trim().split("\n").length, log);
+        } finally {
+            VrmlTesting.deleteTree(dir);
+        }
+    }
+
+    /**
      * Three first runs of the jar at once (an empty cache): each runs, and afterwards the cache
      * holds one verified copy of the models and the temporary folder nothing of them.
      */
@@ -137,7 +166,7 @@ class FatJarTest {
             }
             try (var s = Files.list(dir.resolve("cache/handsim"))) {
                 List<String> left = new ArrayList<>();
-                // the cache folder also holds the tessellated meshes (sim.MeshCache): only the models' copies count here
+                // the cache folder also holds the tessellated meshes (scenario.MeshCache): only the models' copies count here
                 s.map(p -> p.getFileName().toString()).filter(n -> !n.equals("meshes")).forEach(left::add);
                 assertEquals(1, left.size(), "one copy, no unpacking folder: " + left);
                 assertTrue(left.get(0).startsWith("home-"), left.toString());

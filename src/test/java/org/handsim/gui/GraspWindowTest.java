@@ -20,14 +20,14 @@ import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
 import org.handsim.TestPaths;
 import org.handsim.cli.CliTesting;
-import org.handsim.sim.Scenario;
-import org.handsim.util.Json;
+import org.handsim.scenario.Scenario;
+import org.handsim.text.Json;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * The grasp in the window (issue 12, "The window"), end to end in a child JVM on the current
+ * The grasp in the window, end to end in a child JVM on the current
  * display ({@link GuiWindowTest} says how the display reaches the tests). The mug grasp
  * (scenarios/mug-grasp.json) is played to its end:
  * <ul>

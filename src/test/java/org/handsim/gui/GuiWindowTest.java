@@ -24,7 +24,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * The window end to end (issue 7, "Done means"), in a separate JVM on the current display —
+ * The window end to end, in a separate JVM on the current display —
  * the test JVM itself runs headless with Java3D's no-op renderer. The child process opens
  * {@code handsim gui} on the paper's experiment and runs a script that presses each of the
  * four buttons, imports the cube (placed clear of the hand), opens the paper's scenario again

@@ -8,15 +8,15 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.handsim.TestPaths;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
 import org.junit.jupiter.api.Test;
 
 /**
  * The window's live grasp without a window: the grasp the runner's evaluation thread publishes
- * for the mug grasp is, bit for bit, {@link GraspAssessment#of(HandModel, double, int)} on a model
+ * for the mug grasp is, bit for bit, {@link GraspAssessment#of(GraspAssessment.Input, double, int)} on a model
  * of its own run to the same time (a second run, not the copy); an unchanged grasp is not
  * evaluated again; evaluations start at least {@link LiveGrasp#MIN_INTERVAL_NS} apart.
  */
@@ -30,7 +30,7 @@ class LiveGraspTest {
         Scenario s = mug();
         HandModel reference = Simulation.model(s, false);
         reference.run(null);
-        GraspAssessment want = GraspAssessment.of(reference, s.friction(), s.coneEdges());
+        GraspAssessment want = GraspAssessment.of(reference.graspInput(), s.friction(), s.coneEdges());
         assertTrue(want.quality().forceClosure(), "the mug grasp has force closure at μ = 0.5");
 
         try (SimulationRunner r = new SimulationRunner()) {

@@ -10,7 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.handsim.TestPaths;
 import org.handsim.cli.CliTesting;
-import org.handsim.util.SpecialFiles;
+import org.handsim.files.SpecialFiles;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 

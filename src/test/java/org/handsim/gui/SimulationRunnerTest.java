@@ -9,11 +9,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.LinkContacts;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SimulationException;
-import org.handsim.sim.TorqueModel;
+import org.handsim.model.HandModel;
+import org.handsim.model.LinkContacts;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.SimulationException;
+import org.handsim.model.TorqueModel;
 import org.junit.jupiter.api.Test;
 
 /** The simulation thread without a window: commands, pacing to a target time, trace rows, errors. */
@@ -82,7 +82,7 @@ class SimulationRunnerTest {
     void aSimulationExceptionStopsTheRunAndIsReported() throws Exception {
         LinkContacts failing = new LinkContacts() {
             @Override
-            public int collide(int finger, int link, double[] worldFromLink, org.handsim.sim.ContactSet out) {
+            public int collide(int finger, int link, double[] worldFromLink, org.handsim.model.ContactSet out) {
                 if (worldFromLink[11] > 0.16) throw new SimulationException("test: link above 0.16 m");
                 return 0;
             }

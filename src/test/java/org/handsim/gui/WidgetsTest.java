@@ -19,4 +19,16 @@ class WidgetsTest {
         assertEquals("NaN", Widgets.significant(Double.NaN, 4));
         assertEquals("0.13", Widgets.significant(0.125, 2));                   // 0.125 is exact: half up
     }
+
+    /**
+     * A field holding a 1 MB line (a window script's {@code set fk3.counts xxx...}): the refusal
+     * quotes it short and on one line (it was the whole megabyte).
+     */
+    @Test
+    void aNumberFieldQuotesWhatItRefusesShort() {
+        String typed = "x".repeat(1_000_000) + "\n";
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+            () -> Widgets.number(new javax.swing.JTextField(typed), "finger 3 counts"));
+        assertEquals("finger 3 counts: 'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...xxxxxxxxxxxxxxxxx' is not a number", e.getMessage());
+    }
 }

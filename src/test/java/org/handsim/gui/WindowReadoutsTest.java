@@ -13,10 +13,10 @@ import javax.swing.JTable;
 import javax.swing.table.DefaultTableModel;
 import org.handsim.TestPaths;
 import org.handsim.cli.CliTesting;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
-import org.handsim.sim.Snapshot;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
+import org.handsim.model.Snapshot;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 

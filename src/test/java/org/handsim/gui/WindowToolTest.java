@@ -24,13 +24,13 @@ import org.handsim.cli.CliTesting;
 import org.handsim.mesh.ObjWriter;
 import org.handsim.mesh.StlWriter;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.SceneGeometry;
+import org.handsim.scenario.SceneMeshes;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * The window as a daily tool (issue 14, "Done means"), end to end in a child JVM on the current
+ * The window as a daily tool, end to end in a child JVM on the current
  * display (see {@link GuiWindowTest} for how the display reaches the tests):
  * <ul>
  *   <li>an STL and an OBJ model that would start inside the hand are placed clear of it (no
@@ -48,7 +48,7 @@ import org.junit.jupiter.api.Test;
 class WindowToolTest {
     /** The mug in millimetres, as a binary STL (GraspIt!'s unit: "auto" must find it). */
     static Path mugStl(Path dir) throws Exception {
-        TriangleMesh mug = SceneGeometry.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0);
+        TriangleMesh mug = SceneMeshes.mesh(TestPaths.root().resolve("vrml/objects/mug.wrl"), 24, 1.0);
         Path f = dir.resolve("mug_mm.stl");
         try (OutputStream o = Files.newOutputStream(f)) {
             StlWriter.writeBinary(o, mug, 1000);
@@ -58,7 +58,7 @@ class WindowToolTest {
 
     /** A cylinder 0.11 m across as OBJ in metres: wider than the gap between the fingers. */
     static Path wideObj(Path dir) throws Exception {
-        TriangleMesh cyl = SceneGeometry.mesh(TestPaths.root().resolve("vrml/objects/cylinder.wrl"), 24, 2.2);
+        TriangleMesh cyl = SceneMeshes.mesh(TestPaths.root().resolve("vrml/objects/cylinder.wrl"), 24, 2.2);
         Path f = dir.resolve("wide.obj");
         StringWriter w = new StringWriter();
         ObjWriter.write(w, List.of(cyl));

@@ -84,4 +84,41 @@ class ObjReaderTest {
         m = message("v 0 0 0\ncstype bspline\n");
         assertTrue(m.startsWith("t.obj:2:1: 'cstype': free-form curves and surfaces are not supported"), m);
     }
+
+    /**
+     * Faces whose triangles all have zero area are dropped as the file streams and counted as
+     * the walk counted them when it dropped them itself (measured before: 4 triangles, 6
+     * degenerate, 1 shape for this file): repeated corners, collinear corners, a quad of two
+     * points. A group whose faces are all degenerate is still one shape.
+     */
+    @Test
+    void degenerateFacesAreDroppedAndCountedAsTheWalkCountedThem() {
+        String text = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 0 0 1\nv 1 0 0\n"
+            + "f 1 1 1\nf 1 2 3\nf 1 2 3 1\nf 1 1 2 2\nf 1 2 4\nf 1 4 5\nf 2 4 5\nf 1 2 5\nf 2 6 1\n";
+        ObjReader.Result r = ObjReader.read("t.obj", text, 1.0);
+        assertEquals(4, r.mesh().triangleCount());
+        assertEquals(7, r.degenerate(), "6, and f 2 6 1 whose corners 2 and 6 are the same point");
+        assertEquals(9, r.faces());
+        assertEquals(1, r.walk().shapes);
+        ObjReader.Result none = ObjReader.read("t.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\ng a\nf 1 1 1\nf 1 2 3\ng b\nf 3 2 1\n", 1.0);
+        assertEquals(0, none.mesh().triangleCount());
+        assertEquals(3, none.degenerate());
+        assertEquals(2, none.walk().shapes, "each group is a shape, as when the walk dropped its triangles");
+    }
+
+    /** A face of more corners than the limit is refused at the first corner beyond it, before anything is built. */
+    @Test
+    void aFaceBeyondTheCornerLimitIsRefused() {
+        StringBuilder v = new StringBuilder();
+        StringBuilder f = new StringBuilder("f");
+        for (int i = 0; i < MeshLimits.MAX_FACE_CORNERS + 1; i++) {
+            double a = 2 * Math.PI * i / (MeshLimits.MAX_FACE_CORNERS + 1);
+            v.append("v ").append(Math.cos(a)).append(' ').append(Math.sin(a)).append(" 0\n");
+            f.append(' ').append(i + 1);
+        }
+        String at = f.substring(0, f.lastIndexOf(" "));
+        assertEquals(MeshLimits.MAX_FACE_CORNERS - 2, mesh(v + at + "\n").triangleCount(), "the limit itself is read");
+        assertEquals("t.obj:" + (MeshLimits.MAX_FACE_CORNERS + 2) + ":" + (at.length() + 2) + ": a face of 1025 corners, more than the limit of 1024"
+            + " corners per face", message(v + f.toString() + "\n"));
+    }
 }

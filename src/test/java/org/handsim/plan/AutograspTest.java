@@ -10,9 +10,9 @@ import org.handsim.TestPaths;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.sim.HandClearance;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.SceneGeometry;
+import org.handsim.model.HandClearance;
+import org.handsim.scenario.Scenario;
+import org.handsim.scenario.SceneMeshes;
 import org.junit.jupiter.api.Test;
 
 class AutograspTest {
@@ -56,13 +56,13 @@ class AutograspTest {
         assertEquals(0, c[0], 1e-15);
         assertEquals(0, c[2], 1e-15);
         double best = Double.NEGATIVE_INFINITY;
-        best = Math.max(best, highestAboveFace(SceneGeometry.mesh(SceneGeometry.palmFile(), SceneGeometry.LINK_DIVISIONS, 1.0),
+        best = Math.max(best, highestAboveFace(SceneMeshes.mesh(SceneMeshes.palmFile(), SceneMeshes.LINK_DIVISIONS, 1.0),
             RigidTransform.IDENTITY.toArray(), 0, c));
         double[] frames = new double[48];
         for (int k = 1; k <= 3; k++) {
             FingerKinematics.of(k).framesInPalm(new double[3], frames);
             for (int j = 1; j <= 3; j++) {
-                best = Math.max(best, highestAboveFace(SceneGeometry.mesh(SceneGeometry.linkFile(j), SceneGeometry.LINK_DIVISIONS, 1.0), frames, 12 * j, c));
+                best = Math.max(best, highestAboveFace(SceneMeshes.mesh(SceneMeshes.linkFile(j), SceneMeshes.LINK_DIVISIONS, 1.0), frames, 12 * j, c));
             }
         }
         double expected = 0.03 - c[2] + best;

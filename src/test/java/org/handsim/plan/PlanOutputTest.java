@@ -11,8 +11,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
-import org.handsim.sim.Scenario;
-import org.handsim.util.Json;
+import org.handsim.scenario.Scenario;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Test;
 
 /** plan.csv, plan.json and best/ as the README's contracts say; the bounded-memory summaries against direct computation. */

@@ -9,13 +9,13 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.handsim.TestPaths;
-import org.handsim.sim.ClutchState;
-import org.handsim.sim.GraspAssessment;
-import org.handsim.sim.HandModel;
-import org.handsim.sim.Scenario;
-import org.handsim.sim.Simulation;
-import org.handsim.util.Json;
-import org.handsim.util.JsonWriter;
+import org.handsim.clutch.ClutchState;
+import org.handsim.grasp.GraspAssessment;
+import org.handsim.model.HandModel;
+import org.handsim.scenario.Scenario;
+import org.handsim.model.Simulation;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -79,7 +79,7 @@ class TrialScenarioTest {
         while (m.running() && !(m.state(1) == ClutchState.STALLED && m.state(2) == ClutchState.STALLED && m.state(3) == ClutchState.STALLED)) {
             m.step();
         }
-        return GraspAssessment.of(m, spec.mu(), spec.edges());
+        return GraspAssessment.of(m.graspInput(), spec.mu(), spec.edges());
     }
 
     /**

@@ -25,7 +25,7 @@ import java.util.jar.JarOutputStream;
 import java.util.zip.ZipEntry;
 import org.handsim.TestPaths;
 import org.handsim.cli.ChildJvm;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 

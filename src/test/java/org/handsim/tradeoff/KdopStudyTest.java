@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.List;
 import org.handsim.chart.StudyTable;
-import org.handsim.sim.SceneGeometry;
+import org.handsim.model.SceneGeometry;
 import org.junit.jupiter.api.Test;
 
 /** Chart 3: k changes only the speed; the grasps really touch; the quick run's table. */

@@ -8,7 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.handsim.sim.Home;
+import org.handsim.scenario.Home;
 import org.junit.jupiter.api.Test;
 
 /** {@code handsim run --tolerance}: lengths, the committed table, and the choice it makes. */

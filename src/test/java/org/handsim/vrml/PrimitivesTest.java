@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
  * ⇒ TessellationWalk ⇒ TriangleMesh) against their analytic area and volume. The curved ones
  * are inscribed polyhedra: the error must shrink as {@code divisions} doubles, by a factor close
  * to 4 (second order, as the inscribed n-gon's area πr²(1 − 2π²/(3n²) + ...)), which makes
- * the tessellation's order a test rather than a claim (STYLE.md item 11).
+ * the tessellation's order a test rather than a claim (docs/STYLE.md, item 11).
  */
 class PrimitivesTest {
     private static final int[] DIVISIONS = {8, 16, 32, 64, 128, 256};

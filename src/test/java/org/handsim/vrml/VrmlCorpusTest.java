@@ -22,7 +22,8 @@ import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
 
 /**
- * Walks the real-world corpus in {@code ../shared/vrml-corpus} (read in place, never copied):
+ * Walks the real-world VRML corpus of the shared data folder ({@link org.handsim.TestPaths#shared};
+ * read in place, never copied):
  * every entry point of MANIFEST.md loads, its IndexedFaceSet triangle count as written equals
  * the manifest's independent count, and the tessellation walk gives finite bounds; every file in
  * {@code reject/} is refused with the specific message.

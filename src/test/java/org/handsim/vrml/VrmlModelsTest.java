@@ -14,7 +14,7 @@ import org.handsim.TestPaths;
 import org.handsim.mesh.MeshWelder;
 import org.handsim.mesh.TessellationWalk;
 import org.handsim.mesh.TriangleMesh;
-import org.handsim.util.Json;
+import org.handsim.text.Json;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
 

@@ -19,7 +19,7 @@ import org.apache.spark.api.java.JavaRDD;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.handsim.plan.IndexedJob;
 import org.handsim.plan.TrialEngine;
-import org.handsim.sim.Home;
+import org.handsim.scenario.Home;
 import scala.Function0;
 import scala.Function1;
 import scala.Function2;

@@ -1,5 +1,5 @@
 /**
- * The Apache Spark engine of {@code handsim plan} and {@code handsim sweep} (issue 13): the
+ * The Apache Spark engine of {@code handsim plan} and {@code handsim sweep}: the
  * indexed trials of a {@link org.handsim.plan.IndexedJob} as a Spark job, embedded
  * ({@code local[*]}) or on a standalone cluster ({@code spark://HOST:7077}). A subproject
  * ({@code spark/}) that depends on the core; the core finds it through

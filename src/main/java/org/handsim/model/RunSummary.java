@@ -1,0 +1,57 @@
+package org.handsim.model;
+
+import org.handsim.text.Decimal;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The figures of one finished run, as written to {@code summary.json} (a contract: README,
+ * "Outputs"). Keys: {@code scenario, sim_time_s, steps, dt_s, wall_time_s, steps_per_s,
+ * realtime_factor, fingers[{finger, final_state, breakaway_time_s|null, breakaway_torque_Nm|null,
+ * breakaway_force_N|null, contact_counts|null, breakaway_counts|null, final_joints_rad,
+ * max_contact_force_N, torque_residual_Nm}], lazy, counters{...}}; {@code torque_residual_Nm} is the
+ * largest {@link HandModel#torqueResidual} of the run.
+ */
+public final class RunSummary {
+    private RunSummary() {}
+
+    private static Object orNull(double v) {
+        return Double.isNaN(v) ? null : v;
+    }
+
+    /** The summary of a model that has run, with the wall time it took. */
+    public static Map<String, Object> of(HandModel m, double wallSeconds) {
+        Map<String, Object> s = new LinkedHashMap<>();
+        s.put("scenario", m.scenario().name());
+        s.put("sim_time_s", m.time());
+        s.put("steps", m.stepIndex());
+        s.put("dt_s", m.scenario().dt());
+        s.put("wall_time_s", wallSeconds);
+        s.put("steps_per_s", wallSeconds > 0 ? m.stepIndex() / wallSeconds : null);
+        s.put("realtime_factor", wallSeconds > 0 ? m.time() / wallSeconds : null);
+        List<Object> fingers = new ArrayList<>();
+        for (int k = 1; k <= 3; k++) {
+            Map<String, Object> f = new LinkedHashMap<>();
+            f.put("finger", k);
+            f.put("final_state", m.state(k).name());
+            f.put("breakaway_time_s", orNull(m.breakawayTime(k)));
+            f.put("breakaway_torque_Nm", orNull(m.breakawayTorque(k)));
+            f.put("breakaway_force_N", orNull(m.breakawayForce(k)));
+            f.put("contact_counts", orNull(m.contactCounts(k)));
+            f.put("breakaway_counts", orNull(m.breakawayCounts(k)));
+            f.put("final_joints_rad", Decimal.clean(m.joints(k)));   // README: |x| < 1e-12 written as 0
+            f.put("max_contact_force_N", m.maxContactForce(k));
+            f.put("torque_residual_Nm", m.maxTorqueResidual(k));
+            fingers.add(f);
+        }
+        s.put("fingers", fingers);
+        Map<String, Object> c = new LinkedHashMap<>();
+        for (HandModel.Counter counter : HandModel.Counter.values()) c.put(counter.name().toLowerCase(), m.counter(counter));
+        c.putAll(m.collisionCounters());
+        s.put("lazy", m.isLazy());
+        s.put("counters", c);
+        return s;
+    }
+}

@@ -1,0 +1,437 @@
+package org.handsim.trace;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.handsim.clutch.ClutchState;
+import org.handsim.files.AtomicFile;
+import org.handsim.text.Decimal;
+
+/**
+ * Records one row per step and writes {@code trace.csv}. The header is a contract (README,
+ * "Outputs"): {@code t_s}, then per finger k = 1, 2, 3:
+ * {@code qM{k}_counts, theta{k}1_rad, theta{k}2_rad, theta{k}3_rad, dtheta{k}2_rad_s,
+ * dtheta{k}3_rad_s, ddtheta{k}2_rad_s2, ddtheta{k}3_rad_s2, tau{k}2_Nm, tau{k}3_Nm, state{k},
+ * contacts{k}, force{k}_N}, then {@code qM4_counts}, then {@code clutch1_Nm, clutch2_Nm,
+ * clutch3_Nm} (the torque through each finger's clutch, {@link HandModel#clutchTorque}) and
+ * {@code residual1_Nm, residual2_Nm, residual3_Nm} (how far each finger's contact forces are
+ * from carrying its joint torques, {@link HandModel#torqueResidual}). Numbers are written by
+ * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
+ * ({@link Decimal#clean}).
+ *
+ * <p>Two kinds (bounded memory):
+ * <ul>
+ *   <li>{@link #Recorder()} keeps every row in memory (tests, short runs; the columns double as
+ *       they grow);</li>
+ *   <li>{@link #bounded(Path, long)} keeps memory flat in the number of steps: each finished row
+ *       is written to the trace file's temporary name at once (renamed by {@link #finish()},
+ *       deleted by {@link #close()} if the run fails), and memory holds only every
+ *       {@link #stride()}-th row and the last — the rows the charts draw
+ *       ({@link #CHART_POINTS}); {@link #rows()}, {@link #time(int)}, {@link #get} then index
+ *       the kept rows.</li>
+ * </ul>
+ * Appending a row allocates nothing except when the kept columns grow (doubling); writing a
+ * row formats its numbers.
+ */
+public final class Recorder implements AutoCloseable {
+    /** Most points a chart draws of a trace: a bounded recorder keeps about this many rows (up to twice). */
+    public static final int CHART_POINTS = 1500;
+    /** Numeric per-finger columns, in header order (state, contacts, force follow them). */
+    static final String[] FINGER_COLUMNS = {
+        "qM%d_counts", "theta%d1_rad", "theta%d2_rad", "theta%d3_rad", "dtheta%d2_rad_s", "dtheta%d3_rad_s",
+        "ddtheta%d2_rad_s2", "ddtheta%d3_rad_s2", "tau%d2_Nm", "tau%d3_Nm"};
+    /** Column indices inside a finger's numeric block. */
+    public static final int Q = 0, TH1 = 1, TH2 = 2, TH3 = 3, DTH2 = 4, DTH3 = 5, DDTH2 = 6, DDTH3 = 7, TAU2 = 8, TAU3 = 9;
+    private static final int NF = FINGER_COLUMNS.length;
+    private static final ClutchState[] STATES = ClutchState.values();
+
+    private int rows;                 // rows in memory; the last one is the row being filled
+    private long total;               // rows begun
+    private final long stride;        // a finished row r stays in memory when r % stride == 0
+    private final Path target;        // null: memory only
+    private RowWriter writer;         // started when the first row is finished
+    private int buffered = 2;         // rows the writer may lag behind
+    private boolean finished;
+    private final boolean[] moved = new boolean[3];
+    private final double[] firstQ = new double[3];
+    private double[] time = new double[1024];
+    private double[][] num = new double[3 * NF][1024];
+    private byte[][] state = new byte[3][1024];
+    private int[][] contacts = new int[3][1024];
+    private double[][] force = new double[3][1024];
+    private double[] spread = new double[1024];
+    private double[][] clutch = new double[3][1024], residual = new double[3][1024];
+
+    /** A recorder that keeps every row in memory. */
+    public Recorder() {
+        this.stride = 1;
+        this.target = null;
+    }
+
+    private Recorder(Path trace, long expectedRows) {
+        this.stride = Math.max(1, expectedRows / CHART_POINTS);
+        this.target = trace;
+        this.buffered = (int) Math.max(2, Math.min(expectedRows + 1, RowWriter.MAX_BUFFERED));
+    }
+
+    /**
+     * A recorder whose memory does not grow with the run: rows stream to {@code trace}'s
+     * temporary file (none if {@code trace} is null) and memory keeps every
+     * {@code expectedRows / }{@value #CHART_POINTS}-th row and the last.
+     *
+     * @param trace        trace.csv to write, or null for the chart rows only
+     * @param expectedRows rows the run will record (steps + 1), which sets the stride
+     */
+    public static Recorder bounded(Path trace, long expectedRows) {
+        return new Recorder(trace, expectedRows);
+    }
+
+    /** The header line of trace.csv (without newline). */
+    public static String header() {
+        List<String> h = new ArrayList<>();
+        h.add("t_s");
+        for (int k = 1; k <= 3; k++) {
+            for (String c : FINGER_COLUMNS) h.add(String.format(c, k));
+            h.add("state" + k);
+            h.add("contacts" + k);
+            h.add("force" + k + "_N");
+        }
+        h.add("qM4_counts");
+        for (int k = 1; k <= 3; k++) h.add("clutch" + k + "_Nm");
+        for (int k = 1; k <= 3; k++) h.add("residual" + k + "_Nm");
+        return String.join(",", h);
+    }
+
+    /** Starts a new row at time t (seconds); fill it with the setters. */
+    public void beginRow(double t) {
+        if (finished) throw new IllegalStateException("the trace is finished");
+        if (rows > 0 && !finishRow()) rows--;   // written, not kept: its slot takes the new row
+        if (rows == time.length) grow();
+        time[rows] = t;
+        rows++;
+        total++;
+    }
+
+    /** Writes the row being filled (when streaming) and says whether memory keeps it. */
+    private boolean finishRow() {
+        int r = rows - 1;
+        long index = total - 1;
+        for (int k = 0; k < 3; k++) {
+            double q = num[k * NF + Q][r];
+            if (index == 0) firstQ[k] = q;
+            else if (q != firstQ[k]) moved[k] = true;
+        }
+        if (target != null) {
+            if (writer == null) writer = new RowWriter(target, buffered);   // the folder and the temporary file appear now
+            writer.put(this, r);
+        }
+        return index % stride == 0;
+    }
+
+    /** Row r as {@link #WIDTH} numbers in trace.csv's column order (state as its ordinal), into {@code to} from {@code at}. */
+    private void copyRow(int r, double[] to, int at) {
+        int i = at;
+        to[i++] = time[r];
+        for (int k = 0; k < 3; k++) {
+            for (int c = 0; c < NF; c++) to[i++] = num[k * NF + c][r];
+            to[i++] = state[k][r];
+            to[i++] = contacts[k][r];
+            to[i++] = force[k][r];
+        }
+        to[i++] = spread[r];
+        for (int k = 0; k < 3; k++) to[i++] = clutch[k][r];
+        for (int k = 0; k < 3; k++) to[i++] = residual[k][r];
+    }
+
+    /**
+     * Width of a row of numbers: t, per finger 10 numbers, state, contacts, force, then the
+     * spread, then per finger the clutch torque, then per finger the residual.
+     */
+    static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6;
+
+    /** One trace.csv line from a row of {@link #WIDTH} numbers (the one place the format is written). */
+    static void format(double[] row, StringBuilder sb) {
+        sb.setLength(0);
+        int i = 0;
+        Decimal.append(sb, row[i++]);
+        for (int k = 0; k < 3; k++) {
+            for (int c = 0; c < NF; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+            sb.append(',').append(STATES[(int) row[i++]].name());
+            sb.append(',').append((long) row[i++]);
+            Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        }
+        Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        for (int c = 0; c < 6; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        sb.append('\n');
+    }
+
+    /**
+     * Formats and writes rows on its own thread (the run goes on on the other core). The
+     * stepping thread copies each finished row into a chunk of {@value #CHUNK} rows taken from
+     * a fixed pool and hands full chunks over (one hand-over per {@value #CHUNK} rows, so the
+     * threads rarely wake each other); it allocates nothing and waits only when the writer is a
+     * whole pool behind. The pool holds the whole run up to {@value #MAX_BUFFERED} rows
+     * (25 MB), so a run of that length never waits for its trace.
+     */
+    private static final class RowWriter extends Thread {
+        static final int CHUNK = 256;
+        static final int MAX_BUFFERED = 65_536;
+        private static final double[] END = new double[0];
+        private final int chunks;
+        private final java.util.concurrent.ArrayBlockingQueue<double[]> free;
+        private final java.util.concurrent.ArrayBlockingQueue<double[]> full;
+        private final java.util.concurrent.ArrayBlockingQueue<Integer> counts;
+        private final AtomicFile file;
+        private double[] current;
+        private int inCurrent;
+        private volatile Throwable failure;
+        private volatile long nanos;
+
+        RowWriter(Path target, int buffered) {
+            super("trace-writer");
+            this.chunks = Math.max(2, (buffered + CHUNK - 1) / CHUNK);
+            this.free = new java.util.concurrent.ArrayBlockingQueue<>(chunks);
+            this.full = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
+            this.counts = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
+            setDaemon(true);
+            for (int i = 0; i < chunks; i++) free.add(new double[CHUNK * WIDTH]);   // before the file: nothing to clean up if this fails
+            try {
+                file = new AtomicFile(target);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+            start();
+        }
+
+        /** Copies row r of the recorder into the current chunk; hands the chunk over when full. */
+        void put(Recorder rec, int r) {
+            check();
+            if (current == null) {
+                try {
+                    current = free.take();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new IllegalStateException("interrupted while writing the trace", e);
+                }
+                inCurrent = 0;
+            }
+            rec.copyRow(r, current, inCurrent * WIDTH);
+            if (++inCurrent == CHUNK) handOver();
+        }
+
+        private void handOver() {
+            counts.add(inCurrent);
+            full.add(current);
+            current = null;
+        }
+
+        private void check() {
+            Throwable f = failure;
+            if (f instanceof IOException) throw new UncheckedIOException((IOException) f);
+            if (f != null) throw new IllegalStateException("writing the trace failed: " + f, f);
+        }
+
+        @Override
+        public void run() {
+            StringBuilder sb = new StringBuilder(512);
+            double[] row = new double[WIDTH];
+            try {
+                AsciiOut w = new AsciiOut(file.stream());
+                long t0 = System.nanoTime();
+                sb.append(header()).append('\n');
+                w.append(sb);
+                nanos += System.nanoTime() - t0;
+                while (true) {
+                    double[] chunk = full.take();
+                    if (chunk == END) break;
+                    int n = counts.take();
+                    t0 = System.nanoTime();
+                    for (int i = 0; i < n; i++) {
+                        System.arraycopy(chunk, i * WIDTH, row, 0, WIDTH);
+                        format(row, sb);
+                        w.append(sb);
+                    }
+                    nanos += System.nanoTime() - t0;
+                    free.add(chunk);
+                }
+                w.flush();
+            } catch (Throwable t) {
+                failure = t;
+                free.clear();
+                for (int i = 0; i < chunks; i++) free.offer(new double[CHUNK * WIDTH]);   // never leave the stepping thread waiting
+            }
+        }
+
+        /** Hands over the last rows, waits for all of them, then renames the file onto its name. */
+        void finish() throws IOException {
+            if (current != null && inCurrent > 0) handOver();
+            full.add(END);
+            try {
+                join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while finishing the trace", e);
+            }
+            if (failure instanceof IOException) throw (IOException) failure;
+            check();
+            long t0 = System.nanoTime();
+            file.commit();
+            nanos += System.nanoTime() - t0;
+        }
+
+        /** Stops the thread and deletes the temporary file. */
+        void abort() throws IOException {
+            full.offer(END);
+            try {
+                join(10_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            file.close();
+        }
+    }
+
+    /**
+     * trace.csv's bytes: its text is ASCII (numbers, state names, commas), so each character is
+     * one byte, copied into a buffer — a third of the writer thread's time went to a
+     * {@code Writer}'s UTF-8 encoder and its copies.
+     */
+    private static final class AsciiOut {
+        private final java.io.OutputStream out;
+        private final byte[] buf = new byte[1 << 16];
+        private int n;
+
+        AsciiOut(java.io.OutputStream out) { this.out = out; }
+
+        void append(CharSequence s) throws IOException {
+            int len = s.length();
+            if (n + len > buf.length) flushBuffer();
+            if (len > buf.length) throw new IOException("a trace line longer than " + buf.length + " characters");
+            for (int i = 0; i < len; i++) {
+                char c = s.charAt(i);
+                if (c >= 0x80) throw new IOException("a trace line that is not ASCII");
+                buf[n++] = (byte) c;
+            }
+        }
+
+        private void flushBuffer() throws IOException {
+            out.write(buf, 0, n);
+            n = 0;
+        }
+
+        void flush() throws IOException {
+            flushBuffer();
+            out.flush();
+        }
+    }
+
+    private void grow() {
+        int n = time.length * 2;
+        time = Arrays.copyOf(time, n);
+        spread = Arrays.copyOf(spread, n);
+        for (int i = 0; i < num.length; i++) num[i] = Arrays.copyOf(num[i], n);
+        for (int k = 0; k < 3; k++) {
+            state[k] = Arrays.copyOf(state[k], n);
+            contacts[k] = Arrays.copyOf(contacts[k], n);
+            force[k] = Arrays.copyOf(force[k], n);
+            clutch[k] = Arrays.copyOf(clutch[k], n);
+            residual[k] = Arrays.copyOf(residual[k], n);
+        }
+    }
+
+    /** Sets numeric column c (Q .. TAU3) of finger k (1..3) in the current row. */
+    public void set(int k, int c, double v) { num[(k - 1) * NF + c][rows - 1] = v; }
+
+    public void setState(int k, ClutchState s) { state[k - 1][rows - 1] = (byte) s.ordinal(); }
+
+    public void setContacts(int k, int n, double forceSum) {
+        contacts[k - 1][rows - 1] = n;
+        force[k - 1][rows - 1] = forceSum;
+    }
+
+    public void setSpread(double q4) { spread[rows - 1] = q4; }
+
+    /** Finger k's clutch torque and contact-force residual (N·m) in the current row. */
+    public void setClutchAndResidual(int k, double clutchNm, double residualNm) {
+        clutch[k - 1][rows - 1] = clutchNm;
+        residual[k - 1][rows - 1] = residualNm;
+    }
+
+    /** Rows in memory: all rows, or for a bounded recorder every {@link #stride()}-th and the last. */
+    public int rows() { return rows; }
+    /** Rows recorded in all (the rows of trace.csv). */
+    public long totalRows() { return total; }
+    /** Of the recorded rows, memory keeps those whose index is a multiple of this, and the last. */
+    public long stride() { return stride; }
+    public double time(int row) { return time[row]; }
+    public double get(int k, int c, int row) { return num[(k - 1) * NF + c][row]; }
+    public ClutchState state(int k, int row) { return STATES[state[k - 1][row]]; }
+    public int contacts(int k, int row) { return contacts[k - 1][row]; }
+    public double force(int k, int row) { return force[k - 1][row]; }
+    public double spread(int row) { return spread[row]; }
+    /** Finger k's clutch torque in a row in memory, N·m. */
+    public double clutch(int k, int row) { return clutch[k - 1][row]; }
+    /** Finger k's contact-force residual in a row in memory, N·m. */
+    public double residual(int k, int row) { return residual[k - 1][row]; }
+    /** Whether finger k's motor count ever differed from its first row's (over every row recorded). */
+    public boolean moved(int k) {
+        if (rows == 0) return false;
+        double q = num[(k - 1) * NF + Q][rows - 1];
+        return moved[k - 1] || (total > 1 && q != firstQ[k - 1]);
+    }
+    /** Seconds the trace writer spent formatting and writing rows (on its own thread). */
+    public double writeSeconds() { return writer == null ? 0 : writer.nanos / 1e9; }
+
+    /** A copy of column c of finger k over the rows in memory. */
+    public double[] column(int k, int c) { return Arrays.copyOf(num[(k - 1) * NF + c], rows); }
+    public double[] times() { return Arrays.copyOf(time, rows); }
+    public double[] forces(int k) { return Arrays.copyOf(force[k - 1], rows); }
+
+    /** Clears all rows (keeps capacity); a streaming recorder can only be cleared before its first row is written. */
+    public void clear() {
+        if (writer != null) throw new IllegalStateException("a streamed trace cannot be restarted");
+        rows = 0;
+        total = 0;
+        Arrays.fill(moved, false);
+    }
+
+    /**
+     * Ends a bounded recorder's trace: writes the last row and renames the file onto its name
+     * (nothing to do for a memory-only recorder).
+     */
+    public void finish() throws IOException {
+        if (finished) return;
+        if (rows > 0) finishRow();
+        finished = true;
+        if (writer != null) writer.finish();
+    }
+
+    /** Deletes the temporary trace file unless {@link #finish()} committed it. */
+    @Override
+    public void close() throws IOException {
+        finished = true;
+        if (writer != null && writer.isAlive()) writer.abort();
+        else if (writer != null) writer.file.close();
+    }
+
+    /** Writes all rows in memory as trace.csv atomically (nothing appears under the name unless complete). */
+    public void writeCsv(Path target) throws IOException {
+        try (AtomicFile f = new AtomicFile(target)) {
+            Writer w = f.writer();
+            w.write(header());
+            w.write('\n');
+            double[] row = new double[WIDTH];
+            StringBuilder sb = new StringBuilder(512);
+            for (int r = 0; r < rows; r++) {
+                copyRow(r, row, 0);
+                format(row, sb);
+                w.append(sb);
+            }
+            f.commit();
+        }
+    }
+}
