@@ -137,7 +137,7 @@ public final class BodyStepper {
             int c = problem.addConstraint(0);
             problem.jacobian()[(3 * c) * nv + 6 + j] = 1;   // the worm: velocity ≥ 0
         }
-        ContactSolver.Outcome out = solver.solve(problem);
+        ContactSolver.Outcome out = solver.solveCoulomb(problem);
         solver.velocities(twist, 6);
         for (int j = 0; j < followers; j++) fVelocity[j] = solver.velocity(6 + j);
         for (int i = 0; i < nc; i++) {

@@ -40,6 +40,7 @@ public final class ContactProblem {
     double[] bias = new double[0];       // 3 per constraint
     double[] mu = new double[0];
     double[] reg = new double[0];        // R_c, per constraint (isotropic)
+    double[] radius = new double[0];     // NaN: Coulomb's cone; else the friction disk's radius (ContactSolver.solveCoulomb)
     double epsilon = DEFAULT_REGULARISATION;
 
     /** Starts a new problem of {@code nv} velocities: A = 0, v* = 0, no constraints. */
@@ -104,6 +105,7 @@ public final class ContactProblem {
             int cap = Math.max(8, 2 * nc);
             mu = Arrays.copyOf(mu, cap);
             reg = Arrays.copyOf(reg, cap);
+            radius = Arrays.copyOf(radius, cap);
             bias = Arrays.copyOf(bias, 3 * cap);
         }
         if (jac.length < 3 * nc * nv) jac = Arrays.copyOf(jac, 3 * Math.max(8, 2 * nc) * nv);
@@ -111,6 +113,7 @@ public final class ContactProblem {
         bias[3 * c] = bias[3 * c + 1] = bias[3 * c + 2] = 0;
         mu[c] = frictionCoefficient;
         reg[c] = 0;
+        radius[c] = Double.NaN;
         return c;
     }
 

@@ -41,6 +41,8 @@ public final class ContactSolver {
     private double[] vc = new double[0], jd = new double[0], gamma = new double[0], g = new double[0];
     private double[] col = new double[0];
     private final double[] gm = new double[3], second = new double[1];
+    private double[] base = new double[0], shift = new double[0];
+    private int fixedPoint;
     private int iterations;
     private Outcome outcome = Outcome.CONVERGED;
     private double lastGradient;
@@ -51,6 +53,68 @@ public final class ContactSolver {
      * @return how it ended ({@link Outcome#CONVERGED} unless the problem is broken)
      */
     public Outcome solve(ContactProblem p) {
+        return solve(p, false);
+    }
+
+    /**
+     * Solves {@code p} for Coulomb's law itself rather than its convex relaxation. In the relaxed
+     * problem a sliding contact must also separate at μ|v_t| (the velocity lies in the dual cone):
+     * harmless on a table (the object would hover μ|v_t|h above it) but it locks an object squeezed
+     * between two links that cannot open — it could not slide out of a pinch however little
+     * friction held it. So, after the relaxed solve, each contact's friction is bounded by a disk of
+     * radius μ·γ̂_n, γ̂_n its last normal impulse, with the normal impulse free and unilateral
+     * ({γ_n ≥ 0} × {|γ_t| ≤ μγ̂_n}: a convex set, projected onto separably), and the problem solved
+     * again, warm-started, until the normal impulses settle (to {@value #SHIFT_TOLERANCE} of the
+     * largest): a fixed point is a solution of the exact Coulomb problem — no penetration and no
+     * separation, v_n ≥ b_n complementary to γ_n, friction on the disk of radius μγ_n opposite the
+     * slip (the staggered projections of Kaufman, Sueda, James, Pai, SIGGRAPH Asia 2008; the
+     * "fixed normal force" friction of ODE and Bullet, iterated to consistency). Each iteration is
+     * one convex problem solved exactly; {@link #fixedPointIterations} counts them. When the
+     * impulses oscillate the update is halved. The problem keeps the disks of the last solve.
+     *
+     * @return how the last solve ended; {@link Outcome#MAX_ITERATIONS} also when the normal
+     *         impulses did not settle within {@value #MAX_FIXED_POINT} solves
+     */
+    public Outcome solveCoulomb(ContactProblem p) {
+        int nc = p.nc;
+        if (base.length < nc) { base = new double[2 * nc]; shift = new double[2 * nc]; }
+        Outcome o = solve(p, false);
+        fixedPoint = 1;
+        if (o == Outcome.NOT_POSITIVE_DEFINITE) return o;
+        boolean any = false;
+        for (int c = 0; c < nc; c++) {
+            if (p.mu[c] > 0) {
+                base[c] = gamma[3 * c];
+                any = true;
+            }
+        }
+        if (!any) return o;
+        double damping = 1, lastChange = Double.POSITIVE_INFINITY;
+        for (int k = 1; k < MAX_FIXED_POINT; k++) {
+            for (int c = 0; c < nc; c++) if (p.mu[c] > 0) p.radius[c] = p.mu[c] * base[c];
+            o = solve(p, true);
+            fixedPoint++;
+            if (o == Outcome.NOT_POSITIVE_DEFINITE) return o;
+            double change = 0, size = 0;
+            for (int c = 0; c < nc; c++) {
+                if (p.mu[c] == 0) continue;
+                change = Math.max(change, Math.abs(gamma[3 * c] - base[c]));
+                size = Math.max(size, Math.max(gamma[3 * c], base[c]));
+            }
+            if (change <= SHIFT_TOLERANCE * size || change == 0) return o;
+            if (change > lastChange) damping = Math.max(0.125, 0.5 * damping);
+            lastChange = change;
+            for (int c = 0; c < nc; c++) if (p.mu[c] > 0) base[c] += damping * (gamma[3 * c] - base[c]);
+        }
+        return Outcome.MAX_ITERATIONS;
+    }
+
+    /** Most convex solves of one {@link #solveCoulomb}. */
+    public static final int MAX_FIXED_POINT = 50;
+    /** The normal impulses have settled when they change by less than this fraction of the largest. */
+    public static final double SHIFT_TOLERANCE = 1e-9;
+
+    private Outcome solve(ContactProblem p, boolean warm) {
         int nv = p.nv, nc = p.nc;
         grow(nv, nc);
         double[] a = p.a;
@@ -65,8 +129,8 @@ public final class ContactSolver {
             for (int j = 0; j < nv; j++) w += p.jac[row + j] * col[j];
             p.reg[c] = p.epsilon * Math.max(w, 1e-300);
         }
-        System.arraycopy(p.vStar, 0, v, 0, nv);
-        iterations = 0;
+        if (!warm) System.arraycopy(p.vStar, 0, v, 0, nv);
+        if (!warm) iterations = 0;
         outcome = Outcome.MAX_ITERATIONS;
         for (int it = 0; it < MAX_ITERATIONS; it++) {
             evaluate(p, true);
@@ -132,7 +196,7 @@ public final class ContactSolver {
             }
             double r = p.reg[c];
             project(-(vc[o] - p.bias[o]) / r, -(vc[o + 1] - p.bias[o + 1]) / r, -(vc[o + 2] - p.bias[o + 2]) / r, p.mu[c],
-                gamma, o, hessian ? g : null, 0);
+                p.radius[c], gamma, o, hessian ? g : null, 0);
             for (int k = 0; k < 3; k++) {
                 double gk = gamma[o + k];
                 if (gk == 0) continue;
@@ -203,7 +267,7 @@ public final class ContactSolver {
             double y0 = -(vc[o] + alpha * jd[o] - p.bias[o]) / r;
             double y1 = -(vc[o + 1] + alpha * jd[o + 1] - p.bias[o + 1]) / r;
             double y2 = -(vc[o + 2] + alpha * jd[o + 2] - p.bias[o + 2]) / r;
-            project(y0, y1, y2, p.mu[c], gm, 0, gg, 0);
+            project(y0, y1, y2, p.mu[c], p.radius[c], gm, 0, gg, 0);
             d -= jd[o] * gm[0] + jd[o + 1] * gm[1] + jd[o + 2] * gm[2];
             if (gg != null) {
                 for (int k = 0; k < 3; k++) {
@@ -219,8 +283,26 @@ public final class ContactSolver {
      * The Euclidean projection of (y_n, y_t1, y_t2) onto Coulomb's cone of coefficient μ into
      * {@code out[o..o+2]}, and its Jacobian (3×3 row-major) into {@code dp[po..]} when given.
      */
-    static void project(double yn, double y1, double y2, double mu, double[] out, int o, double[] dp, int po) {
+    static void project(double yn, double y1, double y2, double mu, double radius, double[] out, int o, double[] dp, int po) {
         double t = Math.sqrt(y1 * y1 + y2 * y2);
+        if (!Double.isNaN(radius)) {                          // {γ_n ≥ 0} × {|γ_t| ≤ radius}
+            if (dp != null) Arrays.fill(dp, po, po + 9, 0);
+            out[o] = Math.max(yn, 0);
+            if (dp != null && yn > 0) dp[po] = 1;
+            if (t <= radius) {
+                out[o + 1] = y1; out[o + 2] = y2;
+                if (dp != null) dp[po + 4] = dp[po + 8] = 1;
+            } else {
+                double s = radius / t, ux = y1 / t, uy = y2 / t;
+                out[o + 1] = s * y1; out[o + 2] = s * y2;
+                if (dp != null) {
+                    dp[po + 4] = s * (1 - ux * ux);
+                    dp[po + 5] = dp[po + 7] = -s * ux * uy;
+                    dp[po + 8] = s * (1 - uy * uy);
+                }
+            }
+            return;
+        }
         if (yn >= 0 && t <= mu * yn) {                       // inside
             out[o] = yn; out[o + 1] = y1; out[o + 2] = y2;
             if (dp != null) {
@@ -283,7 +365,10 @@ public final class ContactSolver {
     /** @return component k (0 normal, 1 t₁, 2 t₂) of constraint c's impulse, N·s */
     public double impulse(int c, int k) { return gamma[3 * c + k]; }
 
-    /** @return the Newton iterations of the last solve */
+    /** @return the convex solves of the last {@link #solveCoulomb} */
+    public int fixedPointIterations() { return fixedPoint; }
+
+    /** @return the Newton iterations of the last solve (all of a {@link #solveCoulomb}'s together) */
     public int iterations() { return iterations; }
 
     /** @return how the last solve ended */

@@ -29,7 +29,9 @@ import org.handsim.mesh.TriangleMesh;
  *       case): the direction m between them (or the edges' cross product when they cross) must
  *       leave both edges through their outside — the two faces at each edge lie behind it — which
  *       also tells apart two edges a distance d apart (g = d) from two that passed through each
- *       other (g = −d, m reversed); a flat or concave edge has no outside and gives none.</li>
+ *       other (g = −d, m reversed). Only convex edges take part: a flat edge (between coplanar
+ *       faces) is its face's inside, and would pass that test both ways — a box sliding over a
+ *       table's inner edge met a wall there — and a concave edge has no outside.</li>
  * </ul>
  * Each candidate is a point midway between the two features, the unit normal along which the
  * other body pushes the object, and the gap.
@@ -206,6 +208,11 @@ public final class ProximityContacts {
     private void edgeEdge(int a, int ea, int b, int eb, double[] va, int[] ta, int[] tb, double margin, double depth) {
         int p1 = 3 * ta[3 * a + ea], q1 = 3 * ta[3 * a + (ea + 1) % 3], r1 = 3 * ta[3 * a + (ea + 2) % 3];
         int p2 = 3 * tb[3 * b + eb], q2 = 3 * tb[3 * b + (eb + 1) % 3], r2 = 3 * tb[3 * b + (eb + 2) % 3];
+        int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
+        if (o2 >= 0) placeVertex(object.mesh().vertices(), o2);
+        // only a convex edge can be the closest feature in a direction that its faces do not
+        // already give: a flat edge (a face's inside) is its face's, and has no outside of its own
+        if (!convex(va, p1, o1, other.mesh().normals(), 3 * a) || !convex(placed, p2, o2, placedNormals, 3 * b)) return;
         double d2 = td.segments(va, p1, q1, placed, p2, q2);
         double lim = Math.max(margin, depth);
         if (d2 > lim * lim) return;
@@ -226,8 +233,6 @@ public final class ProximityContacts {
             mx /= l; my /= l; mz /= l;
             d = 0;
         }
-        int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
-        if (o2 >= 0) placeVertex(object.mesh().vertices(), o2 / 1);
         double sign;
         if (outside(mx, my, mz, va, p1, r1, o1) && outside(-mx, -my, -mz, placed, p2, r2, o2)) {
             sign = 1;
@@ -239,6 +244,18 @@ public final class ProximityContacts {
         double g = sign * d;
         if (!(g <= margin && g >= -depth)) return;
         add(0.5 * (ax + bx), 0.5 * (ay + by), 0.5 * (az + bz), sign * mx, sign * my, sign * mz, g);
+    }
+
+    /**
+     * Whether the edge at vertex offset {@code p} of a triangle with unit normal {@code n[no..]} is
+     * convex: the vertex across it ({@code across}, a vertex index) lies below the triangle's plane
+     * by more than rounding. A border edge (−1) counts as convex.
+     */
+    private static boolean convex(double[] v, int p, int across, double[] n, int no) {
+        if (across < 0) return true;
+        int o = 3 * across;
+        double dx = v[o] - v[p], dy = v[o + 1] - v[p + 1], dz = v[o + 2] - v[p + 2];
+        return n[no] * dx + n[no + 1] * dy + n[no + 2] * dz < -SUPPORT_TOLERANCE * Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     /**

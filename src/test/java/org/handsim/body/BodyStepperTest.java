@@ -84,4 +84,60 @@ class BodyStepperTest {
         return new double[] {Math.sqrt(dx * dx + dy * dy + dz * dz), Quaternion.angleBetween(q0, 0, b.orientation(new double[4]), 0),
             dx * down[0] + dy * down[1] + dz * down[2]};
     }
+    /**
+     * A box pinched between two jaws, each a follower about a hinge L = 0.1 m below the contacts
+     * pressing with τ = 0.05 N·m (so N = τ/L = 0.5 N a side), gravity along the jaws' faces, μ = 0.6:
+     * friction holds 2μN/g = 61.2 g. A box of 0.8× that stays put (moves less than 1 µm in 0.5 s);
+     * one of 1.25× slides down with a = g − 2μN/m (within 2 % after 0.5 s); the jaws never open.
+     */
+    @Test
+    void aPinchedBoxHoldsOrSlidesAsTheJawsTorqueSays() {
+        double tauNm = 0.05, arm = 0.1, mu = 0.6, n = tauNm / arm;
+        double holdKg = 2 * mu * n / G;
+        for (double factor : new double[] {0.8, 1.25}) {
+            double mass = factor * holdKg;
+            double[] r = pinch(mass, tauNm, arm, mu, 0.5);
+            double want = factor < 1 ? 0 : 0.5 * (G - 2 * mu * n / mass) * 0.25;
+            System.out.printf("pinch %.2f x: fell %.6e m, want %.6e; jaws closed by %.3e, %.3e rad%n", factor, r[0], want, r[1], r[2]);
+            if (want == 0) assertTrue(Math.abs(r[0]) < 1e-6, "fell " + r[0]);
+            else assertEquals(want, r[0], 0.02 * want);
+            assertTrue(r[1] >= -1e-12 && r[2] >= -1e-12, "a jaw opened: " + r[1] + ", " + r[2]);
+        }
+    }
+
+    /** {fall, jaw 1 angle, jaw 2 angle} after t seconds. */
+    static double[] pinch(double mass, double tauNm, double arm, double mu, double t) {
+        double w = 0.02, hy = 0.01;
+        double ix = mass / 12 * (4 * hy * hy + 4 * HZ * HZ);
+        MassProperties props = MassProperties.of(mass, new double[3], new double[] {ix, 0, 0, 0, ix, 0, 0, 0, ix * 1.5});
+        FreeBody b = new FreeBody(props, RigidTransform.IDENTITY);
+        BodyStepper s = new BodyStepper(b);
+        BodyContacts c = new BodyContacts();
+        double[] f = {0, 0, -G * mass}, tau = new double[3], x = new double[3];
+        double jaw1 = 0, jaw2 = 0;                  // closing angles
+        double linkInertia = 1e-4;
+        int steps = (int) Math.round(t / H);
+        for (int i = 0; i < steps; i++) {
+            c.clear();
+            s.clearFollowers();
+            b.position(x);
+            // jaw 1: face at x = −w/2 + jaw1·arm pressing +x, hinge along +y at (−w/2, ·, z0 − arm); jaw 2 mirrored
+            double z0 = x[2];
+            int f1 = s.addFollower(new double[] {0, 1, 0}, new double[] {-w / 2, 0, z0 - arm}, linkInertia, tauNm);
+            int f2 = s.addFollower(new double[] {0, -1, 0}, new double[] {w / 2, 0, z0 - arm}, linkInertia, tauNm);
+            for (int sy = -1; sy <= 1; sy += 2) {
+                double gap1 = (x[0] - w / 2) - (-w / 2 + jaw1 * arm);
+                int k = c.add(new double[] {x[0] - w / 2, x[1] + sy * hy, z0}, new double[] {1, 0, 0}, gap1, mu, null, 1);
+                c.dependsOn(k, f1);
+                double gap2 = (w / 2 - jaw2 * arm) - (x[0] + w / 2);
+                k = c.add(new double[] {x[0] + w / 2, x[1] + sy * hy, z0}, new double[] {-1, 0, 0}, gap2, mu, null, 2);
+                c.dependsOn(k, f2);
+            }
+            assertEquals(ContactSolver.Outcome.CONVERGED, s.step(H, f, tau, c), "step " + i);
+            jaw1 += H * s.followerVelocity(f1);
+            jaw2 += H * s.followerVelocity(f2);
+        }
+        b.position(x);
+        return new double[] {-x[2], jaw1, jaw2};
+    }
 }
