@@ -33,16 +33,22 @@ import picocli.CommandLine.Model.CommandSpec;
         "  {\"time_s\":t,\"contacts\":[{\"finger\":k,\"link\":j,\"point\":[..],",
         "   \"normal\":[..],\"force_N\":[..]}],\"force_closure\":bool,\"epsilon\":e,",
         "   \"volume\":v,\"hold_N\":{\"+x\":F,\"-x\":F,\"+y\":F,\"-y\":F,\"+z\":F,\"-z\":F},",
-        "   \"hold_min_N\":F,\"torque_residual_Nm\":[r1,r2,r3],\"center_m\":[x,y,z],",
-        "   \"radius_m\":R,\"friction\":mu,\"cone_edges\":m}",
+        "   \"hold_min_N\":F,\"hold_joint_limits_Nm\":[[l11,l12,l13],[l21,l22,l23],",
+        "   [l32,l33]],\"hold_cap_N\":C,\"torque_residual_Nm\":[r1,r2,r3],",
+        "   \"joint_torques_Nm\":[[t11,t12,t13],[t21,t22,t23],[t32,t33]],",
+        "   \"center_m\":[x,y,z],\"radius_m\":R,\"friction\":mu,\"cone_edges\":m,",
+        "   \"max_worm_reaction_Nm\":[w1,w2,w3]}",
         "World frame; normals point into the object; epsilon and volume of the grasp",
         "wrench space (torques about center_m, the object's centroid, divided by",
         "radius_m, its largest centroid-to-vertex distance; cones of friction and",
         "cone_edges: handsim quality given this output computes the same epsilon);",
         "hold_N: the largest force through the object's centroid the grasp holds",
-        "with every joint within its limit, at most the hand's rated 58.84 N;",
-        "torque_residual_Nm: per finger how far its contact forces miss its joint",
-        "torques (0: a static equilibrium).",
+        "with every joint within its limit (hold_joint_limits_Nm, null: none known),",
+        "at most hold_cap_N, the hand's rated 58.84 N; torque_residual_Nm: per finger",
+        "how far its contact forces miss its joint torques (0: a static equilibrium);",
+        "joint_torques_Nm: the torque each joint carries at T (the drive's, or the",
+        "reaction of the worm or motor holding it); max_worm_reaction_Nm: per finger",
+        "the largest torque its inner joint's worm held up to T (null: it never did).",
         "--chart BASE also evaluates the grasp every --every seconds along the run and",
         "writes BASE.png, BASE.svg (epsilon and the smallest hold against time) and",
         "BASE.csv."})
@@ -111,7 +117,11 @@ public final class GraspCommand implements Callable<Integer> {
             if (samples.isEmpty() || samples.get(samples.size() - 1).timeS() != g.timeS()) samples.add(g);
             writeChart(spec.commandLine().getErr(), chart, samples, model, scenario.name());
         }
-        spec.commandLine().getOut().println(JsonWriter.write(g.toJson()));
+        java.util.Map<String, Object> out = g.toJson();
+        java.util.List<Object> worm = new java.util.ArrayList<>();
+        for (int k = 1; k <= 3; k++) worm.add(Double.isNaN(model.maxWormReaction(k)) ? null : model.maxWormReaction(k));
+        out.put("max_worm_reaction_Nm", worm);
+        spec.commandLine().getOut().println(JsonWriter.write(out));
         return 0;
     }
 

@@ -31,12 +31,16 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "plan", mixinStandardHelpOptions = true,
     description = {"Searches grasps of an object and ranks them by epsilon.",
         "Each trial places the open hand on an approach",
-        "direction (a seeded Fibonacci sphere), a roll, a spread and a standoff, moves it",
-        "in until the palm or a finger meets the object, closes every finger with the",
-        "clutch model until it stalls, and evaluates force closure, epsilon, volume and",
-        "the minimum hold. Writes out/plan-<name>/ (or --out DIR): plan.csv, plan.json,",
-        "best/01.json .. best/10.json (the ten best grasps by epsilon, as scenarios) and",
-        "the charts epsilon-histogram and epsilon-directions (PNG and SVG).",
+        "direction (a seeded Fibonacci sphere, or along one of the object's principal",
+        "axes), a roll, a spread, moves it in until the palm or a finger meets the",
+        "object, backs it off by a standoff sampled for the object's size, closes every",
+        "finger with the clutch model until it stalls, and evaluates force closure,",
+        "epsilon, volume and the minimum hold. Writes out/plan-<name>/ (or --out DIR):",
+        "plan.csv, plan.json,",
+        "best/01.json .. best/10.json (the ten best grasps by epsilon among those with",
+        "force closure, as scenarios; none when no trial has it, and one line on",
+        "standard error says why and what to try) and the charts epsilon-histogram",
+        "and epsilon-directions (PNG and SVG).",
         "The same seed gives the same table on every engine and thread count (timing",
         "column aside). plan.csv's header:",
         "  trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,",
@@ -136,8 +140,14 @@ public final class PlanCommand implements Callable<Integer> {
             planSpec.name(), trials, output.failed(), output.forceClosure(), fmt(best == null ? 0 : best.epsilon()),
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
-        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{plan.csv, plan.json, best/01.json.." + String.format("%02d", output.bestFirst().size())
-            + ".json" + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
+        int nBest = output.bestFirst().size();
+        stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{plan.csv, plan.json" + (nBest == 0 ? "" : nBest == 1 ? ", best/01.json"
+            : ", best/01.json.." + String.format("%02d", nBest) + ".json")
+            + (charts ? ", epsilon-histogram.png/.svg, epsilon-directions.png/.svg" : "") + "}");
+        if (output.forceClosure() == 0 && output.failed() < trials) {
+            err.println("handsim plan: no grasp with force closure, so no best/ grasps: "
+                + org.handsim.plan.TrialOutcome.advice(output.outcomes(), trials - output.failed(), runner.objectExtent()));
+        }
         return output.failed() == trials ? 1 : 0;
     }
 

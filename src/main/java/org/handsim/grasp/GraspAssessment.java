@@ -20,6 +20,11 @@ import org.handsim.text.Decimal;
  *                 at most the hand's rated load ({@link HandDescription#handRatingN()}, 58.84 N),
  *                 which it equals when the joints' limits allow that much or more
  * @param holdMinN the smallest of {@code holdN}
+ * @param jointLimitsNm the limits the hold used, per finger (index 0..2) and joint (k1, k2, k3),
+ *                 N·m ({@link #jointLimit}); NaN where none is known (and for finger 3's k1,
+ *                 which does not exist)
+ * @param holdCapN the largest hold reported, N: the hand's rated load, 58.84 N (a ceiling of the
+ *                 report, not a limit of a joint)
  * @param contacts every contact of the three fingers, finger by finger
  * @param torqueResidualNm per finger (index 0..2) how far its contact forces are from carrying
  *                 its joint torques, N·m (the model's torque residual): 0 up to rounding
@@ -28,9 +33,13 @@ import org.handsim.text.Decimal;
  * @param radiusM  the length R the torques are divided by, m (the object's largest centroid-to-vertex distance)
  * @param friction the Coulomb μ of the cones
  * @param coneEdges the cones' edges m
+ * @param jointTorquesNm per finger (index 0..2) and joint (k1, k2, k3) the torque the joint carries,
+ *                 N·m (the model's carried torque: the drive's, or the reaction of the worm or
+ *                 motor that holds it; 0 for finger 3's missing k1)
  */
-public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN, double holdMinN, List<Contact> contacts,
-                              double[] torqueResidualNm, double[] centerM, double radiusM, double friction, int coneEdges) {
+public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN, double holdMinN, double[][] jointLimitsNm,
+                              double holdCapN, List<Contact> contacts, double[] torqueResidualNm, double[] centerM, double radiusM,
+                              double friction, int coneEdges, double[][] jointTorquesNm) {
     /** The disturbance directions of {@link #holdN()}, as the JSON keys of {@code hold_N}. */
     public static final List<String> DIRECTIONS = List.of("+x", "-x", "+y", "-y", "+z", "-z");
 
@@ -61,9 +70,10 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
      * @param centroidAndRadius the object's centroid and R {cx, cy, cz, R}, m, or null when the
      *                          scene has no object geometry
      * @param torqueResidualNm  per finger the contact forces' torque residual, N·m
+     * @param jointTorquesNm    per finger and joint (k1, k2, k3) the torque the joint carries, N·m
      */
     public record Input(double timeS, List<Contact> contacts, double[][] framesWorld, boolean[] clutchEngaged,
-                        HandDescription hand, double[] centroidAndRadius, double[] torqueResidualNm) {}
+                        HandDescription hand, double[] centroidAndRadius, double[] torqueResidualNm, double[][] jointTorquesNm) {}
 
     /**
      * Evaluates a grasp copied from a model, on any thread: its contacts (world frame) with the
@@ -85,8 +95,8 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         double[] cr0 = in.centroidAndRadius();
         if (n == 0) {
             double[] c0 = cr0 == null ? new double[3] : new double[] {cr0[0], cr0[1], cr0[2]};
-            return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, List.of(), in.torqueResidualNm().clone(),
-                c0, cr0 == null ? 0 : cr0[3], mu, edges);
+            return new GraspAssessment(in.timeS(), GraspQuality.none(0, 0), new double[6], 0, jointLimits(in), in.hand().handRatingN(),
+                List.of(), in.torqueResidualNm().clone(), c0, cr0 == null ? 0 : cr0[3], mu, edges, copy(in.jointTorquesNm()));
         }
         double[] points = new double[3 * n], normals = new double[3 * n];
         for (int i = 0; i < n; i++) {
@@ -100,7 +110,23 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         double[] hold = hold(in, contacts, mu, edges, c, cr[3]).holdSix();
         double min = hold[0];
         for (double h : hold) min = Math.min(min, h);
-        return new GraspAssessment(in.timeS(), q, hold, min, contacts, in.torqueResidualNm().clone(), c, cr[3], mu, edges);
+        return new GraspAssessment(in.timeS(), q, hold, min, jointLimits(in), in.hand().handRatingN(), contacts,
+            in.torqueResidualNm().clone(), c, cr[3], mu, edges, copy(in.jointTorquesNm()));
+    }
+
+    private static double[][] copy(double[][] a) {
+        double[][] c = new double[a.length][];
+        for (int i = 0; i < a.length; i++) c[i] = a[i].clone();
+        return c;
+    }
+
+    /** The limit of every joint in its state ({@link #jointLimit}), per finger and joint. */
+    private static double[][] jointLimits(Input in) {
+        double[][] l = new double[3][3];
+        for (int k = 1; k <= 3; k++) {
+            for (int j = 1; j <= 3; j++) l[k - 1][j - 1] = jointLimit(in.hand(), k, j, in.clutchEngaged()[k - 1]);
+        }
+        return l;
     }
 
     /**
@@ -135,17 +161,17 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     }
 
     /**
-     * What joint j (1 spread, 2 inner, 3 outer) of finger k resists in the hold LP, N·m (DESIGN.md
-     * decision 6; numbers and sources in the hand file's {@code hold}): the inner joint with its
-     * clutch engaged, τ_break (beyond it the clutch slips); every joint held by its worm drive —
-     * the inner joint after a breakaway, the outer joint, the spread — the torque of Barrett's
-     * finger rating at the stretched finger's tip ({@link HandDescription#ratedJointTorque}).
-     * NaN for finger 3's spread, which does not exist (its first link is fixed to the palm).
+     * What joint j (1 spread, 2 inner, 3 outer) of finger k resists in the hold LP, N·m — the
+     * limits the simulation uses (DESIGN.md decision 6; sources in the hand file's {@code hold}):
+     * the inner joint with its clutch engaged, τ_break (beyond it the clutch slips); NaN — no limit
+     * known — for a joint its worm holds (the inner joint after a breakaway, the outer joint:
+     * Barrett documents no strength of the worm drives, only the 2 kg finger rating, which is a
+     * rating and gives warnings, not a limit), for the spread (back-drivable, held by its motor at
+     * a torque setting of the controller, BH8 manual §9.3.2) and for finger 3's spread, which does
+     * not exist (its first link is fixed to the palm).
      */
     public static double jointLimit(HandDescription hand, int finger, int joint, boolean clutchEngaged) {
-        if (joint == 1) return finger == 3 ? Double.NaN : hand.ratedJointTorque(1);
-        if (joint == 2) return clutchEngaged ? hand.tauBreak() : hand.ratedJointTorque(2);
-        return hand.ratedJointTorque(3);
+        return joint == 2 && clutchEngaged ? hand.tauBreak() : Double.NaN;
     }
 
     /** {cx, cy, cz, R} from the contact points alone: their mean and largest distance from it (at least 1 mm). */
@@ -163,9 +189,11 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
     /**
      * The JSON object of {@code handsim grasp} (and {@code "grasp"} in summary.json): keys
      * {@code time_s, contacts[{finger, link, point, normal, force_N}], force_closure, epsilon,
-     * volume, hold_N{+x, −x, +y, −y, +z, −z}, hold_min_N, torque_residual_Nm[finger 1, 2, 3],
-     * center_m, radius_m, friction, cone_edges} — the last four the wrench scaling and cones of
-     * ε and volume, so that {@code handsim quality} given this object computes the same.
+     * volume, hold_N{+x, −x, +y, −y, +z, −z}, hold_min_N, hold_joint_limits_Nm[[k11, k12, k13],
+     * [k21, k22, k23], [k32, k33]] (null: no limit), hold_cap_N, torque_residual_Nm[finger 1, 2, 3],
+     * joint_torques_Nm[[k11, k12, k13], [k21, k22, k23], [k32, k33]], center_m, radius_m, friction,
+     * cone_edges} — the last four the wrench scaling and cones of ε and volume, so that
+     * {@code handsim quality} given this object computes the same.
      * Contact points and normals are written whole (not rounded), so they read back bit for bit.
      */
     public Map<String, Object> toJson() {
@@ -191,8 +219,19 @@ public record GraspAssessment(double timeS, GraspQuality quality, double[] holdN
         for (int d = 0; d < 6; d++) h.put(DIRECTIONS.get(d), holdN[d]);
         m.put("hold_N", h);
         m.put("hold_min_N", holdMinN);
+        List<Object> limits = new ArrayList<>();
+        for (int k = 0; k < 3; k++) {
+            List<Object> l = new ArrayList<>();
+            for (int j = k == 2 ? 1 : 0; j < 3; j++) l.add(Double.isNaN(jointLimitsNm[k][j]) ? null : jointLimitsNm[k][j]);
+            limits.add(l);
+        }
+        m.put("hold_joint_limits_Nm", limits);
+        m.put("hold_cap_N", holdCapN);
         // a torque error: rounding noise below 1e-12 N·m written as 0, like the trace's residual columns
         m.put("torque_residual_Nm", Decimal.clean(torqueResidualNm));
+        List<Object> carried = new ArrayList<>();
+        for (int k = 0; k < 3; k++) carried.add(Decimal.clean(java.util.Arrays.copyOfRange(jointTorquesNm[k], k == 2 ? 1 : 0, 3)));
+        m.put("joint_torques_Nm", carried);
         m.put("center_m", centerM);
         m.put("radius_m", radiusM);
         m.put("friction", friction);

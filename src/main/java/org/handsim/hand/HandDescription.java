@@ -36,7 +36,7 @@ public final class HandDescription {
     private final int fingerCountsMax, spreadCountsMax;
     private final double[] theta2Limits, theta3Limits, spreadLimits;
     private final double tauBreak, kClutch;
-    private final double fingerRatingN;
+    private final double fingerRatingN, fingerRatingKg;
 
     /** Reads and validates {@code root}; a {@link Json.JsonException} thrown here becomes a {@link HandDescriptionException} in {@link #parse}. */
     private HandDescription(JsonObject root) {
@@ -101,7 +101,8 @@ public final class HandDescription {
         tauBreak = clutch.positive("tau_break_Nm");
         kClutch = clutch.positive("k_clutch_Nm_per_rad");
         JsonObject hold = root.object("hold");
-        fingerRatingN = hold.positive("finger_rating_kg") * hold.positive("g_m_s2");
+        fingerRatingKg = hold.positive("finger_rating_kg");
+        fingerRatingN = fingerRatingKg * hold.positive("g_m_s2");
     }
 
     /** The BarrettHand BH8-262 from the bundled resource (loaded once, shared). */
@@ -212,18 +213,20 @@ public final class HandDescription {
     public double kClutch() { return kClutch; }
     /** Barrett's rated load of one finger at its tip, newtons (2 kg × g; the hand file's {@code hold}). */
     public double fingerRatingN() { return fingerRatingN; }
+    /** Barrett's rated load of one finger as a mass, kg (the hand file's {@code hold.finger_rating_kg}). */
+    public double fingerRatingKg() { return fingerRatingKg; }
     /** The hand's rated load, the three fingers' ratings, newtons: the largest hold HandSim reports. */
     public double handRatingN() { return 3 * fingerRatingN; }
     /**
-     * The torque the finger rating puts on joint j (1 spread, 2 inner, 3 outer) of the
-     * stretched finger — the rating times the joint's lever to the fingertip (A1 + A2 + A3,
-     * A2 + A3, A3), N·m: the limit of a joint held by its worm drive (DESIGN.md decision 6).
+     * The lever of joint j (1 spread, 2 inner, 3 outer) to the fingertip of the stretched
+     * finger, metres: A1 + A2 + A3, A2 + A3, A3 (Table II). A joint torque over it is the
+     * fingertip-equivalent force, which Barrett's rating ({@link #fingerRatingN}) bounds.
      */
-    public double ratedJointTorque(int joint) {
+    public double leverToTip(int joint) {
         switch (joint) {
-            case 1: return fingerRatingN * (a1 + a2 + a3);
-            case 2: return fingerRatingN * (a2 + a3);
-            case 3: return fingerRatingN * a3;
+            case 1: return a1 + a2 + a3;
+            case 2: return a2 + a3;
+            case 3: return a3;
             default: throw new IllegalArgumentException("joint must be 1, 2 or 3, got " + joint);
         }
     }

@@ -118,6 +118,41 @@ public final class HandClearance {
     }
 
     /**
+     * True if a link of one finger intersects a link of another, each finger placed by its frames
+     * {k0}..{k3} in the world ({@link HandModel#framesWorld}, 48 values: link j at offset 12·j).
+     * The simulator stops a finger at the object, never at another finger, so fingers that close
+     * past the object (an object smaller than the gap between their tips) pass through each other:
+     * such a pose is not one the hand can reach, and its contacts are no grasp.
+     */
+    public boolean fingersCross(double[][] framesWorld) {
+        for (int k = 0; k < 3; k++) {
+            for (int m = k + 1; m < 3; m++) {
+                for (int j = 1; j <= 3; j++) {
+                    for (int i = 1; i <= 3; i++) {
+                        if (linksTouch(framesWorld[k], j, framesWorld[m], i)) return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    private final double[] linkFromLink = new double[12];
+
+    /** Link j placed by {@code a[12j..]} against link i placed by {@code b[12i..]}: bounding spheres, then the trees. */
+    private boolean linksTouch(double[] a, int j, double[] b, int i) {
+        double[] sa = spheres[j], sb = spheres[i];
+        int oa = 12 * j, ob = 12 * i;
+        double dx = (a[oa] * sa[0] + a[oa + 1] * sa[1] + a[oa + 2] * sa[2] + a[oa + 3]) - (b[ob] * sb[0] + b[ob + 1] * sb[1] + b[ob + 2] * sb[2] + b[ob + 3]);
+        double dy = (a[oa + 4] * sa[0] + a[oa + 5] * sa[1] + a[oa + 6] * sa[2] + a[oa + 7]) - (b[ob + 4] * sb[0] + b[ob + 5] * sb[1] + b[ob + 6] * sb[2] + b[ob + 7]);
+        double dz = (a[oa + 8] * sa[0] + a[oa + 9] * sa[1] + a[oa + 10] * sa[2] + a[oa + 11]) - (b[ob + 8] * sb[0] + b[ob + 9] * sb[1] + b[ob + 10] * sb[2] + b[ob + 11]);
+        double r = sa[3] + sb[3];
+        if (dx * dx + dy * dy + dz * dz > r * r) return false;
+        RigidTransform.inverseTimes(a, oa, b, ob, partFromWorld, linkFromLink, 0);
+        return query.intersects(trees[j], trees[i], linkFromLink, 0, result);
+    }
+
+    /**
      * The largest distance from the palm origin to a vertex of the palm or of a link, metres,
      * for the given spread and finger counts (FREE): no point of the hand is farther, so a palm
      * origin more than {@code handReach + objectReach} from the centroid is clear of the object.

@@ -54,6 +54,12 @@ public final class HandModel {
      * about 1e-15 s across dt (chart 1-dt; with 1e-6 counts they agreed to 1e-10 s).
      */
     static final double LOCATE_COUNTS = 1e-9;
+    /**
+     * A contact blocks a link's motion when the motion has a component into the object of more
+     * than this fraction of its speed (an angle below 89.99994° from the push direction): a motion
+     * within rounding of the surface's tangent slides along it (DESIGN.md decision 1).
+     */
+    static final double PUSH_COS = 1e-6;
 
     // ------------------------------------------------------------------ parameters
     private final Scenario scenario;
@@ -78,7 +84,9 @@ public final class HandModel {
     private final double[][] tau = new double[3][3], tauDyn = new double[3][3];
     private final double[] motorPrev = new double[3];
     private final double[] motorVel = new double[3], motorAcc = new double[3];
-    private double spread, spreadVel, spreadAcc;
+    private double spread, spreadVel, spreadAcc;    // where the spread is (counts), and how it moves
+    private boolean spreadStopped;                  // a contact stopped the spread, which stays until its set-point turns back
+    private double spreadStopDir, spreadStopCounts, spreadStopTime;   // the direction it was stopped in; where and when it first stopped
     private final ContactSet[] contacts = {new ContactSet(), new ContactSet(), new ContactSet()};
     private final double[][] framesWorld = new double[3][48];
     private final double[] framedTheta1 = {Double.NaN, Double.NaN, Double.NaN};   // θk1 that framesWorld's {k0}, {k1} are for
@@ -93,14 +101,36 @@ public final class HandModel {
     private final double[] breakTime = new double[3], breakTorque = new double[3], breakForce = new double[3], breakQ = new double[3], contactQ = new double[3];
     private final double[] maxForce = new double[3];
     // how far the contact forces are from carrying the joint torques (ContactForces.residual), per finger:
-    // now, the largest of the run, and the stretch of steps above RESIDUAL_WARN_NM now going on
+    // now, the largest of the run, and the stretches of steps above RESIDUAL_WARN_NM
     private final double[] residual = new double[3], maxResidual = new double[3];
-    private final double[] episodeStart = new double[3], episodeEnd = new double[3], episodeMax = new double[3];
-    private final java.util.List<String> residualWarnings = new java.util.ArrayList<>();
-    private final int[] episodes = new int[3];
-    private final double[] moreEpisodesMax = new double[3];
-    /** Stretches without equilibrium warned about one by one, per finger; the rest are counted in one line. */
+    /** Stretches warned about one by one, per finger (and per link or joint for the rating); the rest are counted in one line. */
     static final int MAX_EPISODE_WARNINGS = 20;
+    private final Stretches residualStretches = new Stretches(3, RESIDUAL_WARN_NM, MAX_EPISODE_WARNINGS, new Stretches.Wording() {
+        @Override
+        public String stretch(int i, double start, double end, double max, double maxAt) {
+            return String.format(java.util.Locale.ROOT, "finger %d: the contact forces cannot carry its joint torques from t = %s s"
+                + " to %s s (largest residual %.3g N*m): no static equilibrium in that state", i + 1,
+                org.handsim.text.Decimal.format(start), org.handsim.text.Decimal.format(end), max);
+        }
+
+        @Override
+        public String more(int i, int more, double max) {
+            return String.format(java.util.Locale.ROOT, "finger %d: %d more stretches without a static equilibrium (largest residual %.3g N*m)",
+                i + 1, more, max);
+        }
+    });
+    // the torque each joint carries, τ_dyn + Jᵀf (N·m), per finger and joint; the largest reaction of a worm-held inner joint (NaN: none)
+    private final double[][] carried = new double[3][3];
+    private final double[] maxWormReaction = new double[3];
+    private final RatingWatch ratings = new RatingWatch(hand);
+    // loads locked into the contacts when an inner joint's worm locked (the breakaway), per finger and link:
+    // the forces (3 per contact of the link then), and the joints the link had then (its contacts are a function of them)
+    private final double[][][] lockedForces = new double[3][3][0];
+    private final int[][] lockedCount = new int[3][3];
+    private final double[][][] lockedJoints = new double[3][3][3];
+    private final boolean[] locked = new boolean[3];
+    private final int[] lockGeneration = new int[3];
+    private double[][] lockedScratch = {new double[0], new double[0], new double[0]};
     private final double[] clutchTorque = new double[3];
     private final long[] counters = new long[Counter.values().length];
     private final int[] contactsAtStart = new int[3];
@@ -109,9 +139,10 @@ public final class HandModel {
     private final ContactForces[] solvers = {new ContactForces(), new ContactForces(), new ContactForces()};   // per finger (warm starts)
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
     private final double[] eventJoints = new double[3];
+    private final ContactSet eventContacts = new ContactSet();
     private boolean lazy = true;
     private final double[] tauContact = new double[3], frameScratch = new double[48], linkScratch = new double[12];
-    private final double[] bounds = new double[2], boundScratch = new double[2];
+    private final ContactForces.Problem[] problems = {new ContactForces.Problem(), new ContactForces.Problem(), new ContactForces.Problem()};
     private final double mu;                         // Coulomb coefficient of the contacts (0: the frictionless solve)
     private final int coneEdges;
     private final double[][] cones = {new double[0], new double[0], new double[0]};      // per finger: cone edges, 3·m per contact
@@ -189,9 +220,8 @@ public final class HandModel {
     public void initialise() {
         step = 0;
         t = 0;
-        residualWarnings.clear();
-        java.util.Arrays.fill(episodes, 0);
-        java.util.Arrays.fill(moreEpisodesMax, 0);
+        residualStretches.clear();
+        ratings.clear();
         if (recorder != null) recorder.clear();
         java.util.Arrays.fill(counters, 0);
         sampleSpread(0);
@@ -220,7 +250,9 @@ public final class HandModel {
             maxForce[i] = 0;
             residual[i] = 0;
             maxResidual[i] = 0;
-            episodeStart[i] = Double.NaN;
+            java.util.Arrays.fill(carried[i], 0);
+            maxWormReaction[i] = Double.NaN;
+            unlock(i);
             clutchTorque[i] = 0;
             updateFinger(k, false);
             contactsAtStart[i] = contacts[i].size();
@@ -234,7 +266,7 @@ public final class HandModel {
         step++;
         t = clock.at(step);
         counters[Counter.STEPS.ordinal()]++;
-        sampleSpread(t);
+        moveSpread(t);
         for (int k = 1; k <= 3; k++) {
             int i = k - 1;
             scenario.motor(i).sample(t, sample);
@@ -242,6 +274,7 @@ public final class HandModel {
             motorVel[i] = sample[1];
             motorAcc[i] = sample[2];
             clutch[i].follow(sample[0]);
+            if (clutch[i].state() == ClutchState.FREE) unlock(i);
             updateFinger(k, true);
         }
         record();
@@ -262,11 +295,93 @@ public final class HandModel {
         if (progress != null) progress.accept(1.0);
     }
 
+    /** Where the spread starts: its set-point at t = 0, moving freely. */
     private void sampleSpread(double time) {
         scenario.motor(3).sample(time, sample);
         spread = sample[0];
         spreadVel = sample[1];
         spreadAcc = sample[2];
+        spreadStopped = false;
+        spreadStopCounts = Double.NaN;
+        spreadStopTime = Double.NaN;
+    }
+
+    /**
+     * The spread follows its set-point at time {@code time} unless a contact blocks it (DESIGN.md
+     * decision 1, "The spread"): fingers 1 and 2 turn about their k1 axes with it, and a contact
+     * that this motion pushes into the object ({@link #spreadBlockedAt}) stops it where the first
+     * such contact begins (bisection on the spread count, to {@link #LOCATE_COUNTS}), the fingers'
+     * flexion joints as they were at the last step. Barrett's spread has no clutch and is
+     * back-drivable: it stays there, held by its motor and pushing with nothing of its own, while
+     * the set-point goes on the same way, and follows again once the set-point turns back past it.
+     */
+    private void moveSpread(double time) {
+        scenario.motor(3).sample(time, sample);
+        double target = sample[0];
+        if (spreadStopped && (target - spread) * spreadStopDir < 0) spreadStopped = false;
+        if (spreadStopped) {
+            spreadVel = 0;
+            spreadAcc = 0;
+            return;
+        }
+        if (objectContacts != null && target != spread) {
+            double from = spread, dir = Math.signum(target - from);
+            if (spreadBlockedAt(target, dir)) {
+                double lo = from, hi = target;
+                for (int it = 0; it < 80 && Math.abs(hi - lo) > LOCATE_COUNTS; it++) {
+                    double mid = 0.5 * (lo + hi);
+                    if (spreadBlockedAt(mid, dir)) hi = mid; else lo = mid;
+                }
+                spread = hi;
+                spreadVel = 0;
+                spreadAcc = 0;
+                spreadStopped = true;
+                spreadStopDir = dir;
+                if (Double.isNaN(spreadStopCounts)) {
+                    spreadStopCounts = hi;
+                    spreadStopTime = t - dt + dt * (hi - from) / (target - from);
+                }
+                return;
+            }
+        }
+        spread = target;
+        spreadVel = sample[1];
+        spreadAcc = sample[2];
+    }
+
+    /**
+     * Whether, with the spread at {@code counts} and fingers 1 and 2's flexion joints as they are,
+     * a contact of theirs is pushed into the object by the spread turning in direction
+     * {@code dir} (+1 or −1 counts): its velocity dθk1 · z0 × (p − o0) has a component along the
+     * direction the finger pushes there ({@link #pushesInto}). Cheap test first ({@link
+     * LinkContacts#touches}), the full contact query only for a link that touches.
+     */
+    private boolean spreadBlockedAt(double counts, double dir) {
+        for (int k = 1; k <= 2; k++) {
+            int i = k - 1;
+            double rate = hand.finger(k).spreadRadPerCount() * dir;
+            if (rate == 0) continue;
+            eventJoints[0] = hand.finger(k).spreadRadPerCount() * counts;
+            eventJoints[1] = q[i][1];
+            eventJoints[2] = q[i][2];
+            framesInWorld(k, eventJoints, frameScratch);
+            double zx = frameScratch[2], zy = frameScratch[6], zz = frameScratch[10];
+            double ox = frameScratch[3], oy = frameScratch[7], oz = frameScratch[11];
+            for (int j = 1; j <= 3; j++) {
+                System.arraycopy(frameScratch, 12 * j, linkScratch, 0, 12);
+                counters[Counter.EVENT_QUERIES.ordinal()]++;
+                if (!objectContacts.touches(k, j, linkScratch)) continue;
+                eventContacts.clear();
+                objectContacts.collide(k, j, linkScratch, eventContacts);
+                for (int c = 0; c < eventContacts.size(); c++) {
+                    double rx = eventContacts.points[3 * c] - ox, ry = eventContacts.points[3 * c + 1] - oy, rz = eventContacts.points[3 * c + 2] - oz;
+                    if (pushesInto(rate * (zy * rz - zz * ry), rate * (zz * rx - zx * rz), rate * (zx * ry - zy * rx), eventContacts.pushDirs, 3 * c)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     /** One finger through the whole chain of the step. */
@@ -274,7 +389,7 @@ public final class HandModel {
         int i = k - 1;
         if (events && lazy && idle(k)) {
             counters[Counter.FINGERS_IDLE.ordinal()]++;
-            watchResidual(i);                  // an idle finger keeps its residual (and its stretch goes on)
+            watch(i);                          // an idle finger keeps its forces (and its stretches go on)
             return;
         }
         counters[Counter.FINGER_UPDATES.ordinal()]++;
@@ -293,37 +408,23 @@ public final class HandModel {
         maxForce[i] = Math.max(maxForce[i], contacts[i].forceSum());
         clutchTorque[i] = clutch[i].clutchTorque(tauDyn[i][1]);
         guard(k);
-        watchResidual(i);
+        watch(i);
     }
 
     /**
-     * Keeps the largest residual of the run, and turns each stretch of steps in which finger i's
-     * forces miss its torques by more than {@link #RESIDUAL_WARN_NM} into one warning (its
-     * start, end and largest residual), so a long run in such a state warns once, not per step.
+     * Keeps the largest residual and worm reaction of the run, and turns each stretch of steps in
+     * which finger i's forces miss its torques by more than {@link #RESIDUAL_WARN_NM}, or exceed
+     * Barrett's rating, into one warning ({@link Stretches}).
      */
-    private void watchResidual(int i) {
+    private void watch(int i) {
         double r = residual[i];
         maxResidual[i] = Math.max(maxResidual[i], r);
-        if (r > RESIDUAL_WARN_NM) {
-            if (Double.isNaN(episodeStart[i])) { episodeStart[i] = t; episodeMax[i] = 0; }
-            episodeEnd[i] = t;
-            episodeMax[i] = Math.max(episodeMax[i], r);
-        } else if (!Double.isNaN(episodeStart[i])) {
-            endEpisode(i);
+        residualStretches.watch(i, r, t);
+        if (clutch[i].innerHeld()) {
+            double w = Math.abs(carried[i][1]);
+            if (!(w <= maxWormReaction[i])) maxWormReaction[i] = w;
         }
-    }
-
-    private void endEpisode(int i) {
-        // a long run that keeps cycling through such a state says so a bounded number of times
-        if (++episodes[i] <= MAX_EPISODE_WARNINGS) residualWarnings.add(episodeWarning(i));
-        else moreEpisodesMax[i] = Math.max(moreEpisodesMax[i], episodeMax[i]);
-        episodeStart[i] = Double.NaN;
-    }
-
-    private String episodeWarning(int i) {
-        return String.format(java.util.Locale.ROOT, "finger %d: the contact forces cannot carry its joint torques from t = %s s"
-            + " to %s s (largest residual %.3g N*m): no static equilibrium in that state", i + 1,
-            org.handsim.text.Decimal.format(episodeStart[i]), org.handsim.text.Decimal.format(episodeEnd[i]), episodeMax[i]);
+        ratings.watch(i + 1, contacts[i], carried[i], t);
     }
 
     /**
@@ -404,9 +505,11 @@ public final class HandModel {
     }
 
     /**
-     * A closing FREE finger (or a BROKEN one's outer link) that touches the object: locate the
-     * first-touch motor count by bisection between the previous and the current count, then
-     * change state (inner link → BLOCKED, outer link → STALLED). Returns true if the state changed.
+     * A closing FREE finger (or a BROKEN one's outer link) with a contact that blocks its closing
+     * ({@link #blocksClosing}): locate the motor count where it began by bisection between the
+     * previous and the current count, then change state (inner link → BLOCKED, outer link →
+     * STALLED). Contacts that do not block (the back of a link the closing pulls away) change
+     * nothing. Returns true if the state changed.
      */
     private boolean locateFirstTouch(int k) {
         int i = k - 1;
@@ -414,11 +517,11 @@ public final class HandModel {
         ContactSet cs = contacts[i];
         double qNow = c.motor(), qBefore = motorPrev[i];
         if (objectContacts == null || qNow <= qBefore) return false;
-        boolean inner = c.state() == ClutchState.FREE && cs.touches(2);
-        boolean outer = (c.state() == ClutchState.FREE || c.state() == ClutchState.BROKEN) && cs.touches(3);
+        boolean free = c.state() == ClutchState.FREE;
+        boolean inner = free && blocksClosing(i, framesWorld[i], cs, 2);
+        boolean outer = (free || c.state() == ClutchState.BROKEN) && blocksClosing(i, framesWorld[i], cs, 3);
         if (!inner && !outer) return false;
-        locate(k, qBefore, qNow, inner);
-        return true;
+        return locate(k, qBefore, qNow, inner, outer);
     }
 
     /**
@@ -426,9 +529,9 @@ public final class HandModel {
      * motion since the last step moves some point of links 2–3 by more than half the object's
      * thinnest width (a bound: |Δθk2|·R2 + |Δθk3|·R3, R the reach of the links beyond each
      * joint), the step is re-checked at intermediate motor counts spaced to move at most that
-     * much; a contact found there is located and handled as usual, and counted
-     * ({@link Counter#TUNNELLING_CAUGHT}). So a large dt costs substeps, never a silent miss.
-     * Returns true if the state changed.
+     * much; a contact found there that blocks the closing is located and handled as usual, and
+     * counted ({@link Counter#TUNNELLING_CAUGHT}). So a large dt costs substeps, never a silent
+     * miss. Returns true if the state changed.
      */
     private boolean sweptTouch(int k) {
         int i = k - 1;
@@ -446,29 +549,42 @@ public final class HandModel {
         for (int s = 1; s < n; s++) {
             double qs = qBefore + (qNow - qBefore) * s / n;
             counters[Counter.SWEPT_SUBSTEPS.ordinal()]++;
-            if (touchesAt(k, qs, innerCounts) != 0) {
+            if (touchesAt(k, qs, innerCounts, true) != 0 && blockingAt(k, qs, innerCounts, true) != 0) {
                 counters[Counter.TUNNELLING_CAUGHT.ordinal()]++;
-                locate(k, qBefore + (qNow - qBefore) * (s - 1) / n, qs, innerCounts);
-                return true;
+                return locate(k, qBefore + (qNow - qBefore) * (s - 1) / n, qs, innerCounts, true);
             }
         }
         return false;
     }
 
     /**
-     * Bisection for the first-touch motor count in (lo, hi] (a contact exists at hi), then the
-     * state change: inner link → BLOCKED, outer link → STALLED.
+     * The first motor count in (lo, hi] at which a contact blocks the closing (one exists at hi
+     * on the links counted: the inner link when {@code innerCounts}, the outer when
+     * {@code outerCounts}), then the state change: inner link → BLOCKED, outer link → STALLED.
+     * First the first touch of any kind, by bisection on {@link #touchesAt} (which may stop at
+     * the first intersecting triangle pair); if the contacts there do not block the closing (the
+     * back of a link, a slide along the surface), the first that do lie beyond it: bisection on
+     * {@link #blockingAt}. Returns true (the state changed).
      */
-    private void locate(int k, double lo, double hi, boolean innerCounts) {
+    private boolean locate(int k, double lo, double hi, boolean innerCounts, boolean outerCounts) {
         int i = k - 1;
         FingerClutch c = clutch[i];
-        double qNow = c.motor(), qBefore = motorPrev[i];
+        double qNow = c.motor(), qBefore = motorPrev[i], top = hi;
         for (int it = 0; it < 60 && hi - lo > LOCATE_COUNTS; it++) {
             double mid = 0.5 * (lo + hi);
-            if (touchesAt(k, mid, innerCounts) != 0) hi = mid; else lo = mid;
+            if (touchesAt(k, mid, innerCounts, outerCounts) != 0) hi = mid; else lo = mid;
         }
-        int which = touchesAt(k, hi, innerCounts);
-        if (which == 0) which = innerCounts ? 2 : 3;
+        int which = blockingAt(k, hi, innerCounts, outerCounts);
+        if (which == 0) {
+            lo = hi;
+            hi = top;
+            for (int it = 0; it < 60 && hi - lo > LOCATE_COUNTS; it++) {
+                double mid = 0.5 * (lo + hi);
+                if (blockingAt(k, mid, innerCounts, outerCounts) != 0) hi = mid; else lo = mid;
+            }
+            which = blockingAt(k, hi, innerCounts, outerCounts);
+            if (which == 0) which = innerCounts ? 2 : 3;
+        }
         double tTouch = t - dt + dt * (hi - qBefore) / (qNow - qBefore);
         if (which == 2) {
             c.innerContact(hi);
@@ -478,41 +594,107 @@ public final class HandModel {
         } else {
             c.outerContact(hi);
         }
+        return true;
     }
 
     /**
-     * 2 if the inner link (when {@code innerCounts}), 3 if the outer link has a contact at motor
-     * count q (state unchanged), else 0. Asks {@link LinkContacts#touches}, which is exactly
-     * "the full contact query finds a contact", so the held pose the bisection ends on is one
-     * where the contact exists (the back end may stop at the first touching triangle pair).
+     * 2 if the inner link (when {@code innerCounts}), 3 if the outer link (when
+     * {@code outerCounts}) has a contact at motor count q (state unchanged), else 0. Asks
+     * {@link LinkContacts#touches}, which is exactly "the full contact query finds a contact", so
+     * the held pose the bisection ends on is one where the contact exists (the back end may stop at
+     * the first touching triangle pair).
      */
-    private int touchesAt(int k, double qm, boolean innerCounts) {
+    private int touchesAt(int k, double qm, boolean innerCounts, boolean outerCounts) {
+        eventFrames(k, qm);
+        if (innerCounts) {
+            counters[Counter.EVENT_QUERIES.ordinal()]++;
+            System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
+            if (objectContacts.touches(k, 2, linkScratch)) return 2;
+        }
+        if (outerCounts) {
+            counters[Counter.EVENT_QUERIES.ordinal()]++;
+            System.arraycopy(frameScratch, 36, linkScratch, 0, 12);
+            if (objectContacts.touches(k, 3, linkScratch)) return 3;
+        }
+        return 0;
+    }
+
+    /**
+     * As {@link #touchesAt}, but only for contacts that block the closing ({@link #blocksClosing}):
+     * the full contact query at motor count q, with the contacts' normals.
+     */
+    private int blockingAt(int k, double qm, boolean innerCounts, boolean outerCounts) {
+        int i = k - 1;
+        eventFrames(k, qm);
+        for (int j = innerCounts ? 2 : 3; j <= (outerCounts ? 3 : 2); j++) {
+            counters[Counter.EVENT_QUERIES.ordinal()]++;
+            eventContacts.clear();
+            System.arraycopy(frameScratch, 12 * j, linkScratch, 0, 12);
+            objectContacts.collide(k, j, linkScratch, eventContacts);
+            if (blocksClosing(i, frameScratch, eventContacts, j)) return j;
+        }
+        return 0;
+    }
+
+    /** Frames of finger k in the world at motor count q (state unchanged) into {@code frameScratch}. */
+    private void eventFrames(int k, double qm) {
         int i = k - 1;
         eventJoints[0] = q[i][0];
         eventJoints[1] = clutch[i].theta2For(qm);
         eventJoints[2] = clutch[i].theta3For(qm);
         framesInWorld(k, eventJoints, frameScratch);
-        counters[Counter.EVENT_QUERIES.ordinal()] += 2;
-        if (innerCounts) {
-            System.arraycopy(frameScratch, 24, linkScratch, 0, 12);
-            if (objectContacts.touches(k, 2, linkScratch)) return 2;
+    }
+
+    /**
+     * Whether a contact of {@code cs} on link {@code link} blocks finger i's closing in its
+     * current state (DESIGN.md decision 1, "Blocking means pushing back"): the link's velocity at
+     * the contact point, per motor count — Σ_m (dθ_m/dq) z_{m−1} × (p − o_{m−1}) over the flexion
+     * joints that move it ({@link FingerClutch#jointRates}) — has a component along the direction
+     * the finger pushes there, into the object ({@link #pushesInto}). A contact on the back of a
+     * moving link, which the closing pulls away from the object, does not block it.
+     *
+     * @param frames the finger's frames (48 values) the contacts were found at
+     */
+    private boolean blocksClosing(int i, double[] frames, ContactSet cs, int link) {
+        clutch[i].jointRates(rates);
+        for (int c = 0; c < cs.size(); c++) {
+            if (cs.links[c] != link) continue;
+            double ux = 0, uy = 0, uz = 0;
+            for (int m = 1; m < link; m++) {
+                double r = rates[m - 1];
+                if (r == 0) continue;
+                int o = 12 * m;
+                double zx = frames[o + 2], zy = frames[o + 6], zz = frames[o + 10];
+                double rx = cs.points[3 * c] - frames[o + 3], ry = cs.points[3 * c + 1] - frames[o + 7], rz = cs.points[3 * c + 2] - frames[o + 11];
+                ux += r * (zy * rz - zz * ry); uy += r * (zz * rx - zx * rz); uz += r * (zx * ry - zy * rx);
+            }
+            if (pushesInto(ux, uy, uz, cs.pushDirs, 3 * c)) return true;
         }
-        System.arraycopy(frameScratch, 36, linkScratch, 0, 12);
-        if (objectContacts.touches(k, 3, linkScratch)) return 3;
-        return 0;
+        return false;
+    }
+
+    /**
+     * Whether a motion (ux, uy, uz) of a contact point pushes into the object, whose push
+     * direction (unit, into the object) is at {@code d[o..]}: its component along it exceeds
+     * {@link #PUSH_COS} of its length — a motion closer to the surface's tangent slides along it.
+     */
+    static boolean pushesInto(double ux, double uy, double uz, double[] d, int o) {
+        double along = ux * d[o] + uy * d[o + 1] + uz * d[o + 2];
+        return along > PUSH_COS * Math.sqrt(ux * ux + uy * uy + uz * uz);
     }
 
     /**
      * Joint torques τ = τ_dyn (eq 8) + the torque the clutch transmits to the held links, and
-     * the contact forces that carry the transmitted part (DESIGN.md, "Which torques the contacts
-     * carry"): the torques the drive sets are carried exactly — k2 and k3 while the clutch drives
-     * the inner link (FREE, BLOCKED), k3 alone when the inner joint is held by its worm
-     * ({@link FingerClutch#innerHeld}: after a breakaway, or stalled before one) — and the held
-     * inner joint's reaction stays within what its holder resists ({@link #innerBounds}); eq (11)
-     * as non-negative least squares without friction, the least-norm forces in the friction cones
-     * with it ({@link ContactForces#solveHeld}). Where no forces do that, {@link #torqueResidual}
-     * says by how much. τ_dyn is computed when the scenario asks for torques, and always while the
-     * finger is BLOCKED: the torque through the clutch, which decides the breakaway, includes it.
+     * the contact forces the hand's compliance gives (DESIGN.md, "Which contact forces";
+     * {@link ContactForces}): the torques the drive sets are carried exactly — k2 and k3 while
+     * the clutch drives the inner link (FREE, BLOCKED), k3 alone when the inner joint is held by
+     * its worm ({@link FingerClutch#innerHeld}: after a breakaway, or stalled before one) — the
+     * held joints (the spread, a worm-held inner joint) react with whatever the contacts put on
+     * them, and a held link's contacts keep the loads locked into them at the breakaway
+     * ({@link #lockedFor}). Where no forces carry the driven torques, {@link #torqueResidual} says
+     * by how much. Every joint's carried torque is τ_dyn + Jᵀf ({@link #carriedTorque}). τ_dyn is
+     * computed when the scenario asks for torques, and always while the finger is BLOCKED: the
+     * torque through the clutch, which decides the breakaway, includes it.
      */
     private void torquesAndForces(int k) {
         int i = k - 1;
@@ -543,25 +725,30 @@ public final class HandModel {
         tau[i][0] = tauDyn[i][0];
         tau[i][1] = tauDyn[i][1] + transmitted[0];
         tau[i][2] = tauDyn[i][2] + transmitted[1];
+        solveForces(k, c.innerHeld());
+    }
+
+    /**
+     * The contact forces of finger k for the driven torques in {@code tauContact} (k2 held when
+     * {@code innerHeld}), into its contact set, with the residual and the carried torques. No
+     * contacts: a held link's torque goes into the drive train (or the outer stop), and a driven
+     * torque with no contact to carry it is the residual (a contact the collision missed).
+     */
+    private void solveForces(int k, boolean innerHeld) {
+        int i = k - 1;
         ContactSet cs = contacts[i];
         int n = cs.size();
         ContactForces solver = solvers[i];
         if (n > 0) {
-            boolean held = c.innerHeld();
-            if (held) innerBounds(k, bounds);
-            else { bounds[0] = Double.NaN; bounds[1] = Double.NaN; }
             // the same inputs as finger k's last solve (a held link, the same transmitted torque):
             // its solver still holds the answer
-            if (!(lazy && sameForceInputs(i, cs, held ? 1 : 0))) {
-                double[] coneEdges = mu == 0 ? null : conesOf(i, cs);
-                if (held) {
-                    solver.solveHeld(framesWorld[i], 1, tauContact, bounds[0], bounds[1], n, cs.points, cs.pushDirs, cs.links,
-                        coneEdges, this.coneEdges);
-                } else if (coneEdges == null) {
-                    solver.solve(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links);
-                } else {
-                    solver.solveWithFriction(framesWorld[i], 1, tauContact, n, cs.points, cs.pushDirs, cs.links, coneEdges, this.coneEdges);
-                }
+            if (!(lazy && sameForceInputs(i, cs, innerHeld ? 1 : 0))) {
+                ContactForces.Problem pr = problems[i].frames(framesWorld[i]).held(0).driven(2, tauContact[2])
+                    .contacts(n, cs.points, cs.pushDirs, cs.links)
+                    .friction(mu == 0 ? null : conesOf(i, cs), coneEdges)
+                    .locked(lockedFor(i, cs));
+                if (innerHeld) pr.held(1); else pr.driven(1, tauContact[1]);
+                solver.solve(pr);
             }
             for (int j = 0; j < n; j++) {
                 cs.forces[j] = solver.force(j);
@@ -569,53 +756,83 @@ public final class HandModel {
                 cs.undetermined[j] = solver.undetermined(j);
             }
             residual[i] = solver.residual();
+            for (int j = 0; j < 3; j++) carried[i][j] = tauDyn[i][j] + solver.torqueOn(j);
         } else {
-            // nothing touches: a held link's torque goes into the drive train (or the outer stop), and a
-            // driven torque with no contact to carry it would be a contact the collision missed
-            residual[i] = c.innerHeld() ? tauContact[2] : Math.max(Math.abs(tauContact[1]), Math.abs(tauContact[2]));
+            residual[i] = innerHeld ? Math.abs(tauContact[2]) : Math.max(Math.abs(tauContact[1]), Math.abs(tauContact[2]));
+            for (int j = 0; j < 3; j++) carried[i][j] = tauDyn[i][j];
         }
     }
 
     /**
-     * What finger k's held inner joint resists, [lo, hi] N·m on the torque the contacts put on
-     * it, into out[0..1] (DESIGN.md, "Which torques the contacts carry"). It is held by its
-     * self-locking worm, which no load on the link back-drives and whose load never reaches the
-     * clutch: hi is the worm's limit of the hold LP ({@link GraspAssessment#jointLimit} of a joint
-     * its worm holds: the finger rating's torque, decision 6). After a breakaway the joint keeps
-     * at least the load the clutch had put on it (the worm does not let the link back off, so the
-     * preload stays, and τk2 stays at τ_break as in the paper's Fig. 7): lo = that load. Stalled
-     * before any breakaway nothing preloads it: lo = −hi.
+     * The forces locked into finger i's contacts, aligned with {@code cs} (3 per contact), or
+     * null when none are: at its last breakaway ({@link #lock}) each link's contacts and forces
+     * were kept with the joints the link had; a link whose joints are the same now has the same
+     * contacts (they are a function of its pose, the object being fixed) and keeps those forces —
+     * the inner link, held by its worm — while a link that moved since (the outer link closing
+     * on eq 10) has new contacts, locked to nothing.
      */
-    private void innerBounds(int k, double[] out) {
-        FingerClutch c = clutch[k - 1];
-        double worm = GraspAssessment.jointLimit(hand, k, 2, false);
-        out[1] = worm;
-        if (c.innerHeldByWorm()) {
-            out[0] = -worm;
-        } else {
-            c.transmittedTorque(boundScratch);
-            out[0] = Math.min(boundScratch[0], worm);
+    private double[] lockedFor(int i, ContactSet cs) {
+        if (!locked[i]) return null;
+        int n = cs.size();
+        if (lockedScratch[i].length < 3 * n) lockedScratch[i] = new double[Math.max(3 * n, 2 * lockedScratch[i].length)];
+        double[] out = lockedScratch[i];
+        int o = 0;
+        boolean any = false;
+        for (int j = 0; j < 3; j++) {
+            int m = linkContacts[i][j].size();
+            boolean same = lockedCount[i][j] == m;
+            for (int a = 0; a < j + 1 && same; a++) same = lockedJoints[i][j][a] == q[i][a];
+            for (int c = 0; c < 3 * m; c++) {
+                double f = same ? lockedForces[i][j][c] : 0;
+                out[o++] = f;
+                any |= f != 0;
+            }
         }
+        return any ? out : null;
+    }
+
+    /**
+     * Locks finger i's current contact forces into its contacts: the inner joint's worm takes over
+     * from the clutch (the breakaway), so the inner link cannot move, and what its contacts carry
+     * stays unless the geometry unloads them (DESIGN.md, "Which contact forces").
+     */
+    private void lock(int i) {
+        ContactSet cs = contacts[i];
+        int o = 0;
+        for (int j = 0; j < 3; j++) {
+            int m = linkContacts[i][j].size();
+            if (lockedForces[i][j].length < 3 * m) lockedForces[i][j] = new double[3 * m];
+            System.arraycopy(cs.forceVectors, o, lockedForces[i][j], 0, 3 * m);
+            o += 3 * m;
+            lockedCount[i][j] = m;
+            System.arraycopy(q[i], 0, lockedJoints[i][j], 0, 3);
+        }
+        locked[i] = true;
+        lockGeneration[i]++;
+    }
+
+    /** No loads locked into finger i's contacts (at the start, and whenever the finger is FREE again: its links leave the object). */
+    private void unlock(int i) {
+        if (locked[i]) lockGeneration[i]++;
+        locked[i] = false;
     }
 
     /**
      * True when the contact-force solve of finger i would get what its last one got — whether
-     * k2 is held ({@code held}) and its bounds, the torques on k2, k3, the frames of joints
+     * k2 is held ({@code held}), the loads locked in (their generation, {@link #lock}; each link's
+     * share follows from its joints, in the frames), the torques on k2, k3, the frames of joints
      * 1–3 and every contact's link, point and push direction — and records them otherwise (for
      * the next call). No allocation once the key array has grown to the contact count.
      */
     private boolean sameForceInputs(int i, ContactSet cs, int held) {
-        int n = cs.size(), len = 6 + 36 + 7 * n;
+        int n = cs.size(), len = 5 + 36 + 7 * n;
         double[] key = forceKey[i];
         if (key.length < len) key = forceKey[i] = java.util.Arrays.copyOf(key, Math.max(len, 2 * key.length));
         boolean same = forceKeyLength[i] == len;
         int o = 0;
         same &= key[o] == held; key[o++] = held;
-        for (int j = 0; j < 2; j++, o++) {
-            double b = bounds[j];
-            same &= key[o] == b || (Double.isNaN(key[o]) && Double.isNaN(b));
-            key[o] = b;
-        }
+        double generation = locked[i] ? lockGeneration[i] : -1;
+        same &= key[o] == generation; key[o++] = generation;
         for (int j = 0; j < 3; j++, o++) { same &= key[o] == tauContact[j]; key[o] = tauContact[j]; }
         double[] f = framesWorld[i];
         for (int j = 0; j < 36; j++, o++) { same &= key[o] == f[j]; key[o] = f[j]; }
@@ -672,17 +889,21 @@ public final class HandModel {
             double frac = qm > lastQ[i] ? (qb - lastQ[i]) / (qm - lastQ[i]) : 1;
             breakTime[i] = lastT[i] + frac * (t - lastT[i]);
             breakTorque[i] = hand.tauBreak();
-            // the contact forces carry the spring's share, which grows linearly with the count:
-            // at the crossing they are (τ_break − τ_dyn2)/(now − τ_dyn2) of now's
-            double share = hand.tauBreak() - tauDyn2, shareNow = now - tauDyn2;
-            double scale = shareNow > 0 ? Math.max(0, share) / shareNow : 0;
+            // the contacts at the crossing carry the spring's share, τ_break − τ_dyn2 (the held
+            // pose is the step's): solved there, then locked in, since the worm now holds the link
+            double share = Math.max(0, hand.tauBreak() - tauDyn2);
+            tauContact[0] = 0;
+            tauContact[1] = share;
+            tauContact[2] = 0;                         // BLOCKED drives the outer joint at 0
+            solveForces(k, false);
             ContactSet cs = contacts[i];
             double forceInner = 0;
             for (int j = 0; j < cs.size(); j++) if (cs.links[j] == 2) forceInner += cs.forces[j];
-            breakForce[i] = forceInner * scale;
-            maxForce[i] = Math.max(maxForce[i], cs.forceSum() * scale);
+            breakForce[i] = forceInner;
+            maxForce[i] = Math.max(maxForce[i], cs.forceSum());
             breakQ[i] = qb;
-            c.breakAway(qb, Math.max(0, share));
+            lock(i);
+            c.breakAway(qb, share);
             return true;
         }
         lastT[i] = t;
@@ -719,6 +940,7 @@ public final class HandModel {
             recorder.setState(k, clutch[i].state());
             recorder.setContacts(k, contacts[i].size(), contacts[i].forceSum());
             recorder.setClutchAndResidual(k, clutchTorque[i], residual[i]);
+            for (int j = k == 3 ? 2 : 1; j <= 3; j++) recorder.setCarried(k, j, carried[i][j - 1]);
         }
         recorder.setSpread(spread);
     }
@@ -797,8 +1019,10 @@ public final class HandModel {
         double[][] frames = new double[3][];
         boolean[] engaged = new boolean[3];
         double[] residual = new double[3];
+        double[][] carriedNow = new double[3][3];
         for (int k = 1; k <= 3; k++) {
             residual[k - 1] = torqueResidual(k);
+            for (int j = 1; j <= 3; j++) carriedNow[k - 1][j - 1] = carriedTorque(k, j);
             ContactSet cs = contacts(k);
             for (int i = 0; i < cs.size(); i++) {
                 double[] n = cs.normal(i);
@@ -808,13 +1032,20 @@ public final class HandModel {
             frames[k - 1] = framesWorld(k);
             engaged[k - 1] = clutchEngaged(k);
         }
-        return new GraspAssessment.Input(time(), java.util.List.copyOf(list), frames, engaged, hand(), objectCentroidAndRadius(), residual);
+        return new GraspAssessment.Input(time(), java.util.List.copyOf(list), frames, engaged, hand(), objectCentroidAndRadius(), residual, carriedNow);
     }
     /** Joint torques of finger k (a new array, N·m). */
     public double[] torques(int k) { return tau[k - 1].clone(); }
     /** Motor counts of finger k now. */
     public double motorCounts(int k) { return clutch[k - 1].motor(); }
+    /** Where the spread is now, counts: its set-point, unless a contact stopped it ({@link #spreadStopped}). */
     public double spreadCounts() { return spread; }
+    /** Whether a contact that the spread's motion pushes into the object holds it now. */
+    public boolean spreadStopped() { return spreadStopped; }
+    /** The spread count where a contact first stopped the spread, NaN if none did. */
+    public double spreadStopCounts() { return spreadStopCounts; }
+    /** The time a contact first stopped the spread, s (interpolated inside the step), NaN if none did. */
+    public double spreadStopTime() { return spreadStopTime; }
     /** The contacts of finger k (live: copy before handing to another thread). */
     public ContactSet contacts(int k) { return contacts[k - 1]; }
     /** Frames {k0}..{k3} of finger k in the world (a new 48-array). */
@@ -835,25 +1066,34 @@ public final class HandModel {
     public double maxTorqueResidual(int k) { return maxResidual[k - 1]; }
     /** The torque through finger k's clutch now ({@link FingerClutch#clutchTorque}), N·m. */
     public double clutchTorque(int k) { return clutchTorque[k - 1]; }
+    /**
+     * The torque joint j (1 spread, 2 inner, 3 outer) of finger k carries now, N·m: τ_dyn (eq 8)
+     * plus the contacts' Jᵀf (eq 9) — the drive's torque where the drive sets it (the motor
+     * through the clutch, a stalled motor), the reaction of what holds it where it is held (the
+     * inner joint's worm after a breakaway or in a stall, the spread's motor). Finger 3 has no
+     * joint 1 (0).
+     */
+    public double carriedTorque(int k, int j) { return k == 3 && j == 1 ? 0 : carried[k - 1][j - 1]; }
+    /**
+     * The largest |reaction| of finger k's inner joint while its worm held it (after a breakaway,
+     * or stalled before one) since {@link #initialise()}, N·m; NaN if the worm never held it.
+     * Not capped: Barrett documents no strength of the worm drive, only the 2 kg finger rating,
+     * which {@link #warnings()} compares with it.
+     */
+    public double maxWormReaction(int k) { return maxWormReaction[k - 1]; }
 
     /**
      * Everything the user should know before trusting the run so far, one sentence each: the
      * {@link #startWarnings()}, then each stretch of steps whose contact forces missed the joint
-     * torques by more than {@link #RESIDUAL_WARN_NM}, in the order they ended (one warning per
-     * stretch, naming the finger, its start and end time and its largest residual; a stretch
-     * still going on ends now, last).
+     * torques by more than {@link #RESIDUAL_WARN_NM} (one warning per stretch, naming the finger,
+     * its start and end time and its largest residual), then each stretch in which a contact force
+     * or a joint's fingertip-equivalent force exceeded Barrett's rating ({@link RatingWatch}); each
+     * kind in the order the stretches ended, those still going on ending now, last.
      */
     public java.util.List<String> warnings() {
         java.util.List<String> w = startWarnings();
-        w.addAll(residualWarnings);
-        for (int k = 1; k <= 3; k++) {
-            int i = k - 1;
-            if (episodes[i] > MAX_EPISODE_WARNINGS) {
-                w.add(String.format(java.util.Locale.ROOT, "finger %d: %d more stretches without a static equilibrium (largest residual %.3g N*m)",
-                    k, episodes[i] - MAX_EPISODE_WARNINGS, moreEpisodesMax[i]));
-            }
-            if (!Double.isNaN(episodeStart[i])) w.add(episodeWarning(i));
-        }
+        w.addAll(residualStretches.warnings());
+        w.addAll(ratings.warnings());
         return w;
     }
     /** Motor count of finger k's (first) breakaway, NaN if none. */

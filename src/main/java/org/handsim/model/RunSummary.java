@@ -11,8 +11,10 @@ import java.util.Map;
  * "Outputs"). Keys: {@code scenario, sim_time_s, steps, dt_s, wall_time_s, steps_per_s,
  * realtime_factor, fingers[{finger, final_state, breakaway_time_s|null, breakaway_torque_Nm|null,
  * breakaway_force_N|null, contact_counts|null, breakaway_counts|null, final_joints_rad,
- * max_contact_force_N, torque_residual_Nm}], lazy, counters{...}}; {@code torque_residual_Nm} is the
- * largest {@link HandModel#torqueResidual} of the run.
+ * max_contact_force_N, torque_residual_Nm, max_worm_reaction_Nm|null}], lazy, counters{...}};
+ * {@code torque_residual_Nm} is the largest {@link HandModel#torqueResidual} of the run,
+ * {@code max_worm_reaction_Nm} the largest torque the inner joint's worm held
+ * ({@link HandModel#maxWormReaction}; null if it never held the joint).
  */
 public final class RunSummary {
     private RunSummary() {}
@@ -44,6 +46,7 @@ public final class RunSummary {
             f.put("final_joints_rad", Decimal.clean(m.joints(k)));   // README: |x| < 1e-12 written as 0
             f.put("max_contact_force_N", m.maxContactForce(k));
             f.put("torque_residual_Nm", m.maxTorqueResidual(k));
+            f.put("max_worm_reaction_Nm", orNull(m.maxWormReaction(k)));
             fingers.add(f);
         }
         s.put("fingers", fingers);

@@ -51,11 +51,7 @@ public final class Autograsp {
      * same matrix to the last bit).
      */
     public static double[] palmRotation(double[] a, double roll) {
-        double[] ref = Math.abs(a[2]) < 0.9 ? new double[] {0, 0, 1} : new double[] {1, 0, 0};
-        double dot = ref[0] * a[0] + ref[1] * a[1] + ref[2] * a[2];
-        double[] x0 = {ref[0] - dot * a[0], ref[1] - dot * a[1], ref[2] - dot * a[2]};
-        double l = StrictMath.sqrt(x0[0] * x0[0] + x0[1] * x0[1] + x0[2] * x0[2]);
-        for (int i = 0; i < 3; i++) x0[i] /= l;
+        double[] x0 = rollZeroX(a);
         double[] y0 = {a[1] * x0[2] - a[2] * x0[1], a[2] * x0[0] - a[0] * x0[2], a[0] * x0[1] - a[1] * x0[0]};
         double c = StrictMath.cos(roll), s = StrictMath.sin(roll);
         double[] x = new double[3], y = new double[3];
@@ -67,18 +63,35 @@ public final class Autograsp {
         return RigidTransform.of(m).rotationVector();
     }
 
+    /** The palm's x axis at roll 0: the unit projection of e_z on the plane normal to a (of e_x when |a_z| ≥ 0.9). */
+    static double[] rollZeroX(double[] a) {
+        double[] ref = Math.abs(a[2]) < 0.9 ? new double[] {0, 0, 1} : new double[] {1, 0, 0};
+        double dot = ref[0] * a[0] + ref[1] * a[1] + ref[2] * a[2];
+        double[] x0 = {ref[0] - dot * a[0], ref[1] - dot * a[1], ref[2] - dot * a[2]};
+        double l = StrictMath.sqrt(x0[0] * x0[0] + x0[1] * x0[1] + x0[2] * x0[2]);
+        for (int i = 0; i < 3; i++) x0[i] /= l;
+        return x0;
+    }
+
     /**
-     * Moves the open hand in along {@code approach} until it meets the object (the rule above).
+     * The first touch of an approach: the palm's rotation (as the axis-angle vector the scenario
+     * stores, and the matrix rebuilt from it), the approach as that matrix has it, the centroid,
+     * and the last distance d at which the hand was clear ({@code touched} false: it reached d = 0).
+     */
+    public record Touch(double[] rotationVector, RigidTransform rotation, double[] approach, double[] centroid,
+                        double clearDistance, boolean touched, int queries) {}
+
+    /**
+     * Moves the open hand in along {@code approach} until it meets the object (the rule above),
+     * without backing off: where the standoff is measured from.
      *
      * @param hc           the object's clearance test
      * @param approach     unit approach direction, world frame
      * @param roll         radians
      * @param spreadCounts q_M4
      * @param fingerCounts motor counts of the three fingers during the approach (the template's start counts)
-     * @param standoff     back-off from the first touch, metres ≥ 0
      */
-    public static Approach approach(HandClearance hc, double[] approach, double roll, double spreadCounts,
-                                    double[] fingerCounts, double standoff) {
+    public static Touch touch(HandClearance hc, double[] approach, double roll, double spreadCounts, double[] fingerCounts) {
         double[] r = palmRotation(approach, roll);
         RigidTransform rot = RigidTransform.fromPose(0, 0, 0, r[0], r[1], r[2]);
         double[] a = rot.axis(2);            // the approach as the rebuilt matrix has it
@@ -105,9 +118,29 @@ public final class Autograsp {
                 if (hc.touches(place(w, c, a, mid), spreadCounts, fingerCounts)) hit = mid; else clear = mid;
             }
         }
-        double d = touched ? clear + standoff : 0;
-        RigidTransform p = pose(c, a, r, d);
-        return new Approach(p, p.origin(), r, d, touched, queries);
+        return new Touch(r, rot, a, c, touched ? clear : 0, touched, queries);
+    }
+
+    /** The pose {@code standoff} metres back from the first touch (the centroid when the approach touched nothing). */
+    public static Approach backOff(Touch t, double standoff) {
+        double d = t.touched() ? t.clearDistance() + standoff : 0;
+        RigidTransform p = pose(t.centroid(), t.approach(), t.rotationVector(), d);
+        return new Approach(p, p.origin(), t.rotationVector(), d, t.touched(), t.queries());
+    }
+
+    /**
+     * Moves the open hand in along {@code approach} until it meets the object (the rule above).
+     *
+     * @param hc           the object's clearance test
+     * @param approach     unit approach direction, world frame
+     * @param roll         radians
+     * @param spreadCounts q_M4
+     * @param fingerCounts motor counts of the three fingers during the approach (the template's start counts)
+     * @param standoff     back-off from the first touch, metres ≥ 0
+     */
+    public static Approach approach(HandClearance hc, double[] approach, double roll, double spreadCounts,
+                                    double[] fingerCounts, double standoff) {
+        return backOff(touch(hc, approach, roll, spreadCounts, fingerCounts), standoff);
     }
 
     private static RigidTransform pose(double[] c, double[] a, double[] r, double d) {

@@ -22,8 +22,9 @@ import org.handsim.process.Phase;
  * complete), and only what the summary needs is kept — counts, the ten best trials, the ε
  * histogram and the direction map — so memory does not grow with N. {@link #finish} writes
  * {@code plan.json} and {@code best/01.json … best/10.json}, the ten best grasps by ε (ties:
- * the larger minimum hold, then the lower trial index) as scenarios {@code handsim run} and
- * {@code handsim gui} open as they are. Every file is written atomically.
+ * the larger minimum hold, then the lower trial index) among those with force closure, as
+ * scenarios {@code handsim run} and {@code handsim gui} open as they are — none when no trial
+ * reached force closure. Every file is written atomically.
  */
 public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     /** How many best grasps are written. */
@@ -43,6 +44,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     private final DirectionMap directions;
     private final Consumer<Integer> progress;
     private long rows, failed, forceClosure;
+    private final long[] outcomes = new long[TrialOutcome.values().length];
     private int expected;
 
     /**
@@ -90,10 +92,13 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
             failed++;
         } else {
             if (r.forceClosure()) forceClosure++;
+            if (r.outcome() != null) outcomes[r.outcome().ordinal()]++;
             histogram.add(r.forceClosure(), r.epsilon());
             directions.add(r.approach(), r.forceClosure() ? r.epsilon() : 0);
-            best.add(r);
-            if (best.size() > BEST) best.poll();
+            if (r.forceClosure()) {   // a grasp without force closure is no "best" grasp
+                best.add(r);
+                if (best.size() > BEST) best.poll();
+            }
         }
         if (progress != null) progress.accept((int) rows);
     }
@@ -123,8 +128,8 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
             TrialResult r = top.get(i);
             String nn = String.format("%02d", i + 1);
             Path file = bestDir.resolve(nn + ".json");
-            TrialParameters p = new TrialParameters(r.index(), r.approach(), r.roll(), r.spreadCounts(), r.standoff());
-            AtomicFile.writeString(file, scenarios.scenarioJson(p, r.palmPosition(), r.palmRotation(),
+            TrialParameters p = new TrialParameters(r.index(), r.approach(), r.roll(), r.spreadCounts(), false, 0);
+            AtomicFile.writeString(file, scenarios.scenarioJson(p, r.standoff(), r.palmPosition(), r.palmRotation(),
                 "plan-" + spec.name() + "-best" + nn, true, objectFile));
         }
         Phase.reach("best");
@@ -147,7 +152,10 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         return Path.of((String) o.get("file")).toAbsolutePath().normalize();
     }
 
-    /** The best trials so far, best first (at most {@link #BEST}). */
+    /** Trials per {@link TrialOutcome} (index: ordinal), of the trials that did not fail. */
+    public long[] outcomes() { return outcomes.clone(); }
+
+    /** The best trials with force closure so far, best first (at most {@link #BEST}). */
     public List<TrialResult> bestFirst() {
         List<TrialResult> l = new ArrayList<>(best);
         l.sort(BETTER_FIRST);

@@ -18,7 +18,7 @@ import org.handsim.text.JsonWriter;
 /**
  * Everything a trial needs, as plain serialisable values (a Spark executor rebuilds its
  * {@link TrialRunner} from it): the trial template — a scenario as JSON text whose object file
- * is an absolute path —, the number of trials, the seed, the friction and the sampling ranges.
+ * is an absolute path —, the number of trials, the seed and the friction.
  * The template's hand pose and spread motor are replaced by each trial's; its object, finger
  * motors (the closing profile), time step, gravity and outputs are kept.
  *
@@ -30,11 +30,10 @@ import org.handsim.text.JsonWriter;
  * @param seed         the seed of the whole plan
  * @param mu           Coulomb friction coefficient of the evaluation
  * @param edges        friction-cone edges of the evaluation
- * @param standoffMax  largest standoff sampled, metres (uniform in [0, standoffMax])
  */
 public record PlanSpec(String name, String target, String templateJson, String templateFile, int trials, long seed,
-                       double mu, int edges, double standoffMax) implements Serializable {
-    private static final long serialVersionUID = 1L;
+                       double mu, int edges) implements Serializable {
+    private static final long serialVersionUID = 2L;
 
     /** The closing profile of an object-file target: every finger motor 0 → 17 500 counts (as scenarios/mug-grasp.json). */
     public static final double CLOSE_TO_COUNTS = 17_500, CLOSE_V_MAX = 5_000, CLOSE_A_MAX = 25_000;
@@ -46,14 +45,11 @@ public record PlanSpec(String name, String target, String templateJson, String t
      * 2 147 483 647 would take a year.
      */
     public static final int MAX_TRIALS = 1_000_000;
-    /** Default largest standoff, metres. */
-    public static final double DEFAULT_STANDOFF_MAX = 0.01;
 
     public PlanSpec {
         if (trials < 1 || trials > MAX_TRIALS) throw new IllegalArgumentException("--trials must be in [1, " + MAX_TRIALS + "], got " + trials);
         if (!(mu >= 0) || !Double.isFinite(mu)) throw new IllegalArgumentException("--friction must be a finite number >= 0, got " + mu);
         if (edges < 1 || edges > 1024) throw new IllegalArgumentException("friction cone edges must be in [1, 1024], got " + edges);
-        if (!(standoffMax >= 0) || !Double.isFinite(standoffMax)) throw new IllegalArgumentException("standoff must be >= 0, got " + standoffMax);
     }
 
     /**
@@ -110,7 +106,7 @@ public record PlanSpec(String name, String target, String templateJson, String t
         obj.put("friction", friction);
         String text = JsonWriter.write(t);
         Scenario.parse(abs, text);   // the template must be a valid scenario as it will be run
-        return new PlanSpec(name, target.toString(), text, abs.toString(), trials, seed, friction, edges, DEFAULT_STANDOFF_MAX);
+        return new PlanSpec(name, target.toString(), text, abs.toString(), trials, seed, friction, edges);
     }
 
     /** The template of a bare object file: at the origin, scale 1, the default closing profile and time step. */

@@ -11,22 +11,24 @@ import org.handsim.text.SafeText;
  *
  * @param palmPosition the palm position the fingers closed from, metres (null if the trial failed before)
  * @param palmRotation its axis-angle rotation, radians (null likewise)
+ * @param outcome      how the grasp ended, for the plan's diagnosis when no trial reaches force
+ *                     closure ({@link TrialOutcome}; null for a failed trial); not in plan.csv
  */
 public record TrialResult(int index, boolean ok, double[] approach, double roll, int spreadCounts, double standoff,
                           int contacts, boolean forceClosure, double epsilon, double volume, double holdMinN,
                           String[] finalStates, double simTimeS, double wallS, String error,
-                          double[] palmPosition, double[] palmRotation) implements Serializable {
-    private static final long serialVersionUID = 1L;
+                          double[] palmPosition, double[] palmRotation, TrialOutcome outcome) implements Serializable {
+    private static final long serialVersionUID = 2L;
 
     /** The header of plan.csv (contract). */
     public static final String HEADER = "trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,standoff_m,"
         + "contacts,force_closure,epsilon,volume,hold_min_N,final_state1,final_state2,final_state3,sim_time_s,wall_s,error";
 
-    /** A failed trial: its parameters and the error (one line). */
-    public static TrialResult failed(TrialParameters p, double wallS, String error) {
+    /** A failed trial: its parameters, its standoff (NaN, an empty cell, if it failed before that) and the error (one line). */
+    public static TrialResult failed(TrialParameters p, double standoff, double wallS, String error) {
         String e = error == null ? "" : error.replace('\n', ' ').replace('\r', ' ');
-        return new TrialResult(p.index(), false, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), 0, false, 0, 0, 0,
-            null, 0, wallS, e, null, null);
+        return new TrialResult(p.index(), false, p.approach(), p.roll(), p.spreadCounts(), standoff, 0, false, 0, 0, 0,
+            null, 0, wallS, e, null, null, null);
     }
 
     /** The CSV row (no line end). Numbers in text.Decimal's form (shortest round trip, integers as integers). */

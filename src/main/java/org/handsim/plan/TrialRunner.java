@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.IntConsumer;
 import org.handsim.dynamics.HandDynamics;
+import org.handsim.hand.HandDescription;
 import org.handsim.clutch.ClutchState;
 import org.handsim.grasp.GraspAssessment;
 import org.handsim.model.HandClearance;
@@ -43,6 +44,8 @@ public final class TrialRunner {
      */
     private final TorqueModel dynamics = HandDynamics.barrettHand()::inverseDynamics;
     private final HandClearance clearance;
+    private final StandoffRule standoffs;
+    private final ObjectFrame shape;
     private final double[] startCounts = new double[3];
     private final IntConsumer fault;
     /** The last trial's collision: the next trial's takes over its query scratch (no allocation). */
@@ -61,32 +64,42 @@ public final class TrialRunner {
      */
     public TrialRunner(PlanSpec spec, IntConsumer fault) {
         this.spec = spec;
-        this.sampler = new TrialSampler(spec);
         this.template = spec.template();
         Scenario t = Scenario.parse(Path.of(spec.templateFile()), spec.templateJson());
         this.base = t;
         this.clearance = new HandClearance(t.object());
+        SceneGeometry scene = new SceneGeometry(t.object(), SceneGeometry.DEFAULT_K);
+        this.shape = new ObjectFrame(scene.objectMesh(), scene.worldFromObject(), clearance.objectCentroid());
+        this.sampler = new TrialSampler(spec.trials(), spec.seed(), shape);
+        this.standoffs = new StandoffRule(shape, new FingertipPath(HandDescription.barrettHand()));
         for (int k = 0; k < 3; k++) startCounts[k] = t.startCounts(k);
         this.fault = fault;
     }
 
     public PlanSpec spec() { return spec; }
 
+    /** The object's largest extent along its principal axes, metres (for the plan's advice). */
+    public double objectExtent() { return shape.extent(0); }
+
     /** Trial {@code index}: never throws for a failing trial (a failed row instead). */
     public TrialResult run(int index) {
         TrialParameters p = sampler.sample(index);
         long t0 = System.nanoTime();
+        double[] standoff = {Double.NaN};
         try {
-            if (fault != null) fault.accept(index);
-            return attempt(p, t0);
+            return attempt(p, t0, standoff);
         } catch (RuntimeException e) {
             String msg = e.getMessage() != null ? e.getMessage() : e.toString();
-            return TrialResult.failed(p, (System.nanoTime() - t0) / 1e9, msg);
+            return TrialResult.failed(p, standoff[0], (System.nanoTime() - t0) / 1e9, msg);
         }
     }
 
-    private TrialResult attempt(TrialParameters p, long t0) {
-        Autograsp.Approach ap = Autograsp.approach(clearance, p.approach(), p.roll(), p.spreadCounts(), startCounts, p.standoff());
+    private TrialResult attempt(TrialParameters p, long t0, double[] standoffOut) {
+        Autograsp.Touch touch = Autograsp.touch(clearance, p.approach(), p.roll(), p.spreadCounts(), startCounts);
+        double standoff = standoffs.standoff(p, touch);
+        standoffOut[0] = standoff;
+        if (fault != null) fault.accept(p.index());
+        Autograsp.Approach ap = Autograsp.backOff(touch, standoff);
         Scenario s = trialScenario(p, ap.position(), ap.rotation());
         SceneGeometry sg = s.object() == null ? null : new SceneGeometry(s.object(), SceneGeometry.DEFAULT_K, geometry);
         if (sg != null) geometry = sg;
@@ -100,9 +113,15 @@ public final class TrialRunner {
             states[k - 1] = m.state(k).name();
         }
         double wall = (System.nanoTime() - t0) / 1e9;
-        return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), contacts,
+        double[][] frames = {m.framesWorld(1), m.framesWorld(2), m.framesWorld(3)};
+        if (clearance.fingersCross(frames)) {
+            // fingers that closed through each other: no pose of the hand, so no grasp (force closure false, ε, volume, hold 0)
+            return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), standoff, contacts,
+                false, 0, 0, 0, states, m.time(), wall, "", ap.position(), ap.rotation(), TrialOutcome.FINGERS_CROSS);
+        }
+        return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), standoff, contacts,
             g.quality().forceClosure(), g.quality().epsilon(), g.quality().volume(), g.holdMinN(), states, m.time(), wall, "",
-            ap.position(), ap.rotation());
+            ap.position(), ap.rotation(), TrialOutcome.of(g, touch.approach()));
     }
 
     /**
@@ -128,14 +147,14 @@ public final class TrialRunner {
      * {@code objectFile} (may be null) replaces the object's file (relative to the new file).
      */
     @SuppressWarnings("unchecked")
-    public String scenarioJson(TrialParameters p, double[] position, double[] rotation, String name, boolean best, String objectFile) {
+    public String scenarioJson(TrialParameters p, double standoff, double[] position, double[] rotation, String name, boolean best, String objectFile) {
         Map<String, Object> t = new LinkedHashMap<>(template);
         t.put("name", name);
         if (best) {
             t.put("description", String.format(java.util.Locale.ROOT, "Grasp found by handsim plan %s (trial %d of %d, seed %d):"
                 + " the hand approached along (%s, %s, %s) with roll %s rad, spread %d counts, standoff %s m, then closed every finger.",
                 spec.target(), p.index(), spec.trials(), spec.seed(), JsonWriter.write(p.approach()[0]), JsonWriter.write(p.approach()[1]),
-                JsonWriter.write(p.approach()[2]), JsonWriter.write(p.roll()), p.spreadCounts(), JsonWriter.write(p.standoff())));
+                JsonWriter.write(p.approach()[2]), JsonWriter.write(p.roll()), p.spreadCounts(), JsonWriter.write(standoff)));
         }
         Map<String, Object> hand = new LinkedHashMap<>();
         hand.put("position_m", position);

@@ -19,7 +19,10 @@ import org.handsim.text.Decimal;
  * contacts{k}, force{k}_N}, then {@code qM4_counts}, then {@code clutch1_Nm, clutch2_Nm,
  * clutch3_Nm} (the torque through each finger's clutch, {@link HandModel#clutchTorque}) and
  * {@code residual1_Nm, residual2_Nm, residual3_Nm} (how far each finger's contact forces are
- * from carrying its joint torques, {@link HandModel#torqueResidual}). Numbers are written by
+ * from carrying its joint torques, {@link HandModel#torqueResidual}), then {@code carried11_Nm,
+ * carried12_Nm, carried13_Nm, carried21_Nm, carried22_Nm, carried23_Nm, carried32_Nm,
+ * carried33_Nm} (the torque each joint carries, {@link HandModel#carriedTorque}; finger 3 has no
+ * joint k1). Numbers are written by
  * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
  * ({@link Decimal#clean}).
  *
@@ -65,6 +68,9 @@ public final class Recorder implements AutoCloseable {
     private double[][] force = new double[3][1024];
     private double[] spread = new double[1024];
     private double[][] clutch = new double[3][1024], residual = new double[3][1024];
+    private double[][] carried = new double[CARRIED][1024];
+    /** The carried-torque columns: joints 11, 12, 13, 21, 22, 23, 32, 33. */
+    static final int CARRIED = 8;
 
     /** A recorder that keeps every row in memory. */
     public Recorder() {
@@ -103,6 +109,7 @@ public final class Recorder implements AutoCloseable {
         h.add("qM4_counts");
         for (int k = 1; k <= 3; k++) h.add("clutch" + k + "_Nm");
         for (int k = 1; k <= 3; k++) h.add("residual" + k + "_Nm");
+        for (int c = 0; c < CARRIED; c++) h.add("carried" + carriedFinger(c) + carriedJoint(c) + "_Nm");
         return String.join(",", h);
     }
 
@@ -145,13 +152,26 @@ public final class Recorder implements AutoCloseable {
         to[i++] = spread[r];
         for (int k = 0; k < 3; k++) to[i++] = clutch[k][r];
         for (int k = 0; k < 3; k++) to[i++] = residual[k][r];
+        for (int c = 0; c < CARRIED; c++) to[i++] = carried[c][r];
+    }
+
+    /** Finger of carried-torque column c (0..7). */
+    private static int carriedFinger(int c) { return c < 6 ? 1 + c / 3 : 3; }
+
+    /** Joint (1..3) of carried-torque column c (0..7). */
+    private static int carriedJoint(int c) { return c < 6 ? 1 + c % 3 : c - 4; }
+
+    /** Column of finger k's joint j (finger 3: j = 2, 3). */
+    private static int carriedColumn(int k, int j) {
+        if (k == 3 && j == 1) throw new IllegalArgumentException("finger 3 has no joint 31");
+        return k < 3 ? 3 * (k - 1) + j - 1 : 4 + j;
     }
 
     /**
      * Width of a row of numbers: t, per finger 10 numbers, state, contacts, force, then the
-     * spread, then per finger the clutch torque, then per finger the residual.
+     * spread, then per finger the clutch torque, then per finger the residual, then the carried torques.
      */
-    static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6;
+    static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6 + CARRIED;
 
     /** One trace.csv line from a row of {@link #WIDTH} numbers (the one place the format is written). */
     static void format(double[] row, StringBuilder sb) {
@@ -165,7 +185,7 @@ public final class Recorder implements AutoCloseable {
             Decimal.append(sb.append(','), Decimal.clean(row[i++]));
         }
         Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-        for (int c = 0; c < 6; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        for (int c = 0; c < 6 + CARRIED; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
         sb.append('\n');
     }
 
@@ -341,6 +361,7 @@ public final class Recorder implements AutoCloseable {
             clutch[k] = Arrays.copyOf(clutch[k], n);
             residual[k] = Arrays.copyOf(residual[k], n);
         }
+        for (int c = 0; c < CARRIED; c++) carried[c] = Arrays.copyOf(carried[c], n);
     }
 
     /** Sets numeric column c (Q .. TAU3) of finger k (1..3) in the current row. */
@@ -361,6 +382,9 @@ public final class Recorder implements AutoCloseable {
         residual[k - 1][rows - 1] = residualNm;
     }
 
+    /** The torque finger k's joint j carries (N·m) in the current row (finger 3: j = 2, 3). */
+    public void setCarried(int k, int j, double nm) { carried[carriedColumn(k, j)][rows - 1] = nm; }
+
     /** Rows in memory: all rows, or for a bounded recorder every {@link #stride()}-th and the last. */
     public int rows() { return rows; }
     /** Rows recorded in all (the rows of trace.csv). */
@@ -377,6 +401,8 @@ public final class Recorder implements AutoCloseable {
     public double clutch(int k, int row) { return clutch[k - 1][row]; }
     /** Finger k's contact-force residual in a row in memory, N·m. */
     public double residual(int k, int row) { return residual[k - 1][row]; }
+    /** The torque finger k's joint j carries in a row in memory, N·m (finger 3: j = 2, 3). */
+    public double carried(int k, int j, int row) { return carried[carriedColumn(k, j)][row]; }
     /** Whether finger k's motor count ever differed from its first row's (over every row recorded). */
     public boolean moved(int k) {
         if (rows == 0) return false;

@@ -17,8 +17,10 @@ class GraspChartTest {
     @Test
     void everyAxisHasItsUnit() {
         List<GraspAssessment> samples = List.of(
-            new GraspAssessment(0.0, GraspQuality.none(0, 0), new double[6], 0, List.of(), new double[3], new double[3], 0.1, 0.5, 8),
-            new GraspAssessment(0.1, GraspQuality.none(0, 0), new double[6], 0, List.of(), new double[3], new double[3], 0.1, 0.5, 8));
+            new GraspAssessment(0.0, GraspQuality.none(0, 0), new double[6], 0, new double[3][3], 58.84, List.of(), new double[3], new double[3], 0.1, 0.5, 8,
+                new double[3][3]),
+            new GraspAssessment(0.1, GraspQuality.none(0, 0), new double[6], 0, new double[3][3], 58.84, List.of(), new double[3], new double[3], 0.1, 0.5, 8,
+                new double[3][3]));
         JFreeChart c = GraspChart.epsilonAndHold(samples, new double[] {Double.NaN, Double.NaN, Double.NaN}, 58.84, "test");
         CombinedDomainXYPlot p = (CombinedDomainXYPlot) c.getPlot();
         assertEquals("time t (s)", p.getDomainAxis().getLabel());

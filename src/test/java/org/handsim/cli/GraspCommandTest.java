@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
 class GraspCommandTest {
     static final String MUG = Home.scenarios().resolve("mug-grasp.json").toString();
     static final List<String> KEYS = List.of("time_s", "contacts", "force_closure", "epsilon", "volume", "hold_N", "hold_min_N",
-        "torque_residual_Nm", "center_m", "radius_m", "friction", "cone_edges");
+        "hold_joint_limits_Nm", "hold_cap_N", "torque_residual_Nm", "joint_torques_Nm", "center_m", "radius_m", "friction", "cone_edges");
 
     @SuppressWarnings("unchecked")
     static Map<String, Object> json(String text) {
@@ -31,7 +31,18 @@ class GraspCommandTest {
 
     @SuppressWarnings("unchecked")
     static void contract(Map<String, Object> g) {
-        assertEquals(KEYS, new ArrayList<>(g.keySet()), "the README's keys, in order");
+        List<String> keys = new ArrayList<>(g.keySet());
+        // the command adds the run's largest worm reactions (summary.json's grasp has them per finger)
+        if (keys.get(keys.size() - 1).equals("max_worm_reaction_Nm")) {
+            keys.remove(keys.size() - 1);
+            assertEquals(3, ((List<Object>) g.get("max_worm_reaction_Nm")).size(), "one per finger");
+        }
+        assertEquals(KEYS, keys, "the README's keys, in order");
+        List<Object> carried = (List<Object>) g.get("joint_torques_Nm");
+        assertEquals(List.of(3, 3, 2), List.of(((List<Object>) carried.get(0)).size(), ((List<Object>) carried.get(1)).size(),
+            ((List<Object>) carried.get(2)).size()), "joints k1..k3 of fingers 1, 2; k2, k3 of finger 3");
+        List<Object> limits = (List<Object>) g.get("hold_joint_limits_Nm");
+        assertEquals(3, limits.size());
         for (Object o : (List<Object>) g.get("contacts")) {
             assertEquals(List.of("finger", "link", "point", "normal", "force_N"), new ArrayList<>(((Map<String, Object>) o).keySet()));
         }
@@ -59,6 +70,13 @@ class GraspCommandTest {
         assertTrue(((Number) g.get("volume")).doubleValue() > 0);
         for (Object v : (List<Object>) g.get("torque_residual_Nm")) {
             assertTrue(((Number) v).doubleValue() <= 1e-9, "the forces carry every finger's torques: " + v);
+        }
+        // every inner joint is held by its worm at the end: its torque is the largest worm reaction so far
+        List<Object> worm = (List<Object>) g.get("max_worm_reaction_Nm"), carried = (List<Object>) g.get("joint_torques_Nm");
+        for (int k = 0; k < 3; k++) {
+            double t2 = ((Number) ((List<Object>) carried.get(k)).get(k == 2 ? 0 : 1)).doubleValue();
+            assertTrue(t2 > 2.5, "finger " + (k + 1) + ": the worm holds the preload and the outer contact's share: " + t2);
+            assertEquals(t2, ((Number) worm.get(k)).doubleValue(), 1e-12);
         }
 
         CliTesting.Run r0 = CliTesting.run("grasp", MUG, "--friction", "0");

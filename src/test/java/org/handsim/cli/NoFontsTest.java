@@ -142,7 +142,8 @@ class NoFontsTest {
         for (String f : new String[] {"trace.csv", "summary.json", "fig7_finger3.png", "fig7_finger3.svg", "fig8_finger3.png", "fig8_finger3.svg"}) {
             assertTrue(Files.size(out.resolve(f)) > 1000, f + ": " + log);
         }
-        assertFalse(log.contains("warning"), log);
+        // no warning but the paper's forces above Barrett's rating (RunCommandsTest)
+        assertFalse(log.lines().anyMatch(l -> l.contains("warning") && !l.contains("above Barrett's rating")), log);
     }
 
     @Test

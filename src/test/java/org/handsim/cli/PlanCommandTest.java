@@ -24,19 +24,24 @@ class PlanCommandTest {
     void aSmallPlanWritesEveryOutput() throws Exception {
         Path dir = Files.createTempDirectory("plan-cmd");
         try {
-            CliTesting.Run r = CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "2", "--out", dir.toString());
+            CliTesting.Run r = CliTesting.run("plan", MUG, "--trials", "8", "--seed", "2", "--threads", "2", "--out", dir.toString());
             assertEquals(0, r.code(), r.err());
             assertTrue(r.out().startsWith("plan-mug: 8 trials (0 failed)"), r.out());
-            for (String f : new String[] {"plan.csv", "plan.json", "best/01.json", "best/08.json", "epsilon-histogram.png",
+            for (String f : new String[] {"plan.csv", "plan.json", "epsilon-histogram.png",
                 "epsilon-histogram.svg", "epsilon-directions.png", "epsilon-directions.svg"}) {
                 assertTrue(Files.isRegularFile(dir.resolve(f)), f);
             }
-            assertFalse(Files.exists(dir.resolve("best/09.json")), "8 trials: 8 best files");
             List<String> csv = Files.readAllLines(dir.resolve("plan.csv"));
             assertEquals(9, csv.size());
+            // one best file per trial with force closure, and only those
+            long closure = csv.stream().skip(1).filter(l -> l.split(",")[9].equals("true")).count();
+            assertTrue(closure >= 1, "seed 2 has a grasp with force closure in its 8 trials: " + csv);
+            for (int i = 1; i <= 8; i++) {
+                assertEquals(i <= closure, Files.isRegularFile(dir.resolve(String.format("best/%02d.json", i))), "best/" + i);
+            }
             // the same plan on one thread: the same table
             Path one = dir.resolve("one");
-            assertEquals(0, CliTesting.run("plan", MUG, "--trials", "8", "--seed", "5", "--threads", "1", "--out", one.toString()).code());
+            assertEquals(0, CliTesting.run("plan", MUG, "--trials", "8", "--seed", "2", "--threads", "1", "--out", one.toString()).code());
             assertEquals(PlanTesting.withoutTiming(csv), PlanTesting.withoutTiming(Files.readAllLines(one.resolve("plan.csv"))));
         } finally {
             PlanTesting.deleteTree(dir);

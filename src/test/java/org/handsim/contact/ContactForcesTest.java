@@ -12,6 +12,11 @@ import org.junit.jupiter.api.Test;
  * solved by hand.
  */
 class ContactForcesTest {
+    /** The flexion joints k2, k3 driven at tau[1], tau[2], the spread held, frictionless. */
+    static ContactForces.Problem problem(double[] frames, double[] tau, int n, double[] p, double[] d, int[] links) {
+        return new ContactForces.Problem().frames(frames).held(0).driven(1, tau[1]).driven(2, tau[2]).contacts(n, p, d, links);
+    }
+
     /** Frames of finger 3 with θ2 = 90° − Φ2 (link 2 straight up in {k0}) and θ3 = 0. */
     private static double[] upright() {
         double[] f = new double[48];
@@ -31,7 +36,7 @@ class ContactForcesTest {
         double[] f = upright();
         double[] p = {0.05, 0, 0.05}, d = {-1, 0, 0};
         ContactForces cf = new ContactForces();
-        cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, d, new int[] {2});
+        cf.solve(problem(f, new double[] {0, 1.26, 0}, 1, p, d, new int[] {2}));
         assertEquals(0.05, cf.arm(0, 1), 1e-15);
         assertEquals(0, cf.arm(0, 2));
         assertEquals(25.2, cf.force(0), 1e-12);
@@ -45,7 +50,7 @@ class ContactForcesTest {
     void contactsCannotPull() {
         double[] f = upright();
         ContactForces cf = new ContactForces();
-        cf.solve(f, 1, new double[] {0, -0.5, 0}, 1, new double[] {0.05, 0, 0.05}, new double[] {-1, 0, 0}, new int[] {2});
+        cf.solve(problem(f, new double[] {0, -0.5, 0}, 1, new double[] {0.05, 0, 0.05}, new double[] {-1, 0, 0}, new int[] {2}));
         assertEquals(0, cf.force(0));
         assertEquals(0.5, cf.residual(), 1e-12);
     }
@@ -57,12 +62,12 @@ class ContactForcesTest {
         // at p = o1 + (0,0,0.05), a push along the link (−z) passes through the joint-2 axis
         double[] p = {0.05, 0, 0.05}, d = {0, 0, -1};
         ContactForces cf = new ContactForces();
-        cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, d, new int[] {2});
+        cf.solve(problem(f, new double[] {0, 1.26, 0}, 1, p, d, new int[] {2}));
         assertTrue(cf.undetermined(0));
         assertEquals(0, cf.force(0));
         assertTrue(Double.isFinite(cf.residual()));
         // nearly through the axis (arm 1e-9 m): still undetermined rather than 1e9 N
-        cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, new double[] {-2e-8, 0, -1}, new int[] {2});
+        cf.solve(problem(f, new double[] {0, 1.26, 0}, 1, p, new double[] {-2e-8, 0, -1}, new int[] {2}));
         assertTrue(cf.undetermined(0));
         assertEquals(0, cf.force(0));
     }
@@ -81,7 +86,7 @@ class ContactForcesTest {
         for (double arm : new double[] {3e-4, 1e-3}) {
             double s = arm / Math.sqrt(0.05 * 0.05 - arm * arm);   // 0.05·s/√(1+s²) = arm
             double n = Math.sqrt(1 + s * s);
-            cf.solve(f, 1, new double[] {0, 1.26, 0}, 1, p, new double[] {-s / n, 0, -1 / n}, new int[] {2});
+            cf.solve(problem(f, new double[] {0, 1.26, 0}, 1, p, new double[] {-s / n, 0, -1 / n}, new int[] {2}));
             assertEquals(arm, Math.abs(cf.arm(0, 1)), 1e-15, "the arm as built");
             if (arm < ContactForces.MIN_ARM_M) {
                 assertTrue(cf.undetermined(0), "arm " + arm);
@@ -108,7 +113,7 @@ class ContactForcesTest {
         double[] p = {0.05, 0, 0.05, 0.02, 0, 0.07};
         double[] d = {-1, 0, 0, 0, 0, -1};
         ContactForces cf = new ContactForces();
-        cf.solve(f, 1, new double[] {0, 1.3, 0.3}, 2, p, d, new int[] {2, 3});
+        cf.solve(problem(f, new double[] {0, 1.3, 0.3}, 2, p, d, new int[] {2, 3}));
         assertEquals(0.03, cf.arm(1, 1), 1e-12);
         assertEquals(0.03, cf.arm(1, 2), 1e-12);
         assertEquals(20, cf.force(0), 1e-9);
@@ -117,42 +122,74 @@ class ContactForcesTest {
     }
 
     /**
-     * A held inner joint (ContactForces.solveHeld): the geometry of {@link #twoContactsTwoJoints}
-     * (A on link 2, arm 0.05 m about k2; B on link 3, arms 0.03 m about k2 and k3), the outer
-     * joint driven at τ3 = 0.3 N·m, the inner joint's reaction free within [lo, hi]. By hand:
-     * B alone carries τ3 (fB = 10 N) and puts 0.3 N·m on k2. (a) [0, 1] holds that: A stays at
-     * 0, the reaction is 0.3. (b) [1.3, 2]: the reaction must rise to 1.3, which A's push gives
-     * (fA = 20 N). (c) [−0.1, 0.1]: B's 0.3 N·m on k2 is too much and A can only add: no forces
-     * carry both; the least squares of k2 at 0.1 and k3 at 0.3 over fA, fB ≥ 0 has fA = 0,
-     * fB = (0.03·0.1 + 0.03·0.3)/(2·0.03²) = 6.667 N, which carries 0.2 of k3's 0.3 and puts 0.2
-     * on k2: residual 0.1 both ways.
+     * A held joint keeps what was locked into its link, by hand (DESIGN.md, "Which contact
+     * forces"): the geometry of {@link #twoContactsTwoJoints} (A on link 2, arm 0.05 m about k2;
+     * B on link 3, arms 0.03 m about k2 and k3). The inner joint's worm locked while A pressed
+     * with 20 N (1.0 N·m on k2); then k2 is held and k3 driven at 0.3 N·m. A's link cannot move,
+     * so A keeps its 20 N; only k3 turns, and B alone carries its 0.3 N·m: fB = 0.3/0.03 = 10 N.
+     * The worm's reaction is both contacts' torque on k2: 0.05·20 + 0.03·10 = 1.3 N·m. Without
+     * the locked load (the least-norm forces) A would carry nothing and the reaction be 0.3 N·m.
      */
     @Test
-    void aHeldJointsReactionStaysWithinItsBoundsOrTheResidualSaysSo() {
+    void aHeldLinkKeepsItsLockedLoadAndTheWormReactsToBoth() {
         double[] f = new double[48];
         FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(90 - 2.46), Math.toRadians(90 - 50)}, f);
         double[] p = {0.05, 0, 0.05, 0.02, 0, 0.07};
         double[] d = {-1, 0, 0, 0, 0, -1};
         int[] links = {2, 3};
-        double[] tau = {0, Double.NaN, 0.3};   // the held joint's entry is not read
         ContactForces cf = new ContactForces();
-        cf.solveHeld(f, 1, tau, 0, 1, 2, p, d, links, null, 0);
-        assertEquals(0, cf.force(0), 1e-12);
-        assertEquals(10, cf.force(1), 1e-9);
-        assertEquals(0.3, cf.heldTorque(), 1e-12);
+        ContactForces.Problem pr = new ContactForces.Problem().frames(f).held(0).held(1).driven(2, 0.3).contacts(2, p, d, links);
+        cf.solve(pr.locked(new double[] {-20, 0, 0, 0, 0, 0}));
+        assertEquals(20, cf.force(0), 1e-12);
+        assertEquals(10, cf.force(1), 1e-12);
+        assertEquals(1.3, cf.torqueOn(1), 1e-12);
+        assertEquals(0.3, cf.torqueOn(2), 1e-12);
         assertEquals(0, cf.residual(), 1e-12);
+        assertTrue(cf.undetermined(0), "no driven joint weighs A: it keeps its locked force");
 
-        cf.solveHeld(f, 1, tau, 1.3, 2, 2, p, d, links, null, 0);
-        assertEquals(20, cf.force(0), 1e-9);
-        assertEquals(10, cf.force(1), 1e-9);
-        assertEquals(1.3, cf.heldTorque(), 1e-12);
+        cf.solve(pr.locked(null));
+        assertEquals(0, cf.force(0));
+        assertEquals(10, cf.force(1), 1e-12);
+        assertEquals(0.3, cf.torqueOn(1), 1e-12);
+    }
+
+    /**
+     * Two contacts on one driven joint share a load increment by their stiffness, not by the
+     * smallest norm, by hand. Link 3 horizontal (as {@link #twoContactsTwoJoints}), k2 held: B
+     * at 0.03 m and C at 0.015 m from joint k3, both pushing −z (arms 0.03 and 0.015 m). When k2
+     * locked, B carried 10 N and C nothing (0.3 N·m on k3). k3's torque then rises to 0.45 N·m:
+     * k3 turns by y, pressing B by 0.03·y and C by 0.015·y; with equal contact stiffness k the
+     * increment 0.15 N·m = k·y·(0.03² + 0.015²) gives k·y = 133.3 N/m·m, so B gains 4 N and C
+     * 2 N: 14 N and 2 N (the least-norm forces, proportional to the arms, would be 12 N and
+     * 6 N). When k3's torque falls to 0.1 N·m instead, C would be pulled (0.015·k·y &lt; 0): it
+     * leaves, and B alone carries 0.1/0.03 = 3.333 N.
+     */
+    @Test
+    void aLoadIncrementIsSharedByTheContactsStiffness() {
+        double[] f = new double[48];
+        FingerKinematics.of(3).frames(new double[] {0, Math.toRadians(90 - 2.46), Math.toRadians(90 - 50)}, f);
+        // link 3 points along −x from o2 = (0.05, 0, 0.07)
+        double[] p = {0.02, 0, 0.07, 0.035, 0, 0.07};
+        double[] d = {0, 0, -1, 0, 0, -1};
+        int[] links = {3, 3};
+        double[] locked = {0, 0, -10, 0, 0, 0};
+        ContactForces cf = new ContactForces();
+        ContactForces.Problem pr = new ContactForces.Problem().frames(f).held(0).held(1).contacts(2, p, d, links).locked(locked);
+        assertEquals(0.03, ContactForces.jointTorque(f, 2, new double[] {0.02, 0, 0.07}, new double[] {0, 0, -1}, 1), 1e-12);
+        cf.solve(pr.driven(2, 0.3));
+        assertEquals(10, cf.force(0), 1e-12);
+        assertEquals(0, cf.force(1), 1e-12);
+        cf.solve(pr.driven(2, 0.45));
+        assertEquals(14, cf.force(0), 1e-12);
+        assertEquals(2, cf.force(1), 1e-12);
         assertEquals(0, cf.residual(), 1e-12);
-
-        cf.solveHeld(f, 1, tau, -0.1, 0.1, 2, p, d, links, null, 0);
-        assertEquals(0, cf.force(0), 1e-12);
-        assertEquals(0.02 / 0.003, cf.force(1), 1e-9);
-        assertEquals(0.2, cf.heldTorque(), 1e-12);
-        assertEquals(0.1, cf.residual(), 1e-12);
+        cf.solve(pr.driven(2, 0.1));
+        assertEquals(0.1 / 0.03, cf.force(0), 1e-12);
+        assertEquals(0, cf.force(1));
+        assertEquals(0, cf.residual(), 1e-12);
+        cf.solve(pr.driven(2, 0.45).locked(null));
+        assertEquals(12, cf.force(0), 1e-12);
+        assertEquals(6, cf.force(1), 1e-12);
     }
 
     /** Many identical contacts: the least-squares answer carries the torque, none negative. */
@@ -168,7 +205,7 @@ class ContactForcesTest {
             links[i] = 2;
         }
         ContactForces cf = new ContactForces();
-        cf.solve(f, 1, new double[] {0, 1.0, 0}, n, p, d, links);
+        cf.solve(problem(f, new double[] {0, 1.0, 0}, n, p, d, links));
         double tau = 0;
         for (int i = 0; i < n; i++) {
             assertTrue(cf.force(i) >= 0);

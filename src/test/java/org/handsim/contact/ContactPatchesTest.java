@@ -105,6 +105,7 @@ class ContactPatchesTest {
         ContactPatches cp = new ContactPatches();
         ContactForces cf = new ContactForces();
         int[] patches = new int[1];
+        ContactForces.Problem problem = new ContactForces.Problem().frames(frames).held(0).driven(1, tau[1]).driven(2, tau[2]);
         Runnable step = () -> {
             query.collide(ta, tb, pose12, 0, result);
             cp.build(result, plate, sphere, pose);
@@ -116,7 +117,7 @@ class ContactPatchesTest {
                 System.arraycopy(dirs, 0, dirs, 3 * i, 3);
                 links[i] = 2 + i % 2;
             }
-            cf.solve(frames, 1, tau, n, points, dirs, links);
+            cf.solve(problem.contacts(n, points, dirs, links));
             patches[0] = n;
         };
         for (int i = 0; i < 2000; i++) step.run();   // warm-up (and JIT)

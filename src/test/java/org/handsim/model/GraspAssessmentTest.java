@@ -24,8 +24,9 @@ import org.junit.jupiter.api.Test;
  * finger 3). So the hold is 0 in ±x, ±y, +z and, along −z:
  * <ul>
  *   <li>while the clutch is engaged (BLOCKED): F = τ_break / 0.048990 = 1.26/0.048990 = 25.72 N;</li>
- *   <li>after the breakaway (the inner link held by its worm drive): F = the rated torque of
- *       joint 2 / 0.048990, 2 kg × 9.80665 m/s² × (A2 + A3) = 2.471276 N·m, so 50.445 N.</li>
+ *   <li>after the breakaway (the inner link held by its worm drive, whose strength Barrett does
+ *       not document: no limit): the hand's rated load, the report's ceiling, 58.84 N
+ *       ({@code CAPPED}: at least that).</li>
  * </ul>
  */
 class GraspAssessmentTest {
@@ -53,15 +54,17 @@ class GraspAssessmentTest {
     }
 
     @Test
-    void afterTheBreakawayTheWormHoldsTheInnerLinkUpToTheRating() {
+    void afterTheBreakawayTheWormHoldsTheInnerLinkWithoutALimit() {
         HandModel m = plane(4.0);
         assertEquals(ClutchState.STALLED, m.state(3));
         assertFalse(m.clutchEngaged(3), "stalled after a breakaway");
         GraspAssessment g = GraspAssessment.of(m.graspInput(), 0.5, 8);
         assertEquals(1, g.contacts().size());
-        double rated = 2 * 9.80665 * (0.070 + 0.056);
-        assertEquals(rated / ARM, g.holdN()[5], 1e-6);
+        assertEquals(2 * 9.80665 * 3, g.holdN()[5], 1e-9);
         assertEquals(0, g.holdN()[4], 1e-9);
+        assertEquals(58.8399, g.holdCapN(), 1e-12);
+        assertTrue(Double.isNaN(g.jointLimitsNm()[2][1]), "the worm-held inner joint: no limit");
+        assertEquals(1.26, GraspAssessment.of(plane(1.3).graspInput(), 0.5, 8).jointLimitsNm()[2][1], "the engaged clutch: tau_break");
     }
 
     /** The contacts as the simulation has them: world points, the push direction into the object, the force vector. */
@@ -93,21 +96,29 @@ class GraspAssessmentTest {
     }
 
     /**
-     * The joint limits of decision 6 from the hand file: 2 kg × 9.80665 m/s² = 19.6133 N at the
-     * tip of the stretched finger gives 19.6133 × 0.176 = 3.45194 N·m (spread), × 0.126 =
-     * 2.47128 N·m (inner), × 0.056 = 1.09834 N·m (outer); the engaged inner joint τ_break.
+     * The joint limits of decision 6, the simulation's: the engaged inner joint τ_break; no
+     * known limit (NaN) for a joint a worm holds, the spread and finger 3's missing spread. The
+     * rating from the hand file, 2 kg × 9.80665 m/s² = 19.6133 N at the tip of the stretched
+     * finger (3 × 19.6133 = 58.8399 N for the hand), and the levers to the tip that turn a joint
+     * torque into a fingertip-equivalent force: A1 + A2 + A3 = 0.050 + 0.070 + 0.056 = 0.176 m,
+     * A2 + A3 = 0.126 m, A3 = 0.056 m (Table II).
      */
     @Test
-    void jointLimitsByHand() {
+    void jointLimitsAndRatingByHand() {
         HandDescription h = HandDescription.barrettHand();
         assertEquals(19.6133, h.fingerRatingN(), 1e-12);
         assertEquals(58.8399, h.handRatingN(), 1e-12);
-        assertEquals(3.4519408, GraspAssessment.jointLimit(h, 1, 1, true), 1e-9);
-        assertEquals(3.4519408, GraspAssessment.jointLimit(h, 2, 1, false), 1e-9);
-        assertTrue(Double.isNaN(GraspAssessment.jointLimit(h, 3, 1, true)), "finger 3 has no spread joint");
-        assertEquals(1.26, GraspAssessment.jointLimit(h, 3, 2, true));
-        assertEquals(2.4712758, GraspAssessment.jointLimit(h, 3, 2, false), 1e-9);
-        assertEquals(1.0983448, GraspAssessment.jointLimit(h, 1, 3, true), 1e-9);
-        assertEquals(1.0983448, GraspAssessment.jointLimit(h, 1, 3, false), 1e-9);
+        assertEquals(2, h.fingerRatingKg());
+        assertEquals(0.176, h.leverToTip(1), 1e-12);
+        assertEquals(0.126, h.leverToTip(2), 1e-12);
+        assertEquals(0.056, h.leverToTip(3), 1e-12);
+        for (int k = 1; k <= 3; k++) {
+            for (boolean engaged : new boolean[] {true, false}) {
+                assertTrue(Double.isNaN(GraspAssessment.jointLimit(h, k, 1, engaged)), "spread");
+                assertTrue(Double.isNaN(GraspAssessment.jointLimit(h, k, 3, engaged)), "outer joint: its worm");
+            }
+            assertEquals(1.26, GraspAssessment.jointLimit(h, k, 2, true));
+            assertTrue(Double.isNaN(GraspAssessment.jointLimit(h, k, 2, false)), "inner joint after a breakaway: its worm");
+        }
     }
 }

@@ -30,7 +30,7 @@ class HandClearanceTest {
     @Test
     void clearMeansNoContactAtTheStartAndContactMeansTouching() {
         HandClearance hc = new HandClearance(new Scenario.ObjectPlacement(MUG, RigidTransform.IDENTITY, 1.0, 24));
-        TrialSampler s = new TrialSampler(30, 17, 0);
+        TrialSampler s = new TrialSampler(30, 17, null);
         int clear = 0, touching = 0;
         for (int i = 0; i < 30; i++) {
             TrialParameters p = s.sample(i);
@@ -53,5 +53,31 @@ class HandClearanceTest {
             }
         }
         assertTrue(clear >= 30 && touching >= 10, "both cases exercised: " + clear + " clear, " + touching + " touching");
+    }
+
+    /**
+     * Fingers FREE at 17 500 counts with the spread at 60° close past each other's tips (the three
+     * tips meet on the palm axis at 10 400 counts): their links intersect; open, or at 5 000
+     * counts, they are apart. At spread 0 fingers 1 and 2 close beside finger 3 (50 mm apart
+     * across x) and pass its tip: apart at 15 000 counts, crossed by the end of the closing.
+     */
+    @Test
+    void fingersThatCloseThroughEachOtherCross() {
+        HandClearance hc = new HandClearance(new Scenario.ObjectPlacement(MUG, RigidTransform.IDENTITY, 1.0, 24));
+        org.handsim.kinematics.Transmission tr = org.handsim.kinematics.Transmission.barrettHand();
+        org.handsim.hand.HandDescription hand = tr.hand();
+        java.util.function.BiFunction<Double, Double, double[][]> frames = (spread, counts) -> {
+            double[][] f = new double[3][org.handsim.kinematics.FingerKinematics.FRAMES_LENGTH];
+            for (int k = 1; k <= 3; k++) {
+                double[] j = {hand.finger(k).spreadRadPerCount() * spread, tr.innerAngle(counts), tr.outerAngle(counts)};
+                new org.handsim.kinematics.FingerKinematics(hand.finger(k)).framesInPalm(j, f[k - 1]);
+            }
+            return f;
+        };
+        org.junit.jupiter.api.Assertions.assertTrue(hc.fingersCross(frames.apply(1050.0, 17500.0)));
+        org.junit.jupiter.api.Assertions.assertFalse(hc.fingersCross(frames.apply(1050.0, 0.0)));
+        org.junit.jupiter.api.Assertions.assertFalse(hc.fingersCross(frames.apply(1050.0, 5000.0)));
+        org.junit.jupiter.api.Assertions.assertFalse(hc.fingersCross(frames.apply(0.0, 15000.0)));
+        org.junit.jupiter.api.Assertions.assertTrue(hc.fingersCross(frames.apply(0.0, 17500.0)));
     }
 }

@@ -89,7 +89,7 @@ class AutograspTest {
     @Test
     void poseIsClearAndTheStandoffBacksOff() {
         HandClearance hc = cube();
-        TrialSampler s = new TrialSampler(40, 5, 0.01);
+        TrialSampler s = new TrialSampler(40, 5, null);
         double[] counts = new double[3];
         int touched = 0;
         for (int i = 0; i < 40; i++) {

@@ -20,9 +20,10 @@ class PlanOutputTest {
     /** Results with chosen ε, without running trials (the parameters are the sampler's). */
     static TrialResult fake(TrialRunner r, int i, boolean ok, boolean fc, double eps, double hold) {
         TrialParameters p = r.parameters(i);
-        if (!ok) return TrialResult.failed(p, 0.001, "no");
-        return new TrialResult(i, true, p.approach(), p.roll(), p.spreadCounts(), p.standoff(), 3, fc, eps, fc ? 1e-3 : 0, hold,
-            new String[] {"STALLED", "BROKEN", "FREE"}, 2.0, 0.01, "", new double[] {0.01 * i, 0, 0.2}, new double[] {0, 0.1 * i, 0});
+        if (!ok) return TrialResult.failed(p, 0.004, 0.001, "no");
+        return new TrialResult(i, true, p.approach(), p.roll(), p.spreadCounts(), 0.004, 3, fc, eps, fc ? 1e-3 : 0, hold,
+            new String[] {"STALLED", "BROKEN", "FREE"}, 2.0, 0.01, "", new double[] {0.01 * i, 0, 0.2}, new double[] {0, 0.1 * i, 0},
+            fc ? TrialOutcome.FORCE_CLOSURE : TrialOutcome.OTHER);
     }
 
     @Test

@@ -28,7 +28,7 @@ class TrialSamplerTest {
     @Test
     void approachesCoverTheSphere() {
         int n = 2000;
-        TrialSampler s = new TrialSampler(n, 42, 0.01);
+        TrialSampler s = new TrialSampler(n, 42, null);
         double[] mean = new double[3];
         int up = 0, east = 0;
         for (int i = 0; i < n; i++) {
@@ -45,44 +45,48 @@ class TrialSamplerTest {
 
     @Test
     void sameSeedSameTrialsWhateverTheOrder() {
-        TrialSampler a = new TrialSampler(100, 7, 0.01), b = new TrialSampler(100, 7, 0.01);
+        TrialSampler a = new TrialSampler(100, 7, null), b = new TrialSampler(100, 7, null);
         for (int i = 99; i >= 0; i--) {
             TrialParameters p = a.sample(i), q = b.sample(99 - (99 - i));
             assertArrayEquals(p.approach(), q.approach());
             assertEquals(p.roll(), q.roll());
             assertEquals(p.spreadCounts(), q.spreadCounts());
-            assertEquals(p.standoff(), q.standoff());
+            assertEquals(p.wrap(), q.wrap());
+            assertEquals(p.depth(), q.depth());
         }
         // sampling order does not matter: trial 50 alone equals trial 50 after the others
-        TrialSampler c = new TrialSampler(100, 7, 0.01);
+        TrialSampler c = new TrialSampler(100, 7, null);
         assertEquals(a.sample(50).roll(), c.sample(50).roll());
     }
 
     @Test
     void parametersStayInTheirRanges() {
-        TrialSampler s = new TrialSampler(3000, 3, 0.02);
+        TrialSampler s = new TrialSampler(3000, 3, null);
         boolean zero = false, max = false;
+        int wraps = 0;
         for (int i = 0; i < 3000; i++) {
             TrialParameters p = s.sample(i);
             assertTrue(p.roll() >= 0 && p.roll() < 2 * Math.PI);
-            assertTrue(p.spreadCounts() >= 0 && p.spreadCounts() <= TrialSampler.SPREAD_COUNTS_MAX);
-            assertTrue(p.standoff() >= 0 && p.standoff() < 0.02);
+            assertTrue(p.spreadCounts() >= 0 && p.spreadCounts() <= TrialSampler.SPREAD_COUNTS_USED);
+            assertTrue(p.depth() >= 0 && p.depth() < 1);
             zero |= p.spreadCounts() < 20;
-            max |= p.spreadCounts() > 3130;
+            max |= p.spreadCounts() > TrialSampler.SPREAD_COUNTS_USED - 20;
+            wraps += p.wrap() ? 1 : 0;
         }
         assertTrue(zero && max, "the spread reaches both ends of its range");
+        assertEquals(StandoffRule.WRAP_SHARE * 3000, wraps, 0.03 * 3000, "the share of wraps without a shape");
     }
 
     @Test
     void otherSeedOtherTrials() {
-        TrialParameters a = new TrialSampler(10, 1, 0.01).sample(3), b = new TrialSampler(10, 2, 0.01).sample(3);
+        TrialParameters a = new TrialSampler(10, 1, null).sample(3), b = new TrialSampler(10, 2, null).sample(3);
         assertNotEquals(a.roll(), b.roll());
         assertNotEquals(a.approach()[0], b.approach()[0]);
     }
 
     @Test
     void indexOutOfRangeIsRefused() {
-        TrialSampler s = new TrialSampler(10, 1, 0.01);
+        TrialSampler s = new TrialSampler(10, 1, null);
         assertThrows(IllegalArgumentException.class, () -> s.sample(10));
         assertThrows(IllegalArgumentException.class, () -> s.sample(-1));
     }

@@ -32,7 +32,7 @@ class TrialScenarioTest {
         assertTrue(res.ok(), res.error());
         Scenario direct = r.trialScenario(p, res.palmPosition(), res.palmRotation());
         Scenario parsed = Scenario.parse(Path.of(spec.templateFile()),
-            r.scenarioJson(p, res.palmPosition(), res.palmRotation(), spec.name() + "-trial" + i, false, null));
+            r.scenarioJson(p, res.standoff(), res.palmPosition(), res.palmRotation(), spec.name() + "-trial" + i, false, null));
         Path dir = Path.of(spec.templateFile()).getParent();
         return new String[] {JsonWriter.write(direct.toJson(dir)), JsonWriter.write(parsed.toJson(dir))};
     }
@@ -51,7 +51,7 @@ class TrialScenarioTest {
             TrialResult res = r.run(i);
             Scenario direct = r.trialScenario(p, res.palmPosition(), res.palmRotation());
             Scenario parsed = Scenario.parse(Path.of(spec.templateFile()),
-                r.scenarioJson(p, res.palmPosition(), res.palmRotation(), "t", false, null));
+                r.scenarioJson(p, res.standoff(), res.palmPosition(), res.palmRotation(), "t", false, null));
             GraspAssessment a = closed(direct, spec), b = closed(parsed, spec);
             assertEquals(b.quality().epsilon(), a.quality().epsilon());
             assertEquals(b.holdMinN(), a.holdMinN());
@@ -122,7 +122,7 @@ class TrialScenarioTest {
                     a = "refused: " + e.getMessage();
                 }
                 try {
-                    Scenario q = Scenario.parse(file, r.scenarioJson(p, pos, rot, spec.name() + "-trial" + i, false, null));
+                    Scenario q = Scenario.parse(file, r.scenarioJson(p, 0.005, pos, rot, spec.name() + "-trial" + i, false, null));
                     b = JsonWriter.write(q.toJson(dir)) + samples(q);
                 } catch (RuntimeException e) {
                     b = "refused: " + e.getMessage();
