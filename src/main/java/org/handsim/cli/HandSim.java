@@ -294,6 +294,7 @@ public final class HandSim implements Runnable {
         } else {
             what = "internal error: " + t;
         }
+        if (!(t instanceof IOException || t instanceof java.io.UncheckedIOException)) CommandContext.markInDoubt(what);
         String log = writeLog(t);
         err.println(SafeText.line("handsim: " + what) + (log != null ? " (stack trace in " + log + ")" : ""));
         err.flush();

@@ -24,6 +24,7 @@ public final class CommandContext {
     private static volatile boolean cancelled;
     private static volatile Boolean console;
     private static volatile long generation;
+    private static volatile String inDoubt;
 
     private CommandContext() {}
 
@@ -64,7 +65,23 @@ public final class CommandContext {
     public static synchronized void begin(boolean clientConsole) {
         generation++;
         cancelled = false;
+        inDoubt = null;
         console = clientConsole;
+    }
+
+    /**
+     * The command failed in a way that may have left the JVM unfit for the next one (out of
+     * memory, a stack overflow, an internal error): a server then ends rather than serve on. A
+     * failure the command reported as such (a bad input, a full disk: exit 1 or any other code)
+     * leaves nothing in doubt.
+     */
+    public static void markInDoubt(String why) {
+        inDoubt = why;
+    }
+
+    /** Why the last command left the JVM in doubt, or null. */
+    public static String inDoubt() {
+        return inDoubt;
     }
 
     /** The server: the running command is to stop at its next cancellation point. */

@@ -12,14 +12,11 @@ import java.io.OutputStream;
 import java.net.StandardProtocolFamily;
 import java.net.UnixDomainSocketAddress;
 import java.nio.ByteBuffer;
-import java.nio.channels.FileChannel;
-import java.nio.channels.FileLock;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.PosixFileAttributes;
 import java.nio.file.attribute.PosixFilePermission;
@@ -85,16 +82,26 @@ public final class Client {
         String why = null;
         String identity = null;
         if (eligible(args)) {
-            try {
-                identity = identity();   // before the command runs: it sets system properties of its own
-                Connection c = connect(identity, args);
-                served = c.outcome;
-                why = c.reason;
-                if (served == Outcome.ACCEPTED) System.exit(c.stream());
-            } catch (IOException | RuntimeException e) {
-                served = Outcome.FAILED;
-                why = String.valueOf(e);
+            why = notServable(args);
+            if (why != null) {
+                served = Outcome.HERE;
+            } else {
+                try {
+                    identity = identity();   // before the command runs: it sets system properties of its own
+                    Connection c = connect(identity, args);
+                    served = c.outcome;
+                    why = c.reason;
+                    if (served == Outcome.ACCEPTED) System.exit(c.stream());
+                } catch (IOException | RuntimeException e) {
+                    served = Outcome.FAILED;
+                    why = String.valueOf(e);
+                }
             }
+            if (served == Outcome.TIMEOUT || served == Outcome.FAILED) {   // a server that is there but does not serve: say so, once
+                System.err.println("handsim: the resident server did not serve this command (" + why + "); running it here");
+                System.err.flush();
+            }
+            if (served != Outcome.NO_SERVER || why != null) remember(served, why);
         }
         report("in-process (" + served.name().toLowerCase(java.util.Locale.ROOT) + (why != null ? ": " + why : "") + ")");
         boolean training = System.getProperty(TRAINING) != null;
@@ -127,8 +134,104 @@ public final class Client {
         }
     }
 
-    /** What became of the attempt to hand the command to a server. */
-    enum Outcome { NOT_TRIED, NO_SERVER, BUSY, REFUSED, FAILED, ACCEPTED }
+    /**
+     * What became of the attempt to hand the command to a server: not tried (not a served command,
+     * or {@code HANDSIM_SERVER=0}); here (the command names something only this process has, see
+     * {@link #notServable}); no server; busy; refused; timeout (no answer within {@link #ANSWER_MS});
+     * failed (the connection broke); accepted.
+     */
+    enum Outcome { NOT_TRIED, HERE, NO_SERVER, BUSY, REFUSED, TIMEOUT, FAILED, ACCEPTED }
+
+    /**
+     * How long a client waits for a server to connect, take the request and start answering
+     * (property {@code handsim.server.answerMs}): a server that accepts and then says nothing (stopped
+     * with SIGSTOP, swapped out, wedged) costs a command this much, never more.
+     */
+    static final long ANSWER_MS = 2000;
+
+    /** {@link #ANSWER_MS}, or the property {@code handsim.server.answerMs}. */
+    static long answerMs() {
+        return Long.getLong("handsim.server.answerMs", ANSWER_MS);
+    }
+
+    /**
+     * The longest frame or text either side takes (a server's output frames are at most
+     * {@link Server#FRAME_BYTES}): anything longer is a broken or foreign peer, never a reason to
+     * allocate what it asks for.
+     */
+    static final int MAX_FRAME = 1 << 20;
+
+    /**
+     * Why this command line must run in this process, or null: an argument that names this
+     * process's own descriptors, files or terminal — {@code /dev/stdout}, {@code /dev/stderr},
+     * {@code /dev/stdin}, {@code /dev/fd/N}, {@code /dev/tty}, anything under {@code /proc/} — as
+     * given, relative to the working directory, or through a link (a server would open its own:
+     * {@code --obj /dev/stdout} wrote into the server's log); or an argument that is not the
+     * text its bytes are (U+FFFD: {@code cli.ArgumentBytes} names the byte, from this process's
+     * own command line). Each argument costs a string test, and a look at the file only when it
+     * exists and is a link. {@code /dev/null} is the same file in any process.
+     */
+    static String notServable(String[] args) {
+        Path cwd = null;
+        for (String a : args) {
+            if (a.indexOf('\ufffd') >= 0) return "an argument is not UTF-8 text";
+            int eq = a.startsWith("-") ? a.indexOf('=') : -1;
+            String v = eq > 0 ? a.substring(eq + 1) : a;
+            if (v.isEmpty() || v.indexOf('\0') >= 0) continue;
+            String why = ownFile(v, v);
+            if (why != null) return why;
+            Path p;
+            try {
+                p = Path.of(v);
+                if (!p.isAbsolute()) {
+                    if (cwd == null) cwd = Path.of("").toAbsolutePath();
+                    p = cwd.resolve(p);
+                }
+                p = p.normalize();
+            } catch (RuntimeException e) {
+                continue;   // not a path
+            }
+            why = ownFile(p.toString(), v);
+            if (why != null) return why;
+            if (!Files.exists(p, LinkOption.NOFOLLOW_LINKS)) continue;
+            try {
+                why = ownFile(p.toRealPath().toString(), v);
+            } catch (IOException | RuntimeException e) {
+                why = "'" + v + "' leads to something that is not a file";   // a link into /proc/self/fd: a pipe, a socket
+            }
+            if (why != null) return why;
+        }
+        return null;
+    }
+
+    /** Why {@code path} names this process's own descriptors, files or terminal (or another device), or null. */
+    private static String ownFile(String path, String given) {
+        if (path.equals("/dev/null")) return null;
+        if (path.startsWith("/dev/") || path.equals("/dev") || path.startsWith("/proc/") || path.equals("/proc")) {
+            return "'" + given + "' names a device or this process's own files";
+        }
+        return null;
+    }
+
+    /**
+     * Notes in the servers' folder why the last command that could have been served was not
+     * ({@code handsim server status} shows it); nothing if the folder is not fit.
+     */
+    static void remember(Outcome how, String why) {
+        Path dir = folder();
+        if (dir == null || unsafe(dir, false) != null) return;
+        String text = System.currentTimeMillis() + " " + how.name().toLowerCase(java.util.Locale.ROOT) + (why != null ? ": " + why : "") + "\n";
+        try {
+            Path tmp = dir.resolve(".not-served." + ProcessHandle.current().pid());
+            Files.write(tmp, text.getBytes(StandardCharsets.UTF_8));
+            Files.move(tmp, dir.resolve(NOT_SERVED), java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+        } catch (IOException | RuntimeException e) {
+            // a note only
+        }
+    }
+
+    /** The note {@link #remember} writes. */
+    static final String NOT_SERVED = "not-served";
 
     /** Whether a server may run this command line. */
     static boolean eligible(String[] args) {
@@ -191,7 +294,13 @@ public final class Client {
                     }
                     if (type != OUT && type != ERR) throw new EOFException();
                     int n = in.readInt();
-                    if (n < 0) throw new IOException("bad frame length " + n);
+                    if (n < 0 || n > MAX_FRAME) {
+                        done.countDown();
+                        stderr.write(("handsim: the resident server sent a frame of " + n + " bytes (at most " + MAX_FRAME
+                            + "): not a server of this build; its outputs are the old set or a whole new one: run the command again with"
+                            + " HANDSIM_SERVER=0\n").getBytes(StandardCharsets.UTF_8));
+                        return 1;
+                    }
                     if (buf.length < n) buf = new byte[n];
                     in.readFully(buf, 0, n);
                     if (stopped) continue;   // a stopped command's last words are not shown: a stopped JVM says nothing either
@@ -241,56 +350,91 @@ public final class Client {
             c.reason = unsafe;
             return c;
         }
-        Path socket = socketFile(dir, key(identity));
-        if (socket.toString().length() > MAX_SOCKET_PATH) {
-            c.outcome = Outcome.REFUSED;
-            c.reason = "socket path too long: " + socket;
-            return c;
-        }
+        String key = key(identity);
+        Path socket = socketFile(dir, key);
         if (!Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
             c.outcome = Outcome.NO_SERVER;
             return c;
         }
         SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
+        Watchdog dog = new Watchdog(ch, answerMs());
         try {
-            ch.connect(UnixDomainSocketAddress.of(socket));
-        } catch (IOException e) {   // nobody listens: a server killed without removing its socket
+            try {
+                ch.connect(UnixDomainSocketAddress.of(socket));
+            } catch (IOException e) {
+                ch.close();
+                if (dog.fired) return timedOut(c, dog);
+                c.outcome = Outcome.NO_SERVER;   // nobody listens: a server killed without removing its socket
+                c.reason = "stale socket";
+                return c;
+            }
+            c.channel = ch;
+            c.log = logFile(dir, key);
+            c.in = new DataInputStream(new java.io.BufferedInputStream(in(ch)));
+            c.out = new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
+            int answer;
+            try {
+                c.out.writeInt(MAGIC);
+                c.out.writeByte(RUN);
+                writeString(c.out, identity);
+                c.out.writeBoolean(System.console() != null);
+                writeString(c.out, System.getProperty("sun.stdout.encoding", ""));
+                writeString(c.out, System.getProperty("sun.stderr.encoding", ""));
+                c.out.writeInt(args.length);
+                for (String a : args) writeString(c.out, a);
+                c.out.flush();
+                answer = c.in.read();
+            } catch (IOException e) {
+                ch.close();
+                if (dog.fired) return timedOut(c, dog);
+                throw e;
+            }
+            if (!dog.disarm()) {
+                ch.close();
+                return timedOut(c, dog);
+            }
+            if (answer == ACCEPTED) {
+                c.outcome = Outcome.ACCEPTED;
+                report("served");
+                return c;
+            }
+            c.outcome = answer == BUSY ? Outcome.BUSY : Outcome.REFUSED;
+            c.reason = answer == REFUSED ? readString(c.in) : answer == BUSY ? "busy" : "no answer";
             ch.close();
-            c.outcome = Outcome.NO_SERVER;
-            c.reason = "stale socket";
             return c;
+        } finally {
+            dog.disarm();
         }
-        c.channel = ch;
-        c.log = logFile(dir, key(identity));
-        c.in = new DataInputStream(new java.io.BufferedInputStream(in(ch)));
-        c.out = new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
-        c.out.writeInt(MAGIC);
-        c.out.writeByte(RUN);
-        writeString(c.out, identity);
-        c.out.writeBoolean(System.console() != null);
-        writeString(c.out, System.getProperty("sun.stdout.encoding", ""));
-        writeString(c.out, System.getProperty("sun.stderr.encoding", ""));
-        c.out.writeInt(args.length);
-        for (String a : args) writeString(c.out, a);
-        c.out.flush();
-        int answer = c.in.read();
-        if (answer == ACCEPTED) {
-            c.outcome = Outcome.ACCEPTED;
-            report("served");
-            return c;
-        }
-        c.outcome = answer == BUSY ? Outcome.BUSY : Outcome.REFUSED;
-        c.reason = answer == REFUSED ? readString(c.in) : answer == BUSY ? "busy" : "no answer";
-        ch.close();
+    }
+
+    private static Connection timedOut(Connection c, Watchdog dog) {
+        c.outcome = Outcome.TIMEOUT;
+        c.reason = "no answer within " + dog.ms + " ms";
         return c;
     }
 
     /**
      * The folder of the servers' sockets, locks and logs: system property
      * {@code handsim.server.dir}, else {@code $XDG_CACHE_HOME/handsim/server} (an absolute
-     * XDG_CACHE_HOME), else {@code ~/.cache/handsim/server}; null without a home.
+     * XDG_CACHE_HOME), else {@code ~/.cache/handsim/server}; null without a home. When a socket
+     * there would pass the kernel's 107 bytes (a deep home or checkout), a short folder
+     * {@code /tmp/handsim-HASH} instead, HASH of the user and the long folder: checked as any
+     * ({@link #unsafe}: the user's, mode 700, not a link), so another user's folder of that name
+     * means no server, never a shared one.
      */
     static Path folder() {
+        return effective(configuredFolder());
+    }
+
+    /** The folder used for the configured folder {@code f}: itself, or its short stand-in when a socket in it would be too long. */
+    static Path effective(Path f) {
+        if (f == null || socketFile(f, "0000000000000000").toString().getBytes(StandardCharsets.UTF_8).length <= MAX_SOCKET_PATH) return f;
+        // too long for a socket's name: a short private folder of its own, named by the long one
+        return Path.of("/tmp", "handsim-" + key(System.getProperty("user.name") + "\n" + f).substring(0, 12));
+    }
+
+    /** The folder as configured (property, XDG, home), whatever its length. */
+    static Path configuredFolder() {
         String p = System.getProperty("handsim.server.dir");
         if (p != null && !p.isEmpty()) return Path.of(p);
         String xdg = System.getenv("XDG_CACHE_HOME");
@@ -347,6 +491,7 @@ public final class Client {
         sb.append("server-jvm ").append(System.getProperty("handsim.server.jvm")).append('\n');
         sb.append(build());
         sb.append("umask ").append(umask()).append('\n');
+        sb.append(processContext());
         Map<String, String> env = new TreeMap<>();
         for (Map.Entry<String, String> e : System.getenv().entrySet()) {
             String k = e.getKey();
@@ -383,6 +528,36 @@ public final class Client {
         }
     }
 
+    /**
+     * What else of this process a command's effect depends on (Linux): its mount namespace (which
+     * files a path names), its resource limits (a file size limit makes a write fail), its nice
+     * level. A server started by a client inherits them, so it serves exactly the clients that
+     * have the same.
+     */
+    static String processContext() {
+        StringBuilder sb = new StringBuilder();
+        try {
+            sb.append("mount-namespace ").append(Files.readSymbolicLink(Path.of("/proc/self/ns/mnt"))).append('\n');
+        } catch (IOException | RuntimeException e) {
+            sb.append("mount-namespace ?\n");
+        }
+        try {
+            for (String l : Files.readAllLines(Path.of("/proc/self/limits"), StandardCharsets.ISO_8859_1)) {
+                if (l.startsWith("Max ")) sb.append("limit ").append(l.replaceAll("\\s+", " ").trim()).append('\n');
+            }
+        } catch (IOException | RuntimeException e) {
+            sb.append("limit ?\n");
+        }
+        try {
+            String stat = Files.readString(Path.of("/proc/self/stat"), StandardCharsets.ISO_8859_1);
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+            sb.append("nice ").append(f[16]).append('\n');   // field 19 of stat; the fields after the name start at 3
+        } catch (IOException | RuntimeException e) {
+            sb.append("nice ?\n");
+        }
+        return sb.toString();
+    }
+
     /** This process's umask (Linux: /proc/self/status), "?" if unknown. */
     static String umask() {
         try {
@@ -410,6 +585,8 @@ public final class Client {
     static Path lockFile(Path dir, String key) { return dir.resolve(key + ".lock"); }
     /** The log file of the server of {@code key}. */
     static Path logFile(Path dir, String key) { return dir.resolve(key + ".log"); }
+    /** The private folder the server of {@code key} warms up in. */
+    static Path warmFolder(Path dir, String key) { return dir.resolve(key + ".warm-up"); }
 
     /**
      * Starts a server for this client's identity in the background, for the next command: in a
@@ -425,11 +602,11 @@ public final class Client {
         for (String s : new String[] {"/usr/bin/setsid", "/bin/setsid"}) if (new File(s).canExecute()) setsid = s;
         if (setsid == null) return;
         String key = key(identity);
-        try (FileChannel ch = FileChannel.open(lockFile(dir, key), StandardOpenOption.CREATE, StandardOpenOption.WRITE)) {
-            FileLock lock = ch.tryLock();
+        try {
+            ServerFiles.Lock lock = ServerFiles.Lock.take(lockFile(dir, key));
             if (lock == null) return;   // a server has it
             Files.deleteIfExists(socketFile(dir, key));   // what a killed server left: nobody listens there
-            lock.release();
+            lock.releaseAndDelete();
             List<String> cmd = new ArrayList<>();
             cmd.add(setsid);
             cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
@@ -454,7 +631,7 @@ public final class Client {
 
     static String readString(DataInputStream in) throws IOException {
         int n = in.readInt();
-        if (n < 0 || n > (16 << 20)) throw new IOException("bad string length " + n);
+        if (n < 0 || n > MAX_FRAME) throw new IOException("bad string length " + n);
         byte[] b = new byte[n];
         in.readFully(b);
         return new String(b, StandardCharsets.UTF_8);

@@ -9,15 +9,12 @@ import java.io.OutputStream;
 import java.io.PrintStream;
 import java.net.StandardProtocolFamily;
 import java.net.UnixDomainSocketAddress;
-import java.nio.channels.FileChannel;
-import java.nio.channels.FileLock;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.Charset;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Instant;
@@ -61,6 +58,12 @@ public final class Server {
     static final long CANCEL_GRACE_MS = 10_000;
     /** How long the threads a command started have to end after it returns. */
     static final long THREADS_GRACE_MS = 5_000;
+    /** How often the server looks at its build, working directory and install (a change ends it within this, warming or not). */
+    static final long WATCH_MS = 250;
+    /** The largest output frame sent: a command's larger writes go as several. */
+    static final int FRAME_BYTES = 1 << 16;
+    /** Servers a user may have at once by default (property {@code handsim.server.max}, variable {@code HANDSIM_SERVER_MAX}). */
+    static final int MAX_SERVERS = 2;
     private static final int STACK_BYTES = 16 << 20;
 
     private final String identity;
@@ -69,7 +72,7 @@ public final class Server {
     private final PrintStream log, logOut;
     private final long idleMs;
     private final long started = System.currentTimeMillis();
-    private final String build, cwdKey;
+    private final String build, cwdKey, homeKey;
     private ServerSocketChannel listener;
     private Object socketKey;
     private boolean busy, stopping, warming, clientCame;
@@ -87,6 +90,13 @@ public final class Server {
         this.logOut = System.out;
         this.build = Client.build();
         this.cwdKey = Client.fileKey(Path.of("."));
+        this.homeKey = Client.fileKey(home());
+    }
+
+    /** The install this server serves ({@code handsim.home}). */
+    private static Path home() {
+        String h = System.getProperty("handsim.home");
+        return Path.of(h != null ? h : ".");
     }
 
     public static void main(String[] args) throws Exception {
@@ -109,19 +119,21 @@ public final class Server {
 
     /** Holds the lock, listens, serves until told or timed out; returns the exit code. */
     int serve() throws IOException {
-        try (FileChannel lockChannel = FileChannel.open(Client.lockFile(dir, key), StandardOpenOption.CREATE, StandardOpenOption.WRITE)) {
-            FileLock lock = lockChannel.tryLock();
-            if (lock == null) {
-                say("another server has " + key + "; exiting");
-                return 0;
-            }
+        ServerFiles.Lock lock = ServerFiles.Lock.take(Client.lockFile(dir, key));
+        if (lock == null) {
+            say("another server has " + key + "; exiting");
+            return 0;
+        }
+        try {
             Files.deleteIfExists(socket);   // a killed server's: the lock says nobody serves it
+            ServerFiles.removeStale(dir);
             listener = ServerSocketChannel.open(StandardProtocolFamily.UNIX);
             listener.bind(UnixDomainSocketAddress.of(socket));
             Files.setPosixFilePermissions(socket, PosixFilePermissions.fromString("rw-------"));
             socketKey = Files.readAttributes(socket, BasicFileAttributes.class, LinkOption.NOFOLLOW_LINKS).fileKey();
             say("serving " + System.getProperty("user.dir") + " for " + System.getProperty("handsim.home") + " on " + socket
                 + " (idle timeout " + idleMs / 1000 + " s)");
+            ServerAdmin.keepAtMost(dir, maxServers(), socket);
             Thread watch = new Thread(this::watch, "handsim-server-watch");
             watch.setDaemon(true);
             watch.start();
@@ -144,11 +156,45 @@ public final class Server {
                 }
             } finally {
                 removeSocket();
-                lock.release();
+            }
+            say("exiting after " + served + " commands");
+            return 0;
+        } finally {
+            endWarmUp();
+            ServerFiles.deleteQuietly(Client.warmFolder(dir, key));
+            ServerFiles.deleteQuietly(Client.logFile(dir, key));   // removed with its server (a killed server's: by the next, ServerFiles.removeStale)
+            lock.releaseAndDelete();
+            ServerFiles.removeIfEmptyShort(dir);
+        }
+    }
+
+    /** The most servers of this user at once: property, environment variable, or {@link #MAX_SERVERS}. */
+    static int maxServers() {
+        String v = System.getProperty("handsim.server.max", System.getenv("HANDSIM_SERVER_MAX"));
+        try {
+            return v == null ? MAX_SERVERS : Math.max(1, Integer.parseInt(v.trim()));
+        } catch (NumberFormatException e) {
+            return MAX_SERVERS;
+        }
+    }
+
+    /** Stops a warm-up under way and waits a little for it (its files are in this server's warm-up folder, removed next). */
+    private void endWarmUp() {
+        synchronized (this) {
+            clientCame = true;
+            if (!warming) return;
+            warmUpCancelledAt = System.nanoTime();
+            CommandContext.cancel();
+            long end = System.currentTimeMillis() + 300;
+            while (warming && System.currentTimeMillis() < end) {
+                try {
+                    wait(Math.max(1, end - System.currentTimeMillis()));
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
             }
         }
-        say("exiting after " + served + " commands");
-        return 0;
     }
 
     /** Removes the socket if it is still this server's (not one a later server made at the same path). */
@@ -161,11 +207,15 @@ public final class Server {
         }
     }
 
-    /** Stops listening (the accept loop ends and the server exits); a running command ends first if {@code whenIdle}. */
+    /**
+     * Stops listening: the accept loop ends and the server exits — at once when idle or warming
+     * up (the warm-up is cancelled), after its command when a client's command is running (its
+     * end calls this again).
+     */
     private synchronized void shutDown(String why) {
         if (!stopping) say("stopping: " + why);
         stopping = true;
-        if (busy) return;   // the command's end calls again
+        if (busy && !warming) return;   // a client's command: its end calls again
         removeSocket();     // no new client finds it from now on
         try {
             listener.close();
@@ -174,11 +224,16 @@ public final class Server {
         }
     }
 
-    /** Every second: the idle timeout, a changed build, a replaced working directory. */
+    /**
+     * Every {@link #WATCH_MS} ms: the idle timeout, a changed build, a replaced or vanished working
+     * directory or install. Once it has told the server to stop it keeps looking, so a server
+     * that finishes a client's command then stops.
+     */
     private void watch() {
+        String told = null;
         while (true) {
             try {
-                Thread.sleep(1000);
+                Thread.sleep(WATCH_MS);
             } catch (InterruptedException e) {
                 return;
             }
@@ -188,10 +243,9 @@ public final class Server {
             }
             if (why == null && !Client.build().equals(build)) why = "the build changed";
             if (why == null && !Client.fileKey(Path.of(System.getProperty("user.dir"))).equals(cwdKey)) why = "the working directory was replaced";
-            if (why != null) {
-                shutDown(why);
-                return;
-            }
+            if (why == null && !Client.fileKey(home()).equals(homeKey)) why = "the install " + home() + " was moved or removed";
+            if (why != null && told == null) told = why;
+            if (told != null) shutDown(told);
         }
     }
 
@@ -296,6 +350,8 @@ public final class Server {
             + "since " + Instant.ofEpochMilli(started) + "\n"
             + "commands " + served + "\n"
             + "state " + (warming ? "warming" : busy ? "busy" : stopping ? "stopping" : "idle") + "\n"
+            + "used " + lastActivity + "\n"
+            + "memory " + ServerFiles.residentBytes() + "\n"
             + "log " + Client.logFile(dir, key) + "\n"
             + identity;
     }
@@ -319,12 +375,14 @@ public final class Server {
 
         @Override
         public void write(byte[] b, int off, int len) {
-            if (len == 0) return;
             synchronized (out) {
                 try {
-                    out.writeByte(type);
-                    out.writeInt(len);
-                    out.write(b, off, len);
+                    for (int at = 0; at < len; at += FRAME_BYTES) {   // bounded frames: a client takes none longer
+                        int n = Math.min(FRAME_BYTES, len - at);
+                        out.writeByte(type);
+                        out.writeInt(n);
+                        out.write(b, off + at, n);
+                    }
                     out.flush();
                 } catch (IOException e) {
                     gone.run();   // the client is gone: as SIGKILL of a JVM, the command stops
@@ -383,7 +441,10 @@ public final class Server {
         synchronized (command) {
             wasCancelled = cancelled[0];
         }
-        if (code[0] == 1 && !wasCancelled) fit = false;   // an unexpected failure (out of memory, an internal error): start afresh
+        if (CommandContext.inDoubt() != null && !wasCancelled) {   // out of memory, an internal error: start afresh
+            say("the command left this JVM in doubt: " + CommandContext.inDoubt());
+            fit = false;
+        }
         try {
             synchronized (out) {
                 out.writeByte(Client.EXIT);
@@ -411,7 +472,9 @@ public final class Server {
     private void warmUp() {
         Path tmp = null;
         try {
-            tmp = Files.createTempDirectory("handsim-server-warm-up-");
+            tmp = Client.warmFolder(dir, key);   // beside the lock: removed with the server, or as stale by the next
+            ServerFiles.deleteQuietly(tmp);
+            Files.createDirectory(tmp, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
             Path mug = org.handsim.scenario.Home.dir().resolve("scenarios").resolve("mug-grasp.json");
             PrintStream nowhere = new PrintStream(OutputStream.nullOutputStream(), true, Charset.defaultCharset());
             for (int round = 0; round < WARM_UP_ROUNDS; round++) {
@@ -435,7 +498,7 @@ public final class Server {
                             notifyAll();
                         }
                     }
-                    if (!fit) {
+                    if (!fit && !stopping) {
                         shutDown("the warm-up left this JVM in doubt");
                         return;
                     }
@@ -445,12 +508,9 @@ public final class Server {
         } catch (IOException | RuntimeException e) {
             say("warm-up: " + e);
         } finally {
-            if (tmp != null) {
-                try {
-                    org.handsim.files.Folders.deleteTree(tmp);
-                } catch (IOException e) {
-                    // the system's temporary folder keeps it
-                }
+            if (tmp != null) ServerFiles.deleteQuietly(tmp);
+            synchronized (this) {
+                if (stopping) shutDown("as asked");   // a stop that came while warming up
             }
         }
     }

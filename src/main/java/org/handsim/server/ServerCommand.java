@@ -14,19 +14,25 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code handsim server status|stop}: the resident servers that run short commands (DESIGN.md, "Resident server"). */
 @Command(name = "server", mixinStandardHelpOptions = true,
-    description = {"Shows or stops the resident servers of this install.",
+    description = {"Shows or stops the resident servers of this install (--all: of every install).",
         "The ./handsim launcher hands short commands (run, sweep, plan, mesh, collide,",
         "fk, ik, id, swing, grasp, quality) to a server JVM of this install, working",
         "directory, build and environment when one is running and free, and otherwise",
-        "runs them itself and starts one for next time; a server exits after 10",
-        "minutes without a command or when the build changes. HANDSIM_SERVER=0 turns",
-        "this off. status: one line per server (pid, working directory, state, log);",
-        "stop: each stops after its running command."})
+        "runs them itself and starts one for next time. A command that names the",
+        "client's own descriptors (/dev/stdout, /proc/self/...) runs in the client. At",
+        "most 2 servers per user (HANDSIM_SERVER_MAX), the least recently used stopped",
+        "first; a server exits after 10 minutes without a command, within a second when",
+        "the build changes or its install goes. HANDSIM_SERVER=0 turns this off.",
+        "status: one line per server (pid, working directory, state, memory, log) and",
+        "why the last command was not served; stop: each stops after its running command."})
 public final class ServerCommand implements Callable<Integer> {
     @Spec CommandSpec spec;
 
     @Parameters(index = "0", paramLabel = "status|stop", description = "what to do")
     String action;
+
+    @picocli.CommandLine.Option(names = "--all", description = "every server of this user, of any install (a moved or deleted checkout's too)")
+    boolean all;
 
     @Override
     public Integer call() throws IOException {
@@ -43,20 +49,33 @@ public final class ServerCommand implements Callable<Integer> {
         List<ServerAdmin.Status> servers = ServerAdmin.servers();
         int n = 0;
         for (ServerAdmin.Status s : servers) {
-            if (!home.equals(s.field("home"))) continue;   // another install's
+            if (!all && !home.equals(s.field("home"))) continue;   // another install's
             n++;
             String cwd = s.field("cwd");
             int sp = cwd.lastIndexOf(' ');
             if (sp > 0) cwd = cwd.substring(0, sp);   // without the folder's inode
             if (action.equals("status")) {
-                out.println("pid " + s.field("pid") + ": " + s.field("state") + ", working directory " + cwd + ", " + s.field("commands")
-                    + " commands since " + s.field("since") + ", log " + s.field("log"));
+                out.println(SafeText.line("pid " + s.field("pid") + ": " + s.field("state") + ", working directory " + cwd + ", " + s.field("commands")
+                    + " commands since " + s.field("since") + ", " + megabytes(s.field("memory")) + " resident, log " + s.field("log")
+                    + (all ? ", install " + s.field("home") : "")));
             } else {
-                out.println((ServerAdmin.stop(s.socket()) ? "stopping" : "already gone:") + " pid " + s.field("pid") + " (working directory " + cwd + ")");
+                out.println(SafeText.line((ServerAdmin.stop(s.socket()) ? "stopping" : "already gone:") + " pid " + s.field("pid")
+                    + " (working directory " + cwd + ")"));
             }
         }
-        if (n == 0) out.println("no server running for " + home + (System.getenv("HANDSIM_SERVER") != null && System.getenv("HANDSIM_SERVER").equals("0")
-            ? " (HANDSIM_SERVER=0: none is started)" : ""));
+        if (n == 0) out.println(SafeText.line("no server running for " + (all ? "this user" : home) + (System.getenv("HANDSIM_SERVER") != null
+            && System.getenv("HANDSIM_SERVER").equals("0") ? " (HANDSIM_SERVER=0: none is started)" : "")));
+        String why = ServerAdmin.lastNotServed();
+        if (action.equals("status") && why != null) out.println(SafeText.line("last command not served: " + why));
         return 0;
+    }
+
+    /** A byte count as whole megabytes ("? MB" if unknown). */
+    private static String megabytes(String bytes) {
+        try {
+            return (Long.parseLong(bytes) >> 20) + " MB";
+        } catch (NumberFormatException e) {
+            return "? MB";
+        }
     }
 }

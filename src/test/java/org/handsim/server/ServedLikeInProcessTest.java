@@ -93,8 +93,8 @@ class ServedLikeInProcessTest {
         Thread serving = null;
         Server server = null;
         try {
-            Path srv = dir.resolve("srv");
-            System.setProperty("handsim.server.dir", srv.toString());
+            System.setProperty("handsim.server.dir", dir.resolve("srv").toString());
+            Path srv = Client.effective(dir.resolve("srv"));   // a short stand-in in a deep checkout
             System.setProperty("handsim.server.warmup", "0");
             assertEquals(null, Client.unsafe(srv, true));
             String identity = Client.identity();
@@ -142,11 +142,12 @@ class ServedLikeInProcessTest {
             }
             assertEquals(List.of(), differ);
         } finally {
-            if (server != null) ServerAdmin.stop(Client.socketFile(dir.resolve("srv"), Client.key(Client.identity())));
+            if (server != null) ServerAdmin.stop(Client.socketFile(Client.effective(dir.resolve("srv")), Client.key(Client.identity())));
             if (serving != null) serving.join(TimeUnit.SECONDS.toMillis(60));
             for (int i = 0; i < props.length; i++) {
                 if (before[i] == null) System.clearProperty(props[i]); else System.setProperty(props[i], before[i]);
             }
+            if (!Client.effective(dir.resolve("srv")).equals(dir.resolve("srv"))) ChildJvm.deleteTree(Client.effective(dir.resolve("srv")));
             ChildJvm.deleteTree(dir);
         }
     }
