@@ -55,7 +55,7 @@ import java.util.concurrent.TimeUnit;
 public final class Client {
     static final int MAGIC = 0x48534331;   // "HSC1"
     static final byte RUN = 'R', STATUS = 'S', STOP = 'Q';
-    static final byte ACCEPTED = 'A', BUSY = 'B', REFUSED = 'N';
+    static final byte ACCEPTED = 'A', BUSY = 'B', REFUSED = 'N', WAIT = 'W';
     static final byte OUT = 'O', ERR = 'E', EXIT = 'X', CANCEL = 'C';
 
     /** The commands a server runs: short ones of the local engine (not gui, not tradeoff, not Spark). */
@@ -153,6 +153,13 @@ public final class Client {
     static long answerMs() {
         return Long.getLong("handsim.server.answerMs", ANSWER_MS);
     }
+
+    /**
+     * How long a client waits, once its server has answered {@link #WAIT} (it is ending a warm-up
+     * run at the run's next cancellation point), for it to accept or refuse: a cold warm-up run on a
+     * loaded machine can take seconds to reach one, but not this long.
+     */
+    static final long WARM_UP_WAIT_MS = 20_000;
 
     /**
      * The longest frame or text either side takes (a server's output frames are at most
@@ -384,6 +391,7 @@ public final class Client {
                 for (String a : args) writeString(c.out, a);
                 c.out.flush();
                 answer = c.in.read();
+                if (answer == WAIT && dog.extend(WARM_UP_WAIT_MS)) answer = c.in.read();
             } catch (IOException e) {
                 ch.close();
                 if (dog.fired) return timedOut(c, dog);
