@@ -128,6 +128,7 @@ public final class Client {
         try (SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX)) {
             new DataInputStream(new java.io.BufferedInputStream(in(ch)));
             new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
+            new Watchdog(ch, answerMs()).disarm();
             ch.connect(UnixDomainSocketAddress.of(nowhere));   // nobody there: refused, as a stale socket is
         } catch (IOException | RuntimeException expected) {
             // what was to be loaded is loaded
