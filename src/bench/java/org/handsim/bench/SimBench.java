@@ -20,7 +20,7 @@ import org.handsim.model.Simulation;
  * The results of all are checked equal. The last columns are the collision back end's counters
  * (SceneGeometry.Counter).
  * A second table prices friction: the default setting with the scenes' μ = 0.5 (the
- * least-norm forces in the friction cones) against μ = 0 (the frictionless solve of before),
+ * mechanism's forces in the friction cones) against μ = 0 (the frictionless contacts),
  * measured alternately in five rounds, the best round's median of each: measured one after the
  * other, whichever runs first after the warm-up came out up to 2× slower.
  */
@@ -114,7 +114,7 @@ final class SimBench implements BenchMain.Suite {
 
     /** μ = 0.5 against μ = 0, alternating rounds, the best median of each. */
     private static String frictionCost() {
-        StringBuilder t = new StringBuilder("| scene | mu = 0.5 (least-norm forces in the cones) | mu = 0 (frictionless) | ratio |\n|---|---:|---:|---:|\n");
+        StringBuilder t = new StringBuilder("| scene | mu = 0.5 (forces in the cones) | mu = 0 (frictionless) | ratio |\n|---|---:|---:|---:|\n");
         for (Path file : new Path[] {Home.paperScenario(), Home.scenarios().resolve("mug-grasp.json")}) {
             Scenario s = Scenario.load(file);
             double best05 = Double.POSITIVE_INFINITY, best0 = Double.POSITIVE_INFINITY;

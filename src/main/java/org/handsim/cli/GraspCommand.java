@@ -61,6 +61,8 @@ public final class GraspCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENARIO", description = "scenario JSON file")
     Path scenarioFile;
 
+    @picocli.CommandLine.Mixin HandOptions hand = new HandOptions();
+
     @Option(names = "--at", paramLabel = "T", description = "evaluate at time T seconds (the first step at or after it; default: the end)")
     Double at;
 
@@ -81,6 +83,7 @@ public final class GraspCommand implements Callable<Integer> {
         java.io.PrintWriter err = spec.commandLine().getErr();
         Scenario scenario = RunCommand.loadScenario(scenarioFile != null ? scenarioFile : Home.paperScenario(), "handsim grasp", err);
         scenario = withFriction(scenario, friction, edges);
+        scenario = hand.apply(scenario);
         double interval = every != null ? every : 0.02;
         if (every != null && chart == null) throw CliError.usage("handsim: --every needs --chart");
         Args.outputPath("--chart", chart);

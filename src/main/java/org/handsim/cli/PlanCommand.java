@@ -84,6 +84,8 @@ public final class PlanCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "N", description = "worker threads (default: all cores)")
     Integer threads;
 
+    @picocli.CommandLine.Mixin HandOptions hand = new HandOptions();
+
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
@@ -98,7 +100,8 @@ public final class PlanCommand implements Callable<Integer> {
         PlanSpec planSpec;
         TrialRunner runner;
         try {
-            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES, unit);
+            hand.check();
+            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES, unit).withHandParameters(hand.parameters());
             runner = new TrialRunner(planSpec);      // loads the object once here: a bad file is one error, not N rows
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());

@@ -47,6 +47,8 @@ public final class RunCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENARIO", description = "scenario JSON file")
     Path scenarioFile;
 
+    @picocli.CommandLine.Mixin HandOptions hand = new HandOptions();
+
     @Option(names = "--out", paramLabel = "DIR", description = "output folder (default out/<scenario name>)")
     Path out;
 
@@ -87,6 +89,7 @@ public final class RunCommand implements Callable<Integer> {
             }
         }
         scenario = GraspCommand.withFriction(scenario, friction, edges);
+        scenario = hand.apply(scenario);
         Double toleranceM = tolerance != null ? parseTolerance(tolerance) : null;
         String toleranceLine = null;
         if (toleranceM != null) {

@@ -60,6 +60,8 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--edges", paramLabel = "M", description = "edges of the linearised friction cones (default 8)")
     Integer edges;
 
+    @picocli.CommandLine.Mixin HandOptions hand = new HandOptions();
+
     @Override
     public Integer call() throws Exception {
         Sweep sweep;
@@ -69,6 +71,7 @@ public final class SweepCommand implements Callable<Integer> {
             throw new CliError(CliError.LOAD, e.getMessage());
         }
         Args.frictionAndEdges(friction, edges);
+        hand.check();
         unitNotices(sweep, spec.commandLine().getErr());
         return SweepJob.run(this, sweep, sweep.threads());
     }
@@ -98,11 +101,11 @@ public final class SweepCommand implements Callable<Integer> {
         err.flush();
     }
 
-    static String runOne(Sweep.Run run, Double friction, Integer edges) {
+    static String runOne(Sweep.Run run, Double friction, Integer edges, org.handsim.hand.HandParameters handParameters) {
         String label = SafeText.csvCell(run.label());
         String scenarioName = "";
         try {
-            Scenario s = GraspCommand.withFriction(run.scenario().get(), friction, edges);
+            Scenario s = GraspCommand.withFriction(run.scenario().get(), friction, edges).withHandParameters(handParameters);
             scenarioName = s.name();
             HandModel m = Simulation.model(s, false);
             long t = System.nanoTime();

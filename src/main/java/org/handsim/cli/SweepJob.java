@@ -23,11 +23,13 @@ final class SweepJob implements IndexedJob<String> {
     private final String file;
     private final Double friction;
     private final Integer edges;
+    private final org.handsim.hand.HandParameters hand;
     private transient volatile Sweep sweep;
 
     /** @param sweep the loaded file; friction, edges the command's overrides (null: each scenario's) */
-    SweepJob(Path file, Sweep sweep, Double friction, Integer edges) {
+    SweepJob(Path file, Sweep sweep, Double friction, Integer edges, org.handsim.hand.HandParameters hand) {
         this.file = file.toAbsolutePath().normalize().toString();
+        this.hand = hand;
         this.sweep = sweep;
         this.friction = friction;
         this.edges = edges;
@@ -42,7 +44,7 @@ final class SweepJob implements IndexedJob<String> {
                 s = sweep;
             }
         }
-        return SweepCommand.runOne(s.runs().get(index), friction, edges);
+        return SweepCommand.runOne(s.runs().get(index), friction, edges, hand);
     }
 
     /** {@code handsim sweep} on the command's engine: the table streamed in the file's order, progress on standard error. */
@@ -61,7 +63,7 @@ final class SweepJob implements IndexedJob<String> {
                 w.write('\n');
                 eng.announce(err, "sweep " + sweep.name());
                 try {
-                    eng.engine().run(new SweepJob(c.file, sweep, c.friction, c.edges), runs, eng.settings("handsim sweep " + sweep.name()), row -> {
+                    eng.engine().run(new SweepJob(c.file, sweep, c.friction, c.edges, c.hand.parameters()), runs, eng.settings("handsim sweep " + sweep.name()), row -> {
                         try {
                             if (row.contains(",failed,")) failed[0]++;
                             w.write(row);

@@ -62,8 +62,11 @@ public final class FingerClutch {
      * Whether the inner joint is held by its self-locking worm rather than driven, so that the
      * torque the contacts put on it is the worm's reaction (DESIGN.md, "Which torques the contacts
      * carry"): after a breakaway (BROKEN, STALLED after it: the TorqueSwitch's gear free-wheels and
-     * the inner link "remains motionless", Barrett) and when the finger stalled before any
-     * breakaway ({@link #innerHeldByWorm}). In FREE and BLOCKED the drive sets its torque.
+     * the inner link "remains motionless", Barrett), and when the finger stalled before any
+     * breakaway — the outer link was blocked first, the stalled motor winds only the outer joint
+     * ({@link #transmittedTorque}: nothing for the inner one), and whatever torque the outer link's
+     * contacts put on k2 is a reaction of its worm gear, which a load on the link does not
+     * back-drive. In FREE and BLOCKED the drive sets its torque.
      */
     public boolean innerHeld() {
         return state == ClutchState.BROKEN || state == ClutchState.STALLED;
@@ -101,21 +104,6 @@ public final class FingerClutch {
      */
     public boolean stalledAtOuterLimit() {
         return state == ClutchState.STALLED && atLimit;
-    }
-
-    /**
-     * Whether the inner joint is held by its self-locking worm with no torque of the drive's own:
-     * STALLED before any breakaway. The outer link was blocked first, the motor stalls winding the
-     * outer joint ({@link #transmittedTorque}: nothing for the inner one), and the inner link,
-     * which touches nothing of its own, stays where the stalled drive train holds it, so whatever
-     * torque the contacts on the outer link put on joint k2 is a reaction of its worm gear (which a
-     * load on the link does not back-drive, DESIGN.md decision 6), like the spread joint's: it is
-     * not a torque the contact forces must match (DESIGN.md, "Which torques the contacts carry").
-     * In BLOCKED, BROKEN and STALLED after a breakaway the clutch puts a known torque on the held
-     * inner link (the wound springs, the jammed τ_break); in FREE the links move.
-     */
-    public boolean innerHeldByWorm() {
-        return state == ClutchState.STALLED && beforeStall != ClutchState.BROKEN;
     }
 
     /** The motor's actual position (counts): the set-point, except while STALLED when closing. */

@@ -8,9 +8,10 @@
  *       {@link org.handsim.contact.PointContact} per patch (centre of the patch's bounding box,
  *       weighted normal of the object's triangles, area estimate, triangles touched; DESIGN.md
  *       decision 3);</li>
- *   <li>{@link org.handsim.contact.ContactForces}: contact force magnitudes from joint torques
- *       (eq 11 made well-posed, DESIGN.md decision 2) and eq (9); with Coulomb friction the
- *       least-norm force vectors in the contacts' linearised cones (decision 5), using
+ *   <li>{@link org.handsim.contact.ContactForces}: contact forces from the finger's driven and
+ *       held joints (eq 11 made well-posed, DESIGN.md decision 2) and eq (9): the forces of the
+ *       mechanism's compliance — equal isotropic contact springs in the contacts' linearised
+ *       friction cones, loads locked in kept (decision 5) — using
  *       {@link org.handsim.contact.ConeProjection}, the projection onto such a cone.</li>
  * </ul>
  *

@@ -36,6 +36,7 @@ public final class HandDescription {
     private final int fingerCountsMax, spreadCountsMax;
     private final double[] theta2Limits, theta3Limits, spreadLimits;
     private final double tauBreak, kClutch;
+    private final double motorVMax, motorAMax;
     private final double fingerRatingN, fingerRatingKg;
 
     /** Reads and validates {@code root}; a {@link Json.JsonException} thrown here becomes a {@link HandDescriptionException} in {@link #parse}. */
@@ -97,6 +98,9 @@ public final class HandDescription {
             fingers[i] = new FingerDescription(k, dh, base, rTable == 1, spreadPerCount, inertias);
         }
 
+        JsonObject motors = root.object("motor_limits");
+        motorVMax = motors.positive("v_max_counts_s");
+        motorAMax = motors.positive("a_max_counts_s2");
         JsonObject clutch = root.object("clutch");
         tauBreak = clutch.positive("tau_break_Nm");
         kClutch = clutch.positive("k_clutch_Nm_per_rad");
@@ -104,6 +108,73 @@ public final class HandDescription {
         fingerRatingKg = hold.positive("finger_rating_kg");
         fingerRatingN = fingerRatingKg * hold.positive("g_m_s2");
     }
+
+    /** A copy with other values (the fields of {@link #with}). */
+    private HandDescription(HandDescription h, int fingerCountsMax, int spreadCountsMax, double[] theta2Limits, double[] theta3Limits,
+                            double[] spreadLimits, double tauBreak, double kClutch, double motorVMax, double motorAMax) {
+        name = h.name;
+        fingers = h.fingers;
+        a1 = h.a1; a2 = h.a2; a3 = h.a3;
+        palmAw = h.palmAw; palmDw = h.palmDw;
+        innerCountsPerDeg = h.innerCountsPerDeg; outerCountsPerDeg = h.outerCountsPerDeg;
+        this.fingerCountsMax = fingerCountsMax;
+        this.spreadCountsMax = spreadCountsMax;
+        this.theta2Limits = theta2Limits;
+        this.theta3Limits = theta3Limits;
+        this.spreadLimits = spreadLimits;
+        this.tauBreak = tauBreak;
+        this.kClutch = kClutch;
+        this.motorVMax = motorVMax;
+        this.motorAMax = motorAMax;
+        fingerRatingN = h.fingerRatingN;
+        fingerRatingKg = h.fingerRatingKg;
+    }
+
+    /**
+     * This hand with a scenario's overrides ({@link HandParameters}, valid: {@link HandParameters#problem}
+     * null), the derived values following (DESIGN.md decision 1, "Hand parameters"): k_clutch =
+     * τ_break / wind-up, the wind-up being the given one, else τ_break / the given stiffness, else
+     * this hand's (τ_break / k_clutch: 10°); the finger count range 0 to 125·θk2,max (eq 3), the
+     * spread's 0 to 3150/180·spread_max (eqs 1–2). This object when nothing is overridden.
+     */
+    public HandDescription with(HandParameters p) {
+        if (p == null || p.isEmpty()) return this;
+        String why = p.problem();
+        if (why != null) throw new IllegalArgumentException(why);
+        double tau = p.tauBreakNm() != null ? p.tauBreakNm() : tauBreak;
+        double windupRad = p.windupDeg() != null ? Math.toRadians(p.windupDeg())
+            : p.kClutchNmPerRad() != null ? tau / p.kClutchNmPerRad() : tauBreak / kClutch;
+        double k = p.kClutchNmPerRad() != null ? p.kClutchNmPerRad() : p.windupDeg() == null && p.tauBreakNm() == null ? kClutch : tau / windupRad;
+        double[] t2 = p.theta2LimitsDeg() != null ? new double[] {rad(p.theta2LimitsDeg()[0]), rad(p.theta2LimitsDeg()[1])} : theta2Limits;
+        double[] t3 = p.theta3LimitsDeg() != null ? new double[] {rad(p.theta3LimitsDeg()[0]), rad(p.theta3LimitsDeg()[1])} : theta3Limits;
+        double[] sp = p.spreadLimitsDeg() != null ? new double[] {rad(p.spreadLimitsDeg()[0]), rad(p.spreadLimitsDeg()[1])} : spreadLimits;
+        int fingerMax = p.theta2LimitsDeg() != null ? (int) Math.round(p.theta2LimitsDeg()[1] * innerCountsPerDeg) : fingerCountsMax;
+        int spreadMax = p.spreadLimitsDeg() != null ? (int) Math.round(p.spreadLimitsDeg()[1] / 180.0 * 3150) : spreadCountsMax;
+        return new HandDescription(this, fingerMax, spreadMax, t2, t3, sp, tau, k,
+            p.motorVMaxCountsS() != null ? p.motorVMaxCountsS() : motorVMax, p.motorAMaxCountsS2() != null ? p.motorAMaxCountsS2() : motorAMax);
+    }
+
+    /**
+     * The values this hand runs with, as {@code summary.json}'s {@code hand_parameters} records
+     * them: τ_break, k_clutch, the wind-up angle, the motor limits, the joint ranges (degrees).
+     */
+    public java.util.Map<String, Object> parametersJson() {
+        java.util.Map<String, Object> m = new java.util.LinkedHashMap<>();
+        m.put("tau_break_Nm", tauBreak);
+        m.put("k_clutch_Nm_per_rad", kClutch);
+        m.put("windup_deg", Math.toDegrees(tauBreak / kClutch));
+        m.put("motor_v_max_counts_s", motorVMax);
+        m.put("motor_a_max_counts_s2", motorAMax);
+        m.put("theta2_limits_deg", new double[] {Math.toDegrees(theta2Limits[0]), Math.toDegrees(theta2Limits[1])});
+        m.put("theta3_limits_deg", new double[] {Math.toDegrees(theta3Limits[0]), Math.toDegrees(theta3Limits[1])});
+        m.put("spread_limits_deg", new double[] {Math.toDegrees(spreadLimits[0]), Math.toDegrees(spreadLimits[1])});
+        return m;
+    }
+
+    /** The fastest a motor's set-point may move, counts/s (the hand file's {@code motor_limits}). */
+    public double motorVMax() { return motorVMax; }
+    /** The largest acceleration of a motor's set-point, counts/s². */
+    public double motorAMax() { return motorAMax; }
 
     /** The BarrettHand BH8-262 from the bundled resource (loaded once, shared). */
     public static HandDescription barrettHand() {

@@ -28,9 +28,10 @@ import org.handsim.process.StepClock;
  *       motor set-points q_Mk(t) → clutch state machine → joint angles, velocities and
  *       accelerations → forward kinematics → link meshes placed → collision with the object →
  *       patches → point contacts → joint torques (Lagrange–Euler plus the clutch spring) →
- *       contact forces (eq 11: the driven joints' torques carried, a held joint's reaction
- *       within its bounds, the residual where no forces do) → breakaway test (the torque
- *       through the clutch against τ_break) → next state.</li>
+ *       contact forces (eq 11: the driven joints' torques carried, held joints reacting, loads
+ *       locked in at a breakaway kept, the residual where no forces do) → every joint's carried
+ *       torque → breakaway test (the torque through the clutch against τ_break) → next state;
+ *       the spread moves first, and stops at a contact its motion pushes into.</li>
  *   <li><b>Fixed relations</b> — the private methods {@link #placeFinger}, {@link #collide},
  *       {@link #torquesAndForces} that the step calls.</li>
  * </ol>
@@ -63,8 +64,8 @@ public final class HandModel {
 
     // ------------------------------------------------------------------ parameters
     private final Scenario scenario;
-    private final HandDescription hand = HandDescription.barrettHand();
-    private final Transmission tr = new Transmission(hand);
+    private final HandDescription hand;   // the scenario's (hand.parameters applied)
+    private final Transmission tr;
     private final LinkContacts objectContacts;      // null: no object in the scene
     private final TorqueModel dynamics;
     private final FingerKinematics[] fk = new FingerKinematics[3];
@@ -122,7 +123,7 @@ public final class HandModel {
     // the torque each joint carries, τ_dyn + Jᵀf (N·m), per finger and joint; the largest reaction of a worm-held inner joint (NaN: none)
     private final double[][] carried = new double[3][3];
     private final double[] maxWormReaction = new double[3];
-    private final RatingWatch ratings = new RatingWatch(hand);
+    private final RatingWatch ratings;
     // loads locked into the contacts when an inner joint's worm locked (the breakaway), per finger and link:
     // the forces (3 per contact of the link then), and the joints the link had then (its contacts are a function of them)
     private final double[][][] lockedForces = new double[3][3][0];
@@ -179,6 +180,9 @@ public final class HandModel {
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
         this.scenario = scenario;
+        this.hand = scenario.hand();
+        this.tr = new Transmission(hand);
+        this.ratings = new RatingWatch(hand);
         this.objectContacts = objectContacts;
         this.dynamics = dynamics;
         this.dt = scenario.dt();

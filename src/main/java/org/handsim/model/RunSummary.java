@@ -30,6 +30,9 @@ public final class RunSummary {
         s.put("sim_time_s", m.time());
         s.put("steps", m.stepIndex());
         s.put("dt_s", m.scenario().dt());
+        java.util.Map<String, Object> hp = m.hand().parametersJson();
+        hp.put("friction", m.scenario().friction());
+        s.put("hand_parameters", hp);
         s.put("wall_time_s", wallSeconds);
         s.put("steps_per_s", wallSeconds > 0 ? m.stepIndex() / wallSeconds : null);
         s.put("realtime_factor", wallSeconds > 0 ? m.time() / wallSeconds : null);

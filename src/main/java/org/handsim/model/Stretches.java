@@ -1,6 +1,7 @@
 package org.handsim.model;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -12,7 +13,9 @@ import java.util.List;
  * {@code maxWarnings} stretches of one key the rest are counted in one line.
  *
  * <p>Used by {@link HandModel} for the contact forces that carry no joint torques (the residual)
- * and for forces above Barrett's rating. Not thread-safe; allocates only when a stretch ends.
+ * and for forces above Barrett's rating. Not thread-safe. Watching allocates nothing once the
+ * ended stretches' arrays have grown (they keep their capacity across {@link #clear()}): the words
+ * are made only when {@link #warnings()} is asked for.
  */
 final class Stretches {
     /** The words of the warnings. */
@@ -29,7 +32,10 @@ final class Stretches {
     private final Wording wording;
     private final double[] start, end, max, maxAt, moreMax;
     private final int[] count;
-    private final List<String> ended = new ArrayList<>();
+    // the stretches warned about one by one, in the order they ended: key, start, end, max, time of max
+    private int endedCount;
+    private int[] endedKey = new int[8];
+    private double[] ended = new double[4 * 8];
 
     /**
      * @param keys        how many keys (0 .. keys−1)
@@ -51,10 +57,10 @@ final class Stretches {
 
     /** Forgets every stretch. */
     void clear() {
-        java.util.Arrays.fill(start, Double.NaN);
-        java.util.Arrays.fill(count, 0);
-        java.util.Arrays.fill(moreMax, 0);
-        ended.clear();
+        Arrays.fill(start, Double.NaN);
+        Arrays.fill(count, 0);
+        Arrays.fill(moreMax, 0);
+        endedCount = 0;
     }
 
     /** The value of {@code key} at time t (s): starts, continues or ends its stretch. */
@@ -70,15 +76,32 @@ final class Stretches {
             }
             end[key] = t;
         } else if (!Double.isNaN(start[key])) {
-            if (++count[key] <= maxWarnings) ended.add(wording.stretch(key, start[key], end[key], max[key], maxAt[key]));
+            if (++count[key] <= maxWarnings) keep(key);
             else moreMax[key] = Math.max(moreMax[key], max[key]);
             start[key] = Double.NaN;
         }
     }
 
+    private void keep(int key) {
+        if (endedCount == endedKey.length) {
+            endedKey = Arrays.copyOf(endedKey, 2 * endedCount);
+            ended = Arrays.copyOf(ended, 8 * endedCount);
+        }
+        endedKey[endedCount] = key;
+        int o = 4 * endedCount++;
+        ended[o] = start[key];
+        ended[o + 1] = end[key];
+        ended[o + 2] = max[key];
+        ended[o + 3] = maxAt[key];
+    }
+
     /** The warnings so far: the stretches in the order they ended, then the counted ones and those still going on, by key. */
     List<String> warnings() {
-        List<String> w = new ArrayList<>(ended);
+        List<String> w = new ArrayList<>();
+        for (int s = 0; s < endedCount; s++) {
+            int o = 4 * s;
+            w.add(wording.stretch(endedKey[s], ended[o], ended[o + 1], ended[o + 2], ended[o + 3]));
+        }
         for (int key = 0; key < start.length; key++) {
             if (count[key] > maxWarnings) w.add(wording.more(key, count[key] - maxWarnings, moreMax[key]));
             if (!Double.isNaN(start[key])) w.add(wording.stretch(key, start[key], end[key], max[key], maxAt[key]));

@@ -109,6 +109,28 @@ public record PlanSpec(String name, String target, String templateJson, String t
         return new PlanSpec(name, target.toString(), text, abs.toString(), trials, seed, friction, edges);
     }
 
+    /**
+     * This spec with hand parameters ({@code handsim plan --tau-break}, ...) on top of the
+     * template's own {@code hand.parameters}; the trials and {@code best/*.json} run with them.
+     *
+     * @throws ScenarioException naming the field if a value is out of range
+     */
+    @SuppressWarnings("unchecked")
+    public PlanSpec withHandParameters(org.handsim.hand.HandParameters more) {
+        if (more == null || more.isEmpty()) return this;
+        Map<String, Object> t = template();
+        Map<String, Object> hand = t.get("hand") instanceof Map ? (Map<String, Object>) t.get("hand") : new LinkedHashMap<>();
+        Scenario s = Scenario.parse(Path.of(templateFile), templateJson);
+        org.handsim.hand.HandParameters merged = s.handParameters().and(more);
+        String why = merged.problem();
+        if (why != null) throw new ScenarioException(templateFile + ": hand.parameters." + why);
+        hand.put("parameters", merged.toJson());
+        t.put("hand", hand);
+        String text = JsonWriter.write(t);
+        Scenario.parse(Path.of(templateFile), text);
+        return new PlanSpec(name, target, text, templateFile, trials, seed, mu, edges);
+    }
+
     /** The template of a bare object file: at the origin, scale 1, the default closing profile and time step. */
     static Map<String, Object> objectTemplate(Path file, String name) {
         Map<String, Object> t = new LinkedHashMap<>();

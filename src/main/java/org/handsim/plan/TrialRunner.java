@@ -159,6 +159,9 @@ public final class TrialRunner {
         Map<String, Object> hand = new LinkedHashMap<>();
         hand.put("position_m", position);
         hand.put("rotation_rad", rotation);
+        if (t.get("hand") instanceof Map && ((Map<String, Object>) t.get("hand")).get("parameters") != null) {
+            hand.put("parameters", ((Map<String, Object>) t.get("hand")).get("parameters"));   // the hand's own parameters stay
+        }
         t.put("hand", hand);
         Map<String, Object> start = t.get("start_counts") instanceof Map
             ? new LinkedHashMap<>((Map<String, Object>) t.get("start_counts")) : new LinkedHashMap<>();

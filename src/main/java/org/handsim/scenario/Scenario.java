@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.handsim.grasp.FrictionCone;
 import org.handsim.hand.HandDescription;
+import org.handsim.hand.HandParameters;
 import org.handsim.hand.InputRanges;
 import org.handsim.math.RigidTransform;
 import org.handsim.trajectory.CartesianLine;
@@ -75,6 +76,8 @@ public final class Scenario implements Cloneable {
     private double defaultFriction = FrictionCone.DEFAULT_MU;   // μ when there is no object
     private boolean unitsBySize;   // object.units was auto: UnitRule judged the file by its size
     private JsonObject root;
+    private HandDescription hand;                       // the hand file's, with hand.parameters applied
+    private HandParameters handParameters = HandParameters.NONE;   // hand.parameters as written
 
     /**
      * The unit of an object file's coordinates (scenario field {@code object.units}: {@code mm},
@@ -180,6 +183,7 @@ public final class Scenario implements Cloneable {
 
     private Scenario(Path file, JsonObject r, HandDescription hand) {
         this.file = file;
+        this.hand = hand;
         this.root = r;
         r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "start_counts", "motors", "dt_s", "duration_s", "outputs");
         name = r.string("name");
@@ -188,7 +192,11 @@ public final class Scenario implements Cloneable {
         description = r.string("description", "");
         if (r.has("hand")) {
             JsonObject h = r.object("hand");
-            h.allowOnly("position_m", "rotation_rad");
+            h.allowOnly("position_m", "rotation_rad", "parameters");
+            if (h.has("parameters")) {
+                handParameters = HandParametersJson.parse(h.object("parameters"));
+                this.hand = hand.with(handParameters);
+            }
             handPose = pose(h);
             worldFromPalm = RigidTransform.fromPose(handPose[0], handPose[1], handPose[2], handPose[3], handPose[4], handPose[5]);
         } else {
@@ -226,6 +234,17 @@ public final class Scenario implements Cloneable {
         } else {
             object = null;
         }
+        if (handParameters.friction() != null) {
+            // the fingers' friction on the object: one value, given once
+            JsonObject o = r.has("object") ? r.object("object") : null;
+            if (o != null && o.has("friction") && o.number("friction") != handParameters.friction()) {
+                throw r.object("hand").object("parameters").error("friction", "differs from object.friction (" + o.number("friction")
+                    + "): give the contacts' friction once");
+            }
+            if (object != null) object = object.withFriction(handParameters.friction());
+            defaultFriction = handParameters.friction();
+        }
+        hand = this.hand;
         dt = r.positive("dt_s");
         if (dt > 0.1) throw r.error("dt_s", "must be at most 0.1 s, got " + dt);
 
@@ -297,6 +316,33 @@ public final class Scenario implements Cloneable {
         return q;
     }
 
+    /**
+     * Refuses a segment whose set-point moves faster or accelerates harder than the hand's motors
+     * ({@code hand.parameters.motor_v_max_counts_s}, {@code motor_a_max_counts_s2}): a trapezoid
+     * by its {@code v_max} and {@code a_max}, any other by its velocity and acceleration sampled
+     * at 1 000 points, the error naming the segment.
+     */
+    private static void motorLimits(JsonObject s, Trajectory t, HandDescription hand) {
+        if (t instanceof Trapezoid) {
+            if (s.number("v_max") > hand.motorVMax()) throw s.error("v_max", "is above the hand's motor speed limit "
+                + org.handsim.text.Decimal.format(hand.motorVMax()) + " counts/s (hand.parameters.motor_v_max_counts_s), got " + s.number("v_max"));
+            if (s.number("a_max") > hand.motorAMax()) throw s.error("a_max", "is above the hand's motor acceleration limit "
+                + org.handsim.text.Decimal.format(hand.motorAMax()) + " counts/s^2 (hand.parameters.motor_a_max_counts_s2), got " + s.number("a_max"));
+            return;
+        }
+        double[] o = new double[3];
+        double v = 0, a = 0;
+        for (int i = 0; i <= 1000; i++) {
+            t.sample(t.duration() * i / 1000, o);
+            v = Math.max(v, Math.abs(o[1]));
+            a = Math.max(a, Math.abs(o[2]));
+        }
+        if (v > hand.motorVMax() * (1 + 1e-9)) throw s.error("type", "moves at up to " + org.handsim.text.Decimal.format(v)
+            + " counts/s, above the hand's motor speed limit " + org.handsim.text.Decimal.format(hand.motorVMax()) + " counts/s (hand.parameters.motor_v_max_counts_s)");
+        if (a > hand.motorAMax() * (1 + 1e-9)) throw s.error("type", "accelerates at up to " + org.handsim.text.Decimal.format(a)
+            + " counts/s^2, above the hand's motor acceleration limit " + org.handsim.text.Decimal.format(hand.motorAMax()) + " counts/s^2 (hand.parameters.motor_a_max_counts_s2)");
+    }
+
     private Trajectory segments(JsonObject mot, String key, int m, HandDescription hand) {
         int n = mot.list(key).size();
         if (n == 0) return new Hold(startCounts[m], 0);
@@ -333,6 +379,7 @@ public final class Scenario implements Cloneable {
             } catch (IllegalArgumentException e) {
                 throw s.error("type", e.getMessage());
             }
+            motorLimits(s, t, hand);
             parts.add(t);
             at = t.end();
         }
@@ -414,6 +461,33 @@ public final class Scenario implements Cloneable {
         return object != null && unitsBySize ? UnitRule.notice(who, object.file(), object.units(), "object.units") : null;
     }
 
+    /** The hand this scenario runs: the hand file's, with {@code hand.parameters} applied. */
+    public HandDescription hand() { return hand; }
+
+    /** The scenario's {@code hand.parameters} as written ({@link HandParameters#NONE} when absent). */
+    public HandParameters handParameters() { return handParameters; }
+
+    /**
+     * This scenario with more hand parameters on top of its own (the command line's:
+     * {@code --tau-break}, {@code --clutch-windup}), read again from its JSON so every derived
+     * value and every check follows.
+     *
+     * @throws ScenarioException naming the field if a value is out of range
+     */
+    public Scenario withHandParameters(HandParameters more) {
+        if (more == null || more.isEmpty()) return this;
+        java.util.Map<String, Object> j = toJson(file.toAbsolutePath().getParent());
+        @SuppressWarnings("unchecked")
+        java.util.Map<String, Object> h = (java.util.Map<String, Object>) j.get("hand");
+        HandParameters merged = handParameters.and(more);
+        String why = merged.problem();
+        if (why != null) throw new ScenarioException(file + ": hand.parameters." + why);
+        h.put("parameters", merged.toJson());
+        Scenario s = parse(file, org.handsim.text.JsonWriter.write(j));
+        s.root = root;
+        return s;
+    }
+
     /** The parsed file (for fields other tools add). */
     public JsonObject json() { return root; }
 
@@ -433,6 +507,7 @@ public final class Scenario implements Cloneable {
         java.util.Map<String, Object> h = new java.util.LinkedHashMap<>();
         h.put("position_m", java.util.Arrays.copyOfRange(handPose, 0, 3));
         h.put("rotation_rad", java.util.Arrays.copyOfRange(handPose, 3, 6));
+        if (!handParameters.isEmpty()) h.put("parameters", handParameters.toJson());
         m.put("hand", h);
         m.put("gravity_m_s2", gravity.clone());
         if (object != null) {
@@ -613,7 +688,7 @@ public final class Scenario implements Cloneable {
      *                           line cannot be followed at this spread
      */
     public Scenario withSpreadHeld(double counts) {
-        HandDescription hand = HandDescription.barrettHand();
+        HandDescription hand = this.hand;
         if (!(counts >= 0 && counts <= hand.spreadCountsMax())) {
             throw new ScenarioException(file + ": field start_counts.M4: must be in [0, " + (long) hand.spreadCountsMax() + "] counts, got " + counts);
         }

@@ -24,6 +24,7 @@ public final class ChildJvm {
 
     /** The child's main: {@link HandSim#execute}, then its peak resident memory as the last line on standard error. */
     public static void main(String[] args) {
+        org.handsim.testing.PhaseWatch.installIfAsked();
         int code = HandSim.execute(args);
         System.err.println("VmHWM " + peakResidentBytes());
         System.exit(code);

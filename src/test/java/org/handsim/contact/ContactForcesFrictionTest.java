@@ -361,26 +361,8 @@ class ContactForcesFrictionTest {
                 }
             }
         }
-        for (int jm = k2held ? 2 : 1; jm < 3; jm++) {
-            boolean used = false;
-            for (int i = 0; i < n; i++) used |= jm < links[i] && !cf.undetermined(i);
-            if (!used) continue;
-            Expression row = model.addExpression("tau" + jm).level(tau[jm]);
-            for (int i = 0; i < n; i++) {
-                if (jm >= links[i]) continue;
-                for (int e = 0; e < M; e++) row.set(lam[i * M + e], torqueDir(frames, jm, p, i, cones, 3 * M * i + 3 * e));
-            }
-        }
-        Optimisation.Result r = model.minimise();
-        if (!r.getState().isOptimal()) return null;
-        double[] f = new double[3 * n];
-        for (int i = 0; i < n; i++) {
-            for (int e = 0; e < M; e++) {
-                double w = lam[i * M + e].getValue().doubleValue();
-                for (int c = 0; c < 3; c++) f[3 * i + c] += w * cones[3 * M * i + 3 * e + c];
-            }
-        }
-        return f;
+        torqueRows(model, lam, frames, tau, k2held ? 2 : 1, n, p, links, cones, cf);
+        return forcesOfTheOptimum(model, lam, n, cones);
     }
 
     /**
@@ -495,7 +477,17 @@ class ContactForcesFrictionTest {
                 }
             }
         }
-        for (int jm = 1; jm < 3; jm++) {
+        torqueRows(model, lam, frames, tau, 1, n, p, links, cones, cf);
+        return forcesOfTheOptimum(model, lam, n, cones);
+    }
+
+    /**
+     * The rows Σ t_m · f = τ_m of the joints from {@code first} to k3 that some contact the
+     * solver determined loads (each edge weight's torque on the joint).
+     */
+    private static void torqueRows(ExpressionsBasedModel model, Variable[] lam, double[] frames, double[] tau, int first, int n, double[] p,
+                                   int[] links, double[] cones, ContactForces cf) {
+        for (int jm = first; jm < 3; jm++) {
             boolean used = false;
             for (int i = 0; i < n; i++) used |= jm < links[i] && !cf.undetermined(i);
             if (!used) continue;
@@ -505,6 +497,10 @@ class ContactForcesFrictionTest {
                 for (int e = 0; e < M; e++) row.set(lam[i * M + e], torqueDir(frames, jm, p, i, cones, 3 * M * i + 3 * e));
             }
         }
+    }
+
+    /** The forces Σ λ_e e_e of the program's optimum, 3 per contact; null if ojAlgo does not report one. */
+    private static double[] forcesOfTheOptimum(ExpressionsBasedModel model, Variable[] lam, int n, double[] cones) {
         Optimisation.Result r = model.minimise();
         if (!r.getState().isOptimal()) return null;
         double[] f = new double[3 * n];

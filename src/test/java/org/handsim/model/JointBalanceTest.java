@@ -33,6 +33,7 @@ class JointBalanceTest {
     /** Counts of what was checked: joint-steps, of them held joints with a nonzero reaction. */
     static final class Counts {
         long joints, heldReactions, driven;
+        double worst, worstDriven, largestReaction;
     }
 
     static Counts check(Scenario s) {
@@ -60,20 +61,26 @@ class JointBalanceTest {
                     String at = s.name() + " t = " + m.time() + " finger " + k + " joint " + j + " " + st;
                     double carried = m.carriedTorque(k, j);
                     assertEquals(tauDyn[j - 1] + jtf, carried, TOL, at + ": τ − τ_dyn − Jᵀf");
+                    c.worst = Math.max(c.worst, Math.abs(carried - tauDyn[j - 1] - jtf));
                     c.joints++;
                     boolean driven = j == 2 ? !(st == ClutchState.BROKEN || st == ClutchState.STALLED)
                         : j == 3 && !(st == ClutchState.STALLED && q[2] >= theta3Max - 1e-12);
                     if (driven) {
                         assertEquals(m.torques(k)[j - 1], carried, TOL, at + ": the drive's torque is carried");
+                        c.worstDriven = Math.max(c.worstDriven, Math.abs(m.torques(k)[j - 1] - carried));
                         c.driven++;
                     } else if (j >= 2 && Math.abs(jtf) > 1e-6) {
                         c.heldReactions++;
+                        c.largestReaction = Math.max(c.largestReaction, Math.abs(carried));
                     }
                 }
             }
             if (!m.running()) break;
             m.step();
         } while (true);
+        System.out.printf("%s mu %s: %d joint-steps, largest |τ − τ_dyn − Jᵀf| %.3g N·m, driven joints %d (largest |τ_drive − τ| %.3g),"
+            + " held reactions %d (largest %.4g N·m)%n", s.name(), s.friction(), c.joints, c.worst, c.driven, c.worstDriven,
+            c.heldReactions, c.largestReaction);
         return c;
     }
 

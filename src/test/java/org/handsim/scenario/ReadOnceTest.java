@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
  * Every object file goes through the input gate once: a scenario whose object's units are judged
  * by size loads the file at scale 1 (the units) and at the scenario's scale (the model), and the
  * mesh cache keys its entries by the file's bytes, all from one read. Counted by the bytes this
- * process read ({@code rchar} of /proc/self/io), with a binary STL of 7.5 MB so that what else the
+ * process read ({@code rchar} of /proc/self/io), with a binary STL of 4 MB so that what else the
  * load reads (the scenario, the hand's models, each cache entry once on a hit) is told apart from
  * one more read of it (before: three reads per load, and a load per scale).
  */
@@ -53,7 +53,7 @@ class ReadOnceTest {
         String before = System.getProperty("handsim.cache");
         System.setProperty("handsim.cache", dir.resolve("cache").toString());
         try {
-            Path object = stl(dir, 150_000);
+            Path object = stl(dir, 80_000);
             long size = Files.size(object);
             Path scenario = Files.writeString(dir.resolve("fan.json"), Files.readString(TestPaths.root().resolve("scenarios/paper-breakaway.json"))
                 .replaceFirst("\"file\": *\"[^\"]*\"", "\"file\": \"" + object + "\"").replaceFirst("\"units\": *\"m\"", "\"units\": \"auto\""));

@@ -24,8 +24,9 @@ import org.junit.jupiter.api.Test;
  * each gives the bytes and exit code the same command gives run in-process, and in the second
  * round what it gave in the first — so a static that one command leaves behind for the next
  * shows here. Output files of {@code run} are compared too
- * (the summary without its timing fields). The slow {@code ServerTest} covers what needs
- * processes: the client as the launcher starts it, signals, a killed server.
+ * (the summary without its timing fields, masked as {@link ServedAsInProcessTest} masks them,
+ * which runs each README example through a client and a server JVM once). The slow
+ * {@code ServerTest} covers signals and a killed server.
  */
 class ServedLikeInProcessTest {
     record Ran(int code, byte[] out, byte[] err) {
@@ -57,20 +58,9 @@ class ServedLikeInProcessTest {
         }
     }
 
-    /** summary.json without the fields that time the run. */
+    /** summary.json without the fields that time the run ({@link ServedAsInProcessTest#masked}). */
     static String withoutTimes(Path summary) throws Exception {
-        return timesOut(Files.readString(summary));
-    }
-
-    /**
-     * Output with its timings replaced by T: JSON fields of wall time ({@code wall_time_s},
-     * {@code steps_per_s}, {@code realtime_factor}, {@code setup_time_s}, {@code phase_times},
-     * {@code load_ms}) and the wall-time part of
-     * {@code run}'s first line.
-     */
-    static String timesOut(String text) {
-        return text.replaceAll("\"(wall_time_s|steps_per_s|realtime_factor|load_ms|setup_time_s|load_s|run_s|trace_s|charts_s)\": ?[^,}\n]*", "\"$1\":T")
-            .replaceAll("[0-9.]+ s wall \\([0-9]+ steps/s, [0-9.]+x real time\\)", "T s wall (T steps/s, Tx real time)");
+        return ServedAsInProcessTest.masked(Files.readString(summary));
     }
 
     @Test
@@ -127,8 +117,8 @@ class ServedLikeInProcessTest {
                     }
                     Ran want = inProcess(a), got = served(identity, b);
                     String what = "round " + round + ": " + String.join(" ", cmd);
-                    String wantText = timesOut(want.text().replace(dir.resolve("in-process").toString(), "OUT"));
-                    String gotText = timesOut(got.text().replace(dir.resolve("served").toString(), "OUT"));
+                    String wantText = ServedAsInProcessTest.masked(want.text().replace(dir.resolve("in-process").toString(), "OUT"));
+                    String gotText = ServedAsInProcessTest.masked(got.text().replace(dir.resolve("served").toString(), "OUT"));
                     if (!wantText.equals(gotText)) differ.add(what + "\nin-process " + wantText + "\nserved " + gotText);
                     if (round == 1) first.add(gotText);
                     else if (!first.get(n).equals(gotText)) differ.add(what + ": not what round 1 gave\n" + first.get(n) + "\n" + gotText);

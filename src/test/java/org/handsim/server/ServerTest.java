@@ -82,7 +82,7 @@ class ServerTest {
         /** Starts a server here and waits until it listens; returns its process. */
         Process server() throws Exception {
             Path log = Files.createTempFile(dir, "server", ".log");
-            Process p = new ProcessBuilder(command(Server.class.getName(), List.of())).directory(work.toFile())
+            Process p = new ProcessBuilder(command(WatchedServer.class.getName(), List.of())).directory(work.toFile())
                 .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null"))).redirectErrorStream(true)
                 .redirectOutput(log.toFile()).start();
             started.add(p);
