@@ -537,7 +537,7 @@ class ServerTest {
     }
 
     /**
-     * A servers' folder so deep that a socket in it passes the kernel's 107 bytes (the battery's
+     * A servers' folder so deep that a socket in it passes the JDK's 106 bytes (the battery's
      * deep checkout, a long cache path): the servers use a short private folder named after it,
      * mode 700, and serve as usual; it goes when they do.
      */
