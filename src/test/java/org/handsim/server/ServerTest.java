@@ -520,6 +520,42 @@ class ServerTest {
         }
     }
 
+    /**
+     * {@code handsim server stop} stops this install's servers; {@code --all} reaches every
+     * server of the user in the folder, another install's too (a moved checkout's), and
+     * {@code status} shows each one's memory and why the last command was not served.
+     */
+    @Test
+    void stopAllReachesTheServersOfEveryInstall() throws Exception {
+        Path home = Files.createTempDirectory("handsim-other-install");
+        for (String d : List.of("vrml", "scenarios")) Files.createSymbolicLink(home.resolve(d), TestPaths.root().resolve(d));
+        try (Setup s = new Setup("all", "-Dhandsim.server.warmup=0")) {
+            Process ours = s.server();
+            List<String> otherJvm = new ArrayList<>(s.jvmCommand(WatchedServer.class.getName()));
+            otherJvm.replaceAll(o -> o.startsWith("-Dhandsim.home=") ? "-Dhandsim.home=" + home : o.startsWith("-Dhandsim.server.jvm=")
+                ? o.replace("-Dhandsim.home=" + TestPaths.root(), "-Dhandsim.home=" + home) : o);
+            Process other = new ProcessBuilder(otherJvm).directory(s.work.toFile()).redirectErrorStream(true)
+                .redirectOutput(s.dir.resolve("other.log").toFile()).start();
+            s.started.add(other);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(90);
+            while (System.nanoTime() < end && ServerAdmin.servers(s.srv).size() < 2) Thread.sleep(50);
+            assertEquals(2, ServerAdmin.servers(s.srv).size(), Files.readString(s.dir.resolve("other.log")));
+            Ran status = s.run(true, "server", "status", "--all");
+            assertEquals(0, status.code(), status.err());
+            assertEquals(2, status.out().split("\n").length, status.out());
+            assertTrue(status.out().matches("(?s)pid [0-9]+: idle, working directory .*, [0-9]+ MB resident, log .*"), status.out());
+            Ran stop = s.run(true, "server", "stop");
+            assertEquals("stopping pid " + ours.pid() + " (working directory " + s.work + ")", stop.out().trim());
+            assertTrue(ours.waitFor(30, TimeUnit.SECONDS));
+            assertTrue(other.isAlive(), "another install's server stays");
+            stop = s.run(true, "server", "stop", "--all");
+            assertEquals("stopping pid " + other.pid() + " (working directory " + s.work + ")", stop.out().trim());
+            assertTrue(other.waitFor(30, TimeUnit.SECONDS), "--all reaches it");
+        } finally {
+            ChildJvm.deleteTree(home);
+        }
+    }
+
     /** An exit 1 the command reports (a sweep whose run fails) leaves nothing in doubt: the same server serves the next. */
     @Test
     void aFailingCommandDoesNotEndTheServer() throws Exception {
