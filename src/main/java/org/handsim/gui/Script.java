@@ -69,6 +69,9 @@ import org.handsim.text.SafeText;
  * log path                  print what the Path Planning panel shows, one line per motor, then
  *                           the duration: {@code path: M3: start 0; trapezoid to=17500
  *                           v_max=4244.294 a_max=21221.471; hold duration_s=0.3; ...}
+ * log objects               print what the Objects panel shows: the file, the units used
+ *                           ({@code objects: units used: mm (judged by the file's size)}) and
+ *                           the placement's note
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
  * While a script runs, the model moves only during {@code play} and {@code wait}: a button that
@@ -123,11 +126,12 @@ public final class Script {
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
-        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics|path%n"
+        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics|path|objects%n"
         + "                       print what a panel shows, once it shows the model's%n"
         + "                       state (kinematics, per finger: 'M3 9479 counts,%n"
         + "                       θ31 0.00°, θ32 47.72°, θ33 30.06°'; path: per motor%n"
-        + "                       its start and segments, as the scenario file writes them)%n"
+        + "                       its start and segments, as the scenario file writes them;%n"
+        + "                       objects: the file, the units used, the placement)%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
         + "The model moves only while play or wait runs (a button that starts a run, e.g.%n"
         + "press path.run, leaves it at t = 0 until then): one script, one state.%n"
@@ -327,8 +331,8 @@ public final class Script {
                 return List.of(p[0], p[1]);
             }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics", "path").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics or path, got '" + q(rest) + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics", "path", "objects").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics, path or objects, got '" + q(rest) + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

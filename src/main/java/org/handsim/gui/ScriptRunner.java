@@ -559,6 +559,9 @@ public final class ScriptRunner {
             case "path":
                 for (String l : edt(() -> window.pathPlanning().lines())) say("path: " + l);
                 break;
+            case "objects":
+                for (String l : edt(() -> window.objectsPanel().lines())) say("objects: " + l);
+                break;
             case "contacts": {
                 List<String> lines = edt(this::contactLines);
                 say("contacts: " + lines.size());
