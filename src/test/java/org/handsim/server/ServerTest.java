@@ -610,6 +610,7 @@ class ServerTest {
             Path socket = ServerAdmin.servers(s.srv).get(0).socket();
             ServerAdmin.stop(socket);
             assertTrue(server.waitFor(30, TimeUnit.SECONDS));
+            assertEquals(null, Client.unsafe(socket.getParent(), true), "the folder again (a short stand-in goes with its last server)");
             try (java.nio.channels.ServerSocketChannel fake = java.nio.channels.ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
                 fake.bind(UnixDomainSocketAddress.of(socket));
                 Thread t = new Thread(() -> {
