@@ -49,6 +49,10 @@ public final class Home {
     private static volatile Path unpacked;
     private static volatile String unpackFailure;
 
+    /**
+     * The folder that holds {@code vrml/} and {@code scenarios/} (the rule above); the current
+     * folder when none does (then {@link #handModels} says what is missing).
+     */
     public static Path dir() {
         for (String prop : new String[] {"handsim.home", "handsim.root"}) {
             String p = System.getProperty(prop);
@@ -285,10 +289,27 @@ public final class Home {
     }
 
     /** {@code vrml/hand/} */
-    public static Path handModels() { return dir().resolve("vrml").resolve("hand"); }
+    public static Path handModels() {
+        Path d = dir().resolve("vrml").resolve("hand");
+        if (!Files.isDirectory(d)) throw new ScenarioException(NOT_FOUND);
+        return d;
+    }
+
+    /**
+     * Why the hand's models are nowhere: what was looked for, and the property to set. Said
+     * instead of "vrml/hand/palm.wrl: no such file" when a program that embeds HandSim runs with
+     * neither a HandSim jar that holds the models nor a checkout around it.
+     */
+    public static final String NOT_FOUND = "HandSim's models and scenarios (vrml/hand/*.wrl, scenarios/) were not found: not under the system property"
+        + " handsim.home, not in the current folder or a folder above it, and not in a HandSim jar on the class path"
+        + " (handsim.jar and the runnable jar carry them); set -Dhandsim.home=DIR to a HandSim checkout or install";
 
     /** {@code scenarios/} */
-    public static Path scenarios() { return dir().resolve("scenarios"); }
+    public static Path scenarios() {
+        Path d = dir().resolve("scenarios");
+        if (!Files.isDirectory(d)) throw new ScenarioException(NOT_FOUND);
+        return d;
+    }
 
     /** The paper's experiment, the default scenario. */
     public static Path paperScenario() { return scenarios().resolve("paper-breakaway.json"); }
