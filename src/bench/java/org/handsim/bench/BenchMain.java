@@ -27,6 +27,8 @@ public final class BenchMain {
         SUITES.put("grasp", new GraspBench());
         SUITES.put("plan", new PlanBench());
         SUITES.put("live-grasp", new LiveGraspBench());
+        SUITES.put("body-solver", new BodyBench(false));
+        SUITES.put("body-proximity", new BodyBench(true));
     }
 
     public static void main(String[] args) throws Exception {

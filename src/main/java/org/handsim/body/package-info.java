@@ -7,7 +7,16 @@
  *   <li>{@link org.handsim.body.FreeBody}: pose (centre of mass and quaternion) and motion
  *       (velocity, angular momentum), advanced by a kick–drift–kick velocity-level step whose
  *       free rotation is a fourth-order Lie–Poisson integrator (energy and angular momentum
- *       kept to rounding), into which the contact solve fits.</li>
+ *       kept to rounding), into which the contact solve fits;</li>
+ *   <li>{@link org.handsim.body.ContactProblem}, {@link org.handsim.body.ContactSolver}: the
+ *       step's convex problem (no penetration with the gap stabilised, velocities in Coulomb's
+ *       exact cones) and its Newton solver; {@link org.handsim.body.PolyhedralContactSolver}, the
+ *       same problem on pyramids through ojAlgo, the reference it is measured against;</li>
+ *   <li>{@link org.handsim.body.BodyContacts}, {@link org.handsim.body.BodyStepper}: one step's
+ *       contact points, and the step with them (finger links that press as followers);</li>
+ *   <li>{@link org.handsim.body.ProximityContacts}, {@link org.handsim.body.MeshTopology}: contact
+ *       points from proximity within a margin, at most 9 spanning each patch;</li>
+ *   <li>{@link org.handsim.body.BodyScene}: the object among static supports.</li>
  * </ul>
  *
  * <p>Units SI, frames stated per method (world unless said). Never touches files, the console
