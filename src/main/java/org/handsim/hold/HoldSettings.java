@@ -78,7 +78,7 @@ public record HoldSettings(double forceN, double durationS, double dtS, boolean 
     private static void positive(String option, double v, boolean nanAllowed) {
         if (nanAllowed && Double.isNaN(v)) return;
         if (!(v > 0) || !Double.isFinite(v)) {
-            throw new IllegalArgumentException(option + " must be a finite number > 0, got " + org.handsim.text.Decimal.format(v));
+            throw new IllegalArgumentException(option + " must be a finite number > 0, got " + (Double.isFinite(v) ? org.handsim.text.Decimal.format(v) : String.valueOf(v)));
         }
     }
 }

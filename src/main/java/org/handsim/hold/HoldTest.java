@@ -140,7 +140,8 @@ public final class HoldTest {
         settle = new Run(zero, 0, Double.NaN, settings.maxDisplacementM(), Math.toRadians(settings.maxRotationDeg()), true);
         settle.settling = true;
         settle.go(Math.round(SETTLE_MAX_S / settings.dtS()));
-        dropped = !settle.passed() || settle.free;
+        // dropped: it crossed a threshold, or it left the hand moving (at rest and touching nothing, nothing moved it)
+        dropped = !settle.passed() || settle.free && !settle.slow;
         scene.body().worldFromMesh(settledPose, 0);
         settledTurns = scene.jointTurns();
     }
@@ -238,7 +239,7 @@ public final class HoldTest {
         int ns;
         double maxD, maxR, disp, rot, ratio, crossedAt = Double.NaN, lostAt = Double.NaN, settledAt = Double.NaN;
         double boundD, boundR, forceAtCrossing = Double.NaN, forceAtRest, simulated;
-        boolean free, settling;
+        boolean free, settling, slow;
         final double[] x0 = new double[3], q0 = new double[4];
 
         Run(double[] u, double f, double rate, double dispThr, double rotThr, boolean stopAtCrossing) {
@@ -313,6 +314,8 @@ public final class HoldTest {
                     for (int k = 0; k < 3; k++) accel[k] = force[k] / m + g[k];
                     free = Double.isNaN(f) ? false : flyingAway(body);
                 }
+                this.slow = slow;
+                if (settling && free) break;   // touching nothing and leaving (or at rest): no contact comes back
                 if (!free && !Double.isNaN(f)) {
                     // settled: slow for a whole window with the same contacts, and what is left cannot cross
                     still = slow && contacts == lastContacts ? still + 1 : 0;

@@ -55,6 +55,14 @@ public final class LockedGrasp {
         g.meshes[PALM] = SceneMeshes.mesh(SceneMeshes.palmFile(), SceneMeshes.LINK_DIVISIONS, 1.0);
         g.poses[PALM] = model.scenario().worldFromPalm().toArray();
         GraspAssessment.Input in = model.graspInput();
+        // the squeeze the grasp keeps once freed: the balanced forces nearest the closing's (BalancedPreload)
+        double[] com = RigidTransform.of(g.worldFromObject).apply(mass.centreOfMass());
+        double[] kept = BalancedPreload.of(in.contacts(), com, g.friction);
+        java.util.List<GraspAssessment.Contact> squeeze = new java.util.ArrayList<>();
+        for (int i = 0; i < in.contacts().size(); i++) {
+            GraspAssessment.Contact c = in.contacts().get(i);
+            squeeze.add(new GraspAssessment.Contact(c.finger(), c.link(), c.point(), c.normal(), java.util.Arrays.copyOfRange(kept, 3 * i, 3 * i + 3)));
+        }
         HandDynamics dyn = HandDynamics.barrettHand();
         for (int k = 1; k <= 3; k++) {
             double[] frames = model.framesWorld(k);
@@ -73,7 +81,7 @@ public final class LockedGrasp {
                 double[] z = {frames[o + 2], frames[o + 6], frames[o + 10]}, org = {frames[o + 3], frames[o + 7], frames[o + 11]};
                 int col = n - 4 + j;   // k2, k3: the last two active joints
                 g.joints[k - 1][j - 2] = new double[] {z[0], z[1], z[2], org[0], org[1], org[2], d[col * n + col],
-                    Math.max(0, pressing(in.contacts(), k, j, z, org)), arm(in.contacts(), k, j, z, org)};
+                    Math.max(0, pressing(squeeze, k, j, z, org)), arm(in.contacts(), k, j, z, org)};
             }
         }
         return g;

@@ -38,7 +38,7 @@ public final class ObjectMass {
         }
         if (!Double.isNaN(massKg)) {
             if (!(massKg > 0) || !Double.isFinite(massKg)) {
-                throw new IllegalArgumentException("mass_kg must be a finite number above 0, got " + org.handsim.text.Decimal.format(massKg));
+                throw new IllegalArgumentException("mass_kg must be a finite number above 0, got " + massKg);
             }
             try {
                 return MassProperties.ofSolidWithMass(mesh, massKg);
