@@ -261,8 +261,9 @@ public final class ObjectsPanel {
         }
     }
 
-    /** Shows a placement in the fields (called when the working scenario changes). */
-    void showPlacement(Scenario.ObjectPlacement p) {
+    /** Shows the scenario's object in the fields (called when the working scenario changes). */
+    void showPlacement(Scenario s) {
+        Scenario.ObjectPlacement p = s.object();
         if (p == null) return;
         double[] o = p.position();
         double[] r = p.rotation();

@@ -84,4 +84,16 @@ class WindowReadoutsTest {
         }
         assertTrue(negative > 0, "the run shows negative torques, whose minus sign must fit too");
     }
+
+    /**
+     * The Events box's header says the run's length as handsim run does (8.947 s for the paper,
+     * not the trajectories' 8.9464 written to three places as 8.946); after Pause the status bar's
+     * message says paused.
+     */
+    @Test
+    void eventsHeaderUnitsAndPauseSayWhatTheScenarioAndTheRunSay() throws Exception {
+        Scenario paper = Scenario.load(TestPaths.root().resolve("scenarios/paper-breakaway.json"));
+        assertEquals("Run of paper-breakaway with cube.wrl, 8.947 s:" + String.format("%n"), DynamicsPanel.eventsHeader(state(paper, null)));
+        assertTrue(HandSimWindow.PAUSED.startsWith("paused"), HandSimWindow.PAUSED);
+    }
 }
