@@ -87,6 +87,10 @@ public final class BodyScene {
      * releases; infinity: τ throughout.
      */
     public int addJoint(double[] axis, double[] origin, double inertia, double torqueNm, boolean wormHeld, double releaseRad) {
+        if (!(releaseRad > 0) || !(torqueNm >= 0) || !Double.isFinite(torqueNm)) {
+            throw new IllegalArgumentException("a joint's torque must be finite and >= 0 and its release angle > 0, got " + torqueNm
+                + " N*m over " + releaseRad + " rad");
+        }
         joints.add(new double[] {axis[0], axis[1], axis[2], origin[0], origin[1], origin[2], inertia, torqueNm, wormHeld ? 1 : 0,
             releaseRad, 0});
         return joints.size() - 1;

@@ -40,22 +40,26 @@ public final class BalancedPreload {
         double[] f0 = new double[3 * n];
         for (int i = 0; i < n; i++) System.arraycopy(contacts.get(i).forceN(), 0, f0, 3 * i, 3);
         if (n == 0) return f0;
-        double[] cones = new double[3 * EDGES * n];
+        // frictionless: the cone is its normal ray, one edge (eight equal edges leave ojAlgo's
+        // solver at zero, an optimum it reports although any balanced squeeze is nearer)
+        int edges = mu > 0 ? EDGES : 1;
+        double[] cones = new double[3 * edges * n];
         for (int i = 0; i < n; i++) {
             double[] d = contacts.get(i).normal();
-            FrictionCone.edges(d[0], d[1], d[2], mu, EDGES, cones, 3 * EDGES * i);
+            if (edges == 1) System.arraycopy(d, 0, cones, 3 * i, 3);
+            else FrictionCone.edges(d[0], d[1], d[2], mu, edges, cones, 3 * edges * i);
         }
         ExpressionsBasedModel model = new ExpressionsBasedModel();
-        Variable[] lam = new Variable[n * EDGES];
-        for (int v = 0; v < n * EDGES; v++) lam[v] = model.addVariable("l" + v).lower(0);
+        Variable[] lam = new Variable[n * edges];
+        for (int v = 0; v < n * edges; v++) lam[v] = model.addVariable("l" + v).lower(0);
         Expression obj = model.addExpression("objective").weight(1);
         for (int i = 0; i < n; i++) {
-            for (int a = 0; a < EDGES; a++) {
-                int ea = 3 * EDGES * i + 3 * a;
-                obj.set(lam[i * EDGES + a], -2 * (f0[3 * i] * cones[ea] + f0[3 * i + 1] * cones[ea + 1] + f0[3 * i + 2] * cones[ea + 2]));
-                for (int b = 0; b < EDGES; b++) {
-                    int eb = 3 * EDGES * i + 3 * b;
-                    obj.set(lam[i * EDGES + a], lam[i * EDGES + b], cones[ea] * cones[eb] + cones[ea + 1] * cones[eb + 1] + cones[ea + 2] * cones[eb + 2]);
+            for (int a = 0; a < edges; a++) {
+                int ea = 3 * edges * i + 3 * a;
+                obj.set(lam[i * edges + a], -2 * (f0[3 * i] * cones[ea] + f0[3 * i + 1] * cones[ea + 1] + f0[3 * i + 2] * cones[ea + 2]));
+                for (int b = 0; b < edges; b++) {
+                    int eb = 3 * edges * i + 3 * b;
+                    obj.set(lam[i * edges + a], lam[i * edges + b], cones[ea] * cones[eb] + cones[ea + 1] * cones[eb + 1] + cones[ea + 2] * cones[eb + 2]);
                 }
             }
         }
@@ -65,27 +69,41 @@ public final class BalancedPreload {
             double[] p = c.point();
             size = Math.max(size, Math.sqrt(sq(p[0] - com[0]) + sq(p[1] - com[1]) + sq(p[2] - com[2])));
         }
+        // coefficients below rounding (1e-12 of the largest; a frictionless wrap's rows along the
+        // cylinder's axis are 1e-16s) are zeros, and a row of zeros no constraint: ojAlgo's solver
+        // stops at zero on such near-empty equality rows
+        double[] coef = new double[n * edges];
+        double biggest = 0;
+        double[][] rows = new double[6][];
         for (int row = 0; row < 6; row++) {
-            Expression e = model.addExpression("balance" + row).level(0);
             for (int i = 0; i < n; i++) {
                 double[] p = contacts.get(i).point();
                 double rx = p[0] - com[0], ry = p[1] - com[1], rz = p[2] - com[2];
-                for (int k = 0; k < EDGES; k++) {
-                    int o = 3 * EDGES * i + 3 * k;
+                for (int k = 0; k < edges; k++) {
+                    int o = 3 * edges * i + 3 * k;
                     double ex = cones[o], ey = cones[o + 1], ez = cones[o + 2];
-                    double coef = row == 0 ? ex : row == 1 ? ey : row == 2 ? ez
+                    coef[i * edges + k] = row == 0 ? ex : row == 1 ? ey : row == 2 ? ez
                         : (row == 3 ? ry * ez - rz * ey : row == 4 ? rz * ex - rx * ez : rx * ey - ry * ex) / size;
-                    if (coef != 0) e.set(lam[i * EDGES + k], coef);
+                    biggest = Math.max(biggest, Math.abs(coef[i * edges + k]));
                 }
+            }
+            rows[row] = coef.clone();
+        }
+        for (int row = 0; row < 6; row++) {
+            Expression e = null;
+            for (int v = 0; v < n * edges; v++) {
+                if (Math.abs(rows[row][v]) <= 1e-12 * biggest) continue;
+                if (e == null) e = model.addExpression("balance" + row).level(0);
+                e.set(lam[v], rows[row][v]);
             }
         }
         Optimisation.Result r = model.minimise();
         if (!r.getState().isOptimal()) return f0;
         double[] f = new double[3 * n];
         for (int i = 0; i < n; i++) {
-            for (int k = 0; k < EDGES; k++) {
-                double w = Math.max(0, lam[i * EDGES + k].getValue().doubleValue());
-                for (int c = 0; c < 3; c++) f[3 * i + c] += w * cones[3 * EDGES * i + 3 * k + c];
+            for (int k = 0; k < edges; k++) {
+                double w = Math.max(0, lam[i * edges + k].getValue().doubleValue());
+                for (int c = 0; c < 3; c++) f[3 * i + c] += w * cones[3 * edges * i + 3 * k + c];
             }
         }
         return f;

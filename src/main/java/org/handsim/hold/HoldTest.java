@@ -119,7 +119,7 @@ public final class HoldTest {
         for (int k = 1; k <= 3; k++) {
             for (int j = 2; j <= 3; j++) {
                 double[] jt = grasp.joint(k, j);
-                double releaseRad = jt[8] > 0 ? jt[7] / (CONTACT_STIFFNESS_N_M * jt[8] * jt[8]) : Double.POSITIVE_INFINITY;
+                double releaseRad = jt[7] > 0 && jt[8] > 0 ? jt[7] / (CONTACT_STIFFNESS_N_M * jt[8] * jt[8]) : Double.POSITIVE_INFINITY;
                 int id = scene.addJoint(new double[] {jt[0], jt[1], jt[2]}, new double[] {jt[3], jt[4], jt[5]}, jt[6], jt[7], true,
                     releaseRad);
                 for (int link = j; link <= 3; link++) scene.moves(id, LockedGrasp.body(k, link));
@@ -285,7 +285,10 @@ public final class HoldTest {
                     contacts = 0;
                 } else {
                     scene.disturbance(force, zero);
-                    scene.step(h);
+                    if (scene.step(h) == org.handsim.body.ContactSolver.Outcome.NOT_POSITIVE_DEFINITE) {
+                        // its impulses are not a solution: an answer from them would be made up
+                        throw new IllegalStateException("hold test: the contact problem at t = " + t + " s is not positive definite");
+                    }
                     contacts = scene.contacts().size();
                 }
                 body.position(x);

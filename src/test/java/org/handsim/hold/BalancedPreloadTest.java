@@ -46,4 +46,26 @@ class BalancedPreloadTest {
         assertEquals(7, f[1], 1e-6);
         assertEquals(-7, f[4], 1e-6);
     }
+
+    @Test
+    void aFrictionlessWrapKeepsItsSqueeze() {
+        // three frictionless contacts 120° apart round an axis along x, pushing towards it with
+        // 10, 10 and 4 N: nearest balanced triple (a, b, c) with f = Σ a_i n_i = 0 in the plane
+        // forces a = b = c; least squares (a−10)² + (b−10)² + (c−4)² gives 8 N each. The rows along
+        // the axis and the torque rows are all zeros (the forces meet on the axis: rows ojAlgo's
+        // solver stops at zero on when they are left in).
+        double[][] n = new double[3][];
+        List<GraspAssessment.Contact> cs = new java.util.ArrayList<>();
+        double[] given = {10, 10, 4};
+        for (int i = 0; i < 3; i++) {
+            double a = 2 * Math.PI * i / 3;
+            n[i] = new double[] {0, -Math.cos(a), -Math.sin(a)};
+            double[] p = {0, 0.04 * Math.cos(a), 0.04 * Math.sin(a)};
+            cs.add(contact(p, n[i], new double[] {0, given[i] * n[i][1], given[i] * n[i][2]}));
+        }
+        double[] f = BalancedPreload.of(cs, new double[3], 0);
+        for (int i = 0; i < 3; i++) {
+            for (int k = 0; k < 3; k++) assertEquals(8 * n[i][k], f[3 * i + k], 1e-6, "contact " + i + " component " + k);
+        }
+    }
 }

@@ -15,7 +15,10 @@ import org.junit.jupiter.api.Test;
 /**
  * The hold test against answers known without it: an object the hand never touches flies off
  * under the push exactly as a free body does (x = ½·(F/m)·t², the step exact for a constant
- * force), and the mug grasp holds in every direction with a push far below its squeeze.
+ * force); a frictionless wrap of the mug slides out along the mug's axis as if nothing held it
+ * (every contact normal is square to the axis, so no contact force has a component along it)
+ * and holds across it (the locked links enclose its cross-section); and the mug grasp with
+ * friction holds in every direction with a push far below its squeeze.
  */
 public class HoldTestTest {
     /** A scenario of the fingers closing on nothing: the paper's cube 1 m above the palm, 50 ms steps. */
@@ -69,6 +72,30 @@ public class HoldTestTest {
             assertTrue(d.displacementM() < 1e-4, d.direction() + " moved " + d.displacementM());
             assertTrue(d.rotationDeg() < 0.1, d.direction() + " turned " + d.rotationDeg());
             assertFalse(d.contacts().isEmpty());
+        }
+    }
+
+    @Test
+    @Tag("slow")   // the mug grasp closed (2.2 s at 1 ms) and pushed six ways: seconds of CPU
+    void aFrictionlessWrapSlidesOutAlongTheAxisAndHoldsAcrossIt() {
+        Scenario s = Scenario.load(Home.scenarios().resolve("mug-grasp.json")).withFriction(0);
+        HoldReport r = HoldReport.of(s, 0.2, Double.NaN, HoldSettings.defaults(58.84), false);
+        assertEquals(2.0, r.test().forceN(), 1e-12, "10 m/s² × 0.2 kg");
+        assertFalse(r.test().droppedOnRelease());
+        for (DirectionResult d : r.directions()) {
+            boolean axis = d.direction().endsWith("x");   // the mug's axis lies along the world's x
+            assertEquals(!axis, d.passed(), d.direction());
+            if (axis) {
+                // nothing resists along the axis: ½·(F/m)·t² = 5·t² reaches 5 cm at t = 0.1 s (to one step)
+                assertEquals(0.1, d.failedAtS(), 1.0000001e-3, d.direction());
+                // and until then the centre of mass moves as a free body's: at t = 0.05 s, 12.5 mm
+                int i = java.util.Arrays.binarySearch(d.times(), 0.05);
+                assertTrue(i > 0, "a sample at 0.05 s");
+                assertEquals(0.0125, d.displacements()[i], 1e-6, d.direction() + " at 0.05 s");
+            } else {
+                assertTrue(d.displacementM() < 1e-4, d.direction() + " moved " + d.displacementM());
+                assertFalse(d.contacts().isEmpty(), d.direction());
+            }
         }
     }
 }
