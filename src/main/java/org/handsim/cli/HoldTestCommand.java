@@ -31,7 +31,7 @@ import picocli.CommandLine.Spec;
 
 /** {@code handsim hold-test}: does the grasp hold when the world pushes on the object? */
 @Command(name = "hold-test", mixinStandardHelpOptions = true,
-    description = {"Closes a scenario's grasp, frees the object and pushes it six ways: does it hold?",
+    description = {"Closes a scenario's grasp, frees the object and pushes it along six directions to see if it stays in the hand.",
         "DexGraspBench's test: close the fingers as the scenario says until they stall,",
         "lock every finger joint (the worms are not back-drivable), free the object",
         "(a fixed object is freed here, its mass from --mass or --density, else its",
