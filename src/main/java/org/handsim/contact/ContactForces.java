@@ -160,7 +160,10 @@ public final class ContactForces {
 
         /**
          * The forces locked into the contacts (newtons, 3 per contact, in the contacts' order),
-         * or null for none: what each contact carried when its link's worm locked.
+         * or null for none: what each contact carried when its link's worm locked. Matching them
+         * to the contacts is the caller's: with a fixed object a link whose joints did not move
+         * has the same contacts (HandModel keeps them per link); a caller whose object moves
+         * carries them over by its own matching of old contacts to new ones.
          */
         public Problem locked(double[] forces) {
             this.locked = forces;

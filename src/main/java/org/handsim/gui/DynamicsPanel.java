@@ -206,15 +206,25 @@ public final class DynamicsPanel {
         }
     }
 
+    /**
+     * The Events box's first line: the run and its length as {@code handsim run} prints it, the
+     * time of the last step ({@link org.handsim.model.HandModel#endTime}: 8.947 s for the paper's
+     * scenario, whose trajectories end at 8.9464 s).
+     */
+    static String eventsHeader(SimulationRunner.State s) {
+        Scenario sc = s.scenario();
+        return String.format(Locale.ROOT, "%s %s%s, %s s:%n", s.origin() == SimulationRunner.Origin.RESET ? "Reset:" : "Run of",
+            sc.name(), sc.object() != null ? " with " + sc.object().file().getFileName() : "",
+            org.handsim.text.Decimal.format(org.handsim.model.HandModel.endTime(sc)));
+    }
+
     /** Shows a published state (called by the window's view update). */
     void update(SimulationRunner.State s) {
         if (s.snapshot() == null) return;
         if (s.generation() != lastGeneration) {
             lastGeneration = s.generation();
             shown.clear();
-            Scenario sc = s.scenario();
-            header = String.format(Locale.ROOT, "%s %s%s, %s s:%n", s.origin() == SimulationRunner.Origin.RESET ? "Reset:" : "Run of",
-                sc.name(), sc.object() != null ? " with " + sc.object().file().getFileName() : "", Widgets.fmt(sc.duration(), 3));
+            header = eventsHeader(s);
             for (String w : s.warnings()) header += "warning: " + w + System.lineSeparator();
             render();
             grasp = null;       // the new model's grasp comes from its first evaluation

@@ -201,7 +201,7 @@ public final class HandSimWindow {
         Rectangle screen = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
         frame.setSize(Math.min(1280, screen.width), Math.min(860, screen.height));
         KeyboardFocusManager.getCurrentKeyboardFocusManager().addKeyEventDispatcher(keys);
-        objects.showPlacement(scenario.object());
+        objects.showPlacement(scenario);
     }
 
     private static JScrollPane scroll(JComponent c) {
@@ -384,7 +384,7 @@ public final class HandSimWindow {
         sim.load(s);
         sim.setSpeed(speedFactor());
         charts.setDuration(org.handsim.model.HandModel.endTime(s));
-        objects.showPlacement(s.object());
+        objects.showPlacement(s);
         kinematics.previewChanged();
     }
 
@@ -393,7 +393,13 @@ public final class HandSimWindow {
     public void play() { sim.setSpeed(speedFactor()); sim.play(); }
     /** Plays until the simulated time reaches {@code t} seconds (or the end). */
     public void playUntil(double t) { sim.setSpeed(speedFactor()); sim.playUntil(t); }
-    public void pause() { sim.pause(); }
+    public void pause() {
+        sim.pause();
+        status(PAUSED, false);   // a message about a run that played (Path Planning's) is no longer true
+    }
+
+    /** The status bar's message after Pause. */
+    static final String PAUSED = "paused (Play or Space to go on, Step or → for one step)";
     public void step() { sim.step(); }
     public void reset() { sim.reset(); }
 

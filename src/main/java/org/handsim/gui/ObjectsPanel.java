@@ -261,8 +261,17 @@ public final class ObjectsPanel {
         }
     }
 
-    /** Shows a placement in the fields (called when the working scenario changes). */
-    void showPlacement(Scenario.ObjectPlacement p) {
+    /**
+     * The units list's entry for a scenario's object: what the scenario says ({@code object.units}
+     * as written: mm, cm, m), {@code auto} only when the scenario leaves it to the file's size.
+     */
+    static String unitsShown(Scenario s) {
+        return s.object() == null || s.unitsBySize() ? "auto" : s.object().units().id();
+    }
+
+    /** Shows the scenario's object in the fields (called when the working scenario changes). */
+    void showPlacement(Scenario s) {
+        Scenario.ObjectPlacement p = s.object();
         if (p == null) return;
         double[] o = p.position();
         double[] r = p.rotation();
@@ -276,7 +285,7 @@ public final class ObjectsPanel {
         friction.setText(org.handsim.text.Decimal.format(p.friction()));   // the number the scenario holds, shortest
         syncing = true;
         try {
-            if (chosenUnits() != null) units.setSelectedItem(p.units().id());
+            units.setSelectedItem(unitsShown(s));
         } finally {
             syncing = false;
         }

@@ -159,7 +159,7 @@ public final class PathPlanningPanel {
         result.setText(report.toString());
         window.load(s);
         window.play();
-        window.status("path planning: trajectories planned from the current counts; playing from t = 0", false);
+        window.status("path planning: trajectories planned from the current counts; the run starts from t = 0", false);
     }
 
     private Trajectory trajectory(int m, double[] from) {

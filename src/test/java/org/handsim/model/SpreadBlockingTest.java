@@ -26,8 +26,9 @@ import org.junit.jupiter.api.Test;
  *
  * <p>Expected: the spread stops at its first opposing contact and stays there; finger 2 is never
  * BLOCKED by that contact and never breaks away — it closes on, free, and leaves the cylinder;
- * no warning. (Before, any contact on the inner link blocked it: the clutch wound up against a
- * contact that carried nothing and broke away, while the spread drove on through the object.)
+ * no warning. (A model in which any contact on the inner link blocks it winds the clutch up
+ * against a contact that carries nothing and breaks away, while the spread drives on through the
+ * object: what this test fails.)
  */
 class SpreadBlockingTest {
     /** The cylinder's centre and rotation vector in the palm frame (= world): see the class comment. */
