@@ -261,14 +261,6 @@ public final class ObjectsPanel {
         }
     }
 
-    /**
-     * The units list's entry for a scenario's object: what the scenario says ({@code object.units}
-     * as written: mm, cm, m), {@code auto} only when the scenario leaves it to the file's size.
-     */
-    static String unitsShown(Scenario s) {
-        return s.object() == null || s.unitsBySize() ? "auto" : s.object().units().id();
-    }
-
     /** Shows the scenario's object in the fields (called when the working scenario changes). */
     void showPlacement(Scenario s) {
         Scenario.ObjectPlacement p = s.object();
@@ -285,7 +277,7 @@ public final class ObjectsPanel {
         friction.setText(org.handsim.text.Decimal.format(p.friction()));   // the number the scenario holds, shortest
         syncing = true;
         try {
-            units.setSelectedItem(unitsShown(s));
+            if (chosenUnits() != null) units.setSelectedItem(p.units().id());
         } finally {
             syncing = false;
         }
