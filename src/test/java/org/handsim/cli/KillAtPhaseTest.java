@@ -61,7 +61,8 @@ class KillAtPhaseTest {
     @Test
     void plan() throws Exception {
         exercise("plan", new Case(
-            new String[] {"plan", TestPaths.root().resolve("vrml/objects/cube.wrl").toString(), "--trials", "8", "--seed", "1", "--threads", "1"},
+            // the old set has more best/ grasps (5 with force closure) than the new one (4), so a stale file is removed
+            new String[] {"plan", TestPaths.root().resolve("vrml/objects/cube.wrl").toString(), "--trials", "8", "--seed", "3", "--threads", "1"},
             new String[] {"plan", TestPaths.root().resolve("vrml/objects/cube.wrl").toString(), "--trials", "5", "--seed", "2", "--threads", "1"},
             Map.of(),
             "plan.json",
@@ -287,10 +288,12 @@ class KillAtPhaseTest {
         if (((Number) j.get("trials")).intValue() != 5 || ((Number) j.get("seed")).intValue() != 2) return "plan.json " + j;
         List<String> rows = lines(now.get("plan.csv"));
         if (rows.size() != 6) return rows.size() + " lines in plan.csv";
-        int ok = 0;
+        int closure = List.of(rows.get(0).split(",")).indexOf("force_closure");
+        int ok = 0;   // best/ holds only the grasps with force closure
         for (int i = 1; i < rows.size(); i++) {
             if (!rows.get(i).startsWith((i - 1) + ",")) return "row " + i + ": " + rows.get(i);
-            if (rows.get(i).startsWith((i - 1) + ",ok,")) ok++;
+            String[] cells = rows.get(i).split(",", -1);
+            if (cells[1].equals("ok") && cells[closure].equals("true")) ok++;
         }
         List<String> want = new ArrayList<>();
         for (int i = 1; i <= Math.min(10, ok); i++) want.add(String.format("best/%02d.json", i));
