@@ -56,6 +56,13 @@ public final class DynamicsPanel {
     private static final String[] WIDEST = {"3", "STALLED BLOCKED BROKEN", "-9.999", "-9.999", "-9.999", "99", "999.99", "10.0000"};
     /** Column names in {@link #tableLines()} (the script's log). */
     private static final String[] KEYS = {"finger", "clutch", "tau1_Nm", "tau2_Nm", "tau3_Nm", "contacts", "force_N", "breakaway_s"};
+    /**
+     * Where each column's value is in {@code handsim run}'s output, {@code %d} the finger: a
+     * {@code trace.csv} column, or for the breakaway (a time, not a per-step value)
+     * {@code summary.json}'s {@code fingers[k].breakaway_time_s}; null for the finger number.
+     */
+    static final String[] OUTPUT = {null, "state%d", "tau%d1_Nm", "tau%d2_Nm", "tau%d3_Nm", "contacts%d", "force%d_N",
+        "summary.json fingers[%d].breakaway_time_s"};
 
     private final HandSimWindow window;
     private final JPanel panel = Widgets.column();
@@ -331,6 +338,22 @@ public final class DynamicsPanel {
     /** The events list as shown. */
     public String eventsText() { return events.getText(); }
 
+    /**
+     * Finger k's row as the table shows it, into {@code row} (one cell per column): the
+     * snapshot's values and the breakaway time (NaN: none yet).
+     */
+    static void row(int k, Snapshot.FingerSnapshot f, double breakaway, Object[] row) {
+        row[0] = k;
+        row[1] = f.state();
+        double[] tau = f.torques();
+        row[2] = Widgets.fmt(tau[0], 3);
+        row[3] = Widgets.fmt(tau[1], 3);
+        row[4] = Widgets.fmt(tau[2], 3);
+        row[5] = f.contactCount();
+        row[6] = Widgets.fmt(f.forceSum(), 2);
+        row[7] = Double.isNaN(breakaway) ? "–" : Widgets.fmt(breakaway, 4);
+    }
+
     private static final class Table extends AbstractTableModel {
         private static final long serialVersionUID = 1L;
         private final Object[][] cells = new Object[3][COLUMNS.length];
@@ -343,19 +366,7 @@ public final class DynamicsPanel {
         }
 
         void set(SimulationRunner.State s) {
-            for (int k = 0; k < 3; k++) {
-                Snapshot.FingerSnapshot f = s.snapshot().fingers()[k];
-                Object[] row = cells[k];
-                row[1] = f.state();
-                double[] tau = f.torques();
-                row[2] = Widgets.fmt(tau[0], 3);
-                row[3] = Widgets.fmt(tau[1], 3);
-                row[4] = Widgets.fmt(tau[2], 3);
-                row[5] = f.contactCount();
-                row[6] = Widgets.fmt(f.forceSum(), 2);
-                double b = s.breakaway()[k];
-                row[7] = Double.isNaN(b) ? "–" : Widgets.fmt(b, 4);
-            }
+            for (int k = 0; k < 3; k++) row(k + 1, s.snapshot().fingers()[k], s.breakaway()[k], cells[k]);
             fireTableRowsUpdated(0, 2);
         }
 

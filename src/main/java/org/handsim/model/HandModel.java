@@ -945,6 +945,7 @@ public final class HandModel {
             recorder.setContacts(k, contacts[i].size(), contacts[i].forceSum());
             recorder.setClutchAndResidual(k, clutchTorque[i], residual[i]);
             for (int j = k == 3 ? 2 : 1; j <= 3; j++) recorder.setCarried(k, j, carried[i][j - 1]);
+            recorder.setSpreadTorque(k, tau[i][0]);
         }
         recorder.setSpread(spread);
     }

@@ -22,7 +22,9 @@ import org.handsim.text.Decimal;
  * from carrying its joint torques, {@link HandModel#torqueResidual}), then {@code carried11_Nm,
  * carried12_Nm, carried13_Nm, carried21_Nm, carried22_Nm, carried23_Nm, carried32_Nm,
  * carried33_Nm} (the torque each joint carries, {@link HandModel#carriedTorque}; finger 3 has no
- * joint k1). Numbers are written by
+ * joint k1), then {@code tau11_Nm, tau21_Nm, tau31_Nm} (the spread joint's torque τk1, which the
+ * window's Dynamics table shows beside τk2 and τk3; 0 for finger 3, whose joint 31 is fixed, as
+ * {@code theta31_rad} is 0). Numbers are written by
  * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
  * ({@link Decimal#clean}).
  *
@@ -71,6 +73,9 @@ public final class Recorder implements AutoCloseable {
     private double[][] carried = new double[CARRIED][1024];
     /** The carried-torque columns: joints 11, 12, 13, 21, 22, 23, 32, 33. */
     static final int CARRIED = 8;
+    /** The spread joints' torque columns τ11, τ21, τ31. */
+    static final int SPREAD_TAU = 3;
+    private double[][] spreadTau = new double[SPREAD_TAU][1024];
 
     /** A recorder that keeps every row in memory. */
     public Recorder() {
@@ -110,6 +115,7 @@ public final class Recorder implements AutoCloseable {
         for (int k = 1; k <= 3; k++) h.add("clutch" + k + "_Nm");
         for (int k = 1; k <= 3; k++) h.add("residual" + k + "_Nm");
         for (int c = 0; c < CARRIED; c++) h.add("carried" + carriedFinger(c) + carriedJoint(c) + "_Nm");
+        for (int k = 1; k <= SPREAD_TAU; k++) h.add("tau" + k + "1_Nm");
         return String.join(",", h);
     }
 
@@ -153,6 +159,7 @@ public final class Recorder implements AutoCloseable {
         for (int k = 0; k < 3; k++) to[i++] = clutch[k][r];
         for (int k = 0; k < 3; k++) to[i++] = residual[k][r];
         for (int c = 0; c < CARRIED; c++) to[i++] = carried[c][r];
+        for (int k = 0; k < SPREAD_TAU; k++) to[i++] = spreadTau[k][r];
     }
 
     /** Finger of carried-torque column c (0..7). */
@@ -169,9 +176,10 @@ public final class Recorder implements AutoCloseable {
 
     /**
      * Width of a row of numbers: t, per finger 10 numbers, state, contacts, force, then the
-     * spread, then per finger the clutch torque, then per finger the residual, then the carried torques.
+     * spread, then per finger the clutch torque, then per finger the residual, then the carried
+     * torques, then the spread joints' torques.
      */
-    static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6 + CARRIED;
+    static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6 + CARRIED + SPREAD_TAU;
 
     /** One trace.csv line from a row of {@link #WIDTH} numbers (the one place the format is written). */
     static void format(double[] row, StringBuilder sb) {
@@ -185,7 +193,7 @@ public final class Recorder implements AutoCloseable {
             Decimal.append(sb.append(','), Decimal.clean(row[i++]));
         }
         Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-        for (int c = 0; c < 6 + CARRIED; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        for (int c = 0; c < 6 + CARRIED + SPREAD_TAU; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
         sb.append('\n');
     }
 
@@ -362,6 +370,7 @@ public final class Recorder implements AutoCloseable {
             residual[k] = Arrays.copyOf(residual[k], n);
         }
         for (int c = 0; c < CARRIED; c++) carried[c] = Arrays.copyOf(carried[c], n);
+        for (int k = 0; k < SPREAD_TAU; k++) spreadTau[k] = Arrays.copyOf(spreadTau[k], n);
     }
 
     /** Sets numeric column c (Q .. TAU3) of finger k (1..3) in the current row. */
@@ -385,6 +394,9 @@ public final class Recorder implements AutoCloseable {
     /** The torque finger k's joint j carries (N·m) in the current row (finger 3: j = 2, 3). */
     public void setCarried(int k, int j, double nm) { carried[carriedColumn(k, j)][rows - 1] = nm; }
 
+    /** The spread joint's torque τk1 of finger k (N·m) in the current row. */
+    public void setSpreadTorque(int k, double nm) { spreadTau[k - 1][rows - 1] = nm; }
+
     /** Rows in memory: all rows, or for a bounded recorder every {@link #stride()}-th and the last. */
     public int rows() { return rows; }
     /** Rows recorded in all (the rows of trace.csv). */
@@ -403,6 +415,8 @@ public final class Recorder implements AutoCloseable {
     public double residual(int k, int row) { return residual[k - 1][row]; }
     /** The torque finger k's joint j carries in a row in memory, N·m (finger 3: j = 2, 3). */
     public double carried(int k, int j, int row) { return carried[carriedColumn(k, j)][row]; }
+    /** The spread joint's torque τk1 of finger k in a row in memory, N·m. */
+    public double spreadTorque(int k, int row) { return spreadTau[k - 1][row]; }
     /** Whether finger k's motor count ever differed from its first row's (over every row recorded). */
     public boolean moved(int k) {
         if (rows == 0) return false;

@@ -28,7 +28,7 @@ class RunCommandsTest {
             + "ddtheta12_rad_s2,ddtheta13_rad_s2,tau12_Nm,tau13_Nm,state1,contacts1,force1_N,qM2_counts"));
         assertTrue(trace.get(0).endsWith("state3,contacts3,force3_N,qM4_counts,clutch1_Nm,clutch2_Nm,clutch3_Nm,"
             + "residual1_Nm,residual2_Nm,residual3_Nm,carried11_Nm,carried12_Nm,carried13_Nm,carried21_Nm,carried22_Nm,"
-            + "carried23_Nm,carried32_Nm,carried33_Nm"), "the new columns at the end, the old ones where they were");
+            + "carried23_Nm,carried32_Nm,carried33_Nm,tau11_Nm,tau21_Nm,tau31_Nm"), "the new columns at the end, the old ones where they were");
         assertEquals(1 + 8948, trace.size(), "header, t = 0, then 8947 steps");
         String summary = Files.readString(out.resolve("summary.json"));
         for (String key : new String[] {"\"scenario\"", "\"sim_time_s\"", "\"steps\"", "\"dt_s\"", "\"wall_time_s\"", "\"steps_per_s\"",
