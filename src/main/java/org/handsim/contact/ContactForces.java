@@ -60,7 +60,10 @@ package org.handsim.contact;
  * of τ onto the convex cone of carriable torques, unique — by Lawson–Hanson non-negative least
  * squares on the cone edges' torques; phase 2 the forces above carrying τ*. τ* lies on the
  * boundary of the carriable torques, where the dual's minimum need not be attained: if Newton
- * does not carry τ* to 1e-9 of |τ*|, phase 1's edge forces, which do. {@link #residual()} says
+ * does not carry τ* to 1e-9 of |τ*|, phase 1's edge forces, which do, moved by a primal
+ * active-set method ({@link NearestConeForces}) to the forces above, still carrying τ* exactly.
+ * The same happens when τ itself lies on that boundary (a driven torque only a contact at its
+ * cone's apex gives, such as τk3 = 0 with every outer contact pressing k3 closed). {@link #residual()} says
  * how far the forces are from the driven torques — nonzero when no forces can carry them (the
  * finger has no static equilibrium in that state).
  *
@@ -235,6 +238,7 @@ public final class ContactForces {
     private double[] edgeArms = new double[0], edgeWeight = new double[0], edgeZ = new double[0];
     private boolean[] edgePassive = new boolean[0], edgeSkip = new boolean[0];
     private final double[] tauStar = new double[3], lsRhs = new double[3], lsResidual = new double[3];   // by joint
+    private final NearestConeForces nearest = new NearestConeForces();
 
     /**
      * Solves for the contact forces of {@code p} (class comment): afterwards {@link #force},
@@ -442,9 +446,9 @@ public final class ContactForces {
      * non-negative least squares on the cone edges' torques (Lawson–Hanson; τ* is unique, the
      * projection of τ onto the convex cone of carriable torques), kept only if it beats what
      * Newton found; (2) the forces that carry τ* exactly, by Newton's method on τ*. If Newton does
-     * not carry τ* to {@link #EXACT}, the edge forces of phase 1, which carry it exactly — the
-     * least-norm ones when a single cone edge makes τ* (the generic case), else one basic solution
-     * of several.
+     * not carry τ* to {@link #EXACT} (τ* on the boundary, where the dual's minimum is not
+     * attained), the edge forces of phase 1, which carry it exactly but are one basic solution of
+     * many, blind to the locked loads, moved by {@link NearestConeForces} to the unique minimiser.
      */
     private void leastSquaresTorque(int n, int m, int d, double[] cones) {
         int cols = n * m;
@@ -490,6 +494,8 @@ public final class ContactForces {
             fvec[3 * i] = fx; fvec[3 * i + 1] = fy; fvec[3 * i + 2] = fz;
             piece[i] = ConeProjection.APEX;               // no warm start from these
         }
+        // from those edge forces, which carry τ* exactly, to the mechanism's forces carrying it
+        nearest.solve(n, undetermined, tvec, joint, d, cones, facetNormals, m, ref, fvec);
     }
 
     private void ensureEdges(int cols) {

@@ -385,6 +385,7 @@ public final class HandSimWindow {
         sim.setSpeed(speedFactor());
         charts.setDuration(org.handsim.model.HandModel.endTime(s));
         objects.showPlacement(s);
+        pathPlanning.show(s);
         kinematics.previewChanged();
     }
 

@@ -28,7 +28,9 @@ import org.handsim.scenario.Scenario;
  * along the palm's, its centre on the palm axis in front of the palm, moved out along that axis
  * until the simulator's own collision finds no link touching it at the start. Its units come
  * from the list: <i>auto</i> (metres for a model at most 2 units across, else millimetres,
- * GraspIt!'s unit), mm, cm or m — saved in the scenario as {@code object.units}. Then the camera
+ * GraspIt!'s unit), mm, cm or m — saved in the scenario as {@code object.units}. The list is the
+ * choice for the next import; the line under the file's name says the unit the object is read
+ * in now (what runs and what Save scenario writes), and whether the file's size chose it. Then the camera
  * frames the scene. Should the hand still start in contact (a placement typed by hand, or no
  * clear place found), the window says so in the status bar with the command line's warning.
  *
@@ -59,6 +61,9 @@ public final class ObjectsPanel {
     private final JPanel panel = Widgets.column();
     private final JLabel file = new JLabel("no object");
     private final JLabel placed = new JLabel(" ");
+    private final JLabel unitsUsed = new JLabel(" ");
+    /** The placement this panel's last import with units "auto" made: its unit was judged by the file's size. */
+    private Scenario.ObjectPlacement judged;
     private final JTextField x, y, z, rx, ry, rz, scale, friction;
     private final JComboBox<String> units = new JComboBox<>(UNITS);
     private boolean syncing;
@@ -77,9 +82,11 @@ public final class ObjectsPanel {
         io.add(u, Widgets.at(2, 0));
         file.setName("obj.file");
         io.add(file, Widgets.at(0, 1, 3));
+        unitsUsed.setName("obj.unitsused");
+        io.add(unitsUsed, Widgets.at(0, 2, 3));
         placed.setName("obj.placed");
         placed.setFont(Widgets.small());
-        io.add(placed, Widgets.at(0, 2, 3));
+        io.add(placed, Widgets.at(0, 3, 3));
         panel.add(io);
 
         JPanel place = Widgets.titled(new JPanel(new GridBagLayout()), "Placement (world frame)");
@@ -176,6 +183,7 @@ public final class ObjectsPanel {
                 done.completeExceptionally(c);
                 return;
             }
+            judged = wanted == null ? p.placement() : null;
             window.load(window.scenario().withObject(p.placement()));
             window.simulator().objectReady().whenComplete((m, e2) -> SwingUtilities.invokeLater(() -> {
                 if (e2 != null) {
@@ -209,6 +217,7 @@ public final class ObjectsPanel {
         }
         window.load(window.scenario().withObject(null));
         file.setText("no object");
+        unitsUsed.setText(" ");
         placed.setText(" ");
         window.status("object removed", false);
     }
@@ -263,8 +272,13 @@ public final class ObjectsPanel {
 
     /** Shows the scenario's object in the fields (called when the working scenario changes). */
     void showPlacement(Scenario s) {
+        showUnits(s);
         Scenario.ObjectPlacement p = s.object();
-        if (p == null) return;
+        if (p == null) {
+            file.setText("no object");
+            placed.setText(" ");
+            return;
+        }
         double[] o = p.position();
         double[] r = p.rotation();
         x.setText(Widgets.fmt(o[0], 4));
@@ -282,6 +296,34 @@ public final class ObjectsPanel {
             syncing = false;
         }
         file.setText(p.file().getFileName() + " (" + MeshFiles.Format.of(p.file()).label() + ")");
+    }
+
+    /**
+     * Shows the unit the scenario's object is read in — what runs and what Save scenario writes
+     * as {@code object.units} — apart from the units list, which stays the choice for the next
+     * import (auto keeps judging each new file by its size).
+     */
+    private void showUnits(Scenario s) {
+        unitsUsed.setText(unitsText(s, judged));
+    }
+
+    /**
+     * The units line for a scenario's object: {@code units used: mm}, with {@code (judged by
+     * the file's size)} when nobody chose it (the scenario's {@code object.units} absent or
+     * auto, or this panel's import with auto made {@code judged}); blank without an object.
+     */
+    static String unitsText(Scenario s, Scenario.ObjectPlacement judged) {
+        Scenario.ObjectPlacement p = s.object();
+        if (p == null) return " ";
+        boolean bySize = s.unitsBySize() || judged != null && judged.file().equals(p.file()) && judged.units() == p.units();
+        return "units used: " + p.units().id() + (bySize ? " (judged by the file's size)" : "");
+    }
+
+    /** What the panel shows of the object, for the script's {@code log objects}: the file, the units used, the placement's note (blank lines left out). */
+    public java.util.List<String> lines() {
+        java.util.List<String> out = new java.util.ArrayList<>();
+        for (JLabel l : new JLabel[] {file, unitsUsed, placed}) if (!l.getText().isBlank()) out.add(l.getText().trim());
+        return out;
     }
 
 }

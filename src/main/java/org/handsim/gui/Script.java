@@ -20,9 +20,10 @@ import org.handsim.text.SafeText;
  * <pre>
  * press LABEL               click the button whose label or name is LABEL (case-insensitive),
  *                           e.g. press Kinematics, press Path Planning, press Run with dynamics,
- *                           press ik.solve; only buttons on screen count (open the panel first)
+ *                           press ik.solve; only buttons on screen count (open the panel first);
+ *                           fails when the panel refuses its fields' values (the status bar in red)
  * set NAME VALUE            type VALUE into the field NAME and press Enter (fk3.counts, ik.x,
- *                           path.M3.end, obj.z, dyn.gx, ...); a list: the item with that text,
+ *                           path.M3.1.to, obj.z, dyn.gx, ...); a list: the item with that text,
  *                           or starting with it; a slider: the number
  * import FILE               import an object, VRML97, OBJ or STL (what the Objects panel's file
  *                           chooser does: placed clear of the hand, camera framed) and wait
@@ -65,6 +66,12 @@ import org.handsim.text.SafeText;
  *                           {@code kinematics: finger 3: M3 9479 counts, θ31 0.00°, θ32 47.72°, θ33 30.06°}
  *                           (the model's state at the time shown; every log first waits, as a
  *                           screenshot does, until the readouts show the model's state)
+ * log path                  print what the Path Planning panel shows, one line per motor, then
+ *                           the duration: {@code path: M3: start 0; trapezoid to=17500
+ *                           v_max=4244.294 a_max=21221.471; hold duration_s=0.3; ...}
+ * log objects               print what the Objects panel shows: the file, the units used
+ *                           ({@code objects: units used: mm (judged by the file's size)}) and
+ *                           the placement's note
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
  * While a script runs, the model moves only during {@code play} and {@code wait}: a button that
@@ -119,10 +126,12 @@ public final class Script {
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
-        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics   print what a%n"
-        + "                       panel shows, once it shows the model's state%n"
-        + "                       (kinematics, per finger: 'M3 9479 counts, θ31 0.00°,%n"
-        + "                       θ32 47.72°, θ33 30.06°')%n"
+        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics|path|objects%n"
+        + "                       print what a panel shows, once it shows the model's%n"
+        + "                       state (kinematics, per finger: 'M3 9479 counts,%n"
+        + "                       θ31 0.00°, θ32 47.72°, θ33 30.06°'; path: per motor%n"
+        + "                       its start and segments, as the scenario file writes them;%n"
+        + "                       objects: the file, the units used, the placement)%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
         + "The model moves only while play or wait runs (a button that starts a run, e.g.%n"
         + "press path.run, leaves it at t = 0 until then): one script, one state.%n"
@@ -322,8 +331,8 @@ public final class Script {
                 return List.of(p[0], p[1]);
             }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts or kinematics, got '" + q(rest) + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics", "path", "objects").contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics, path or objects, got '" + q(rest) + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

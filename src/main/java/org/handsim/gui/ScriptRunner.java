@@ -379,7 +379,12 @@ public final class ScriptRunner {
                 || label.equalsIgnoreCase("tool." + b.getText());
             if (!match) continue;
             if (b.isShowing() && b.isEnabled()) {
+                int before = window.statusSerial();
                 b.doClick(0);
+                // as for 'set': a panel that refuses its fields' values says so in red, and the press failed
+                if (window.statusSerial() != before && window.statusRefused()) {
+                    throw new ScriptFailure("press " + label + ": the window refused it: " + window.statusText(), 1);
+                }
                 say("pressed " + label);
                 return;
             }
@@ -550,6 +555,12 @@ public final class ScriptRunner {
                 break;
             case "kinematics":
                 for (String l : edt(() -> window.kinematics().lines())) say("kinematics: " + l);
+                break;
+            case "path":
+                for (String l : edt(() -> window.pathPlanning().lines())) say("path: " + l);
+                break;
+            case "objects":
+                for (String l : edt(() -> window.objectsPanel().lines())) say("objects: " + l);
                 break;
             case "contacts": {
                 List<String> lines = edt(this::contactLines);

@@ -476,16 +476,27 @@ public final class Scenario implements Cloneable {
      */
     public Scenario withHandParameters(HandParameters more) {
         if (more == null || more.isEmpty()) return this;
-        java.util.Map<String, Object> j = toJson(file.toAbsolutePath().getParent());
-        @SuppressWarnings("unchecked")
-        java.util.Map<String, Object> h = (java.util.Map<String, Object>) j.get("hand");
         HandParameters merged = handParameters.and(more);
         String why = merged.problem();
         if (why != null) throw new ScenarioException(file + ": hand.parameters." + why);
-        h.put("parameters", merged.toJson());
-        Scenario s = parse(file, org.handsim.text.JsonWriter.write(j));
+        @SuppressWarnings("unchecked")
+        Scenario s = withJson(j -> ((java.util.Map<String, Object>) j.get("hand")).put("parameters", merged.toJson()));
         s.root = root;
         return s;
+    }
+
+    /**
+     * This scenario as its file would be with {@code edit} made to its JSON ({@link #toJson},
+     * relative to this scenario's folder), read again: every field checked and every derived
+     * value made as a file with that text would have them, so what runs is what
+     * {@link #toJson} of the result writes.
+     *
+     * @throws ScenarioException naming the field, as for a file, when an edited value is refused
+     */
+    public Scenario withJson(java.util.function.Consumer<java.util.Map<String, Object>> edit) {
+        java.util.Map<String, Object> j = toJson(file.toAbsolutePath().getParent());
+        edit.accept(j);
+        return parse(file, org.handsim.text.JsonWriter.write(j));
     }
 
     /** The parsed file (for fields other tools add). */

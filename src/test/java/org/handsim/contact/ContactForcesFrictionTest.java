@@ -234,6 +234,51 @@ class ContactForcesFrictionTest {
     }
 
     /**
+     * Torques on the boundary of what the cones carry, solved by hand: the inner contact A of
+     * {@link #insideTheConeTheForceFollowsTheLinksMotion} (φ = 0, t = (−0.05, 0, 0)) with 10 N
+     * locked along its axis, f⁰_A = (−10, 0, 0), and the outer contact B of
+     * {@link #torquesNoConeForceCarriesGetTheLeastSquaresTorque}, every edge of whose cone presses
+     * k3 closed, with 10 N locked along its normal; k2 driven at 1.26 N·m, k3 at 0. B can carry
+     * no k3 torque but 0, so f_B = 0: its cone's apex, where the dual's multiplier of k3 runs off
+     * to infinity and Newton's method carries the torques only to about 1e-8 of them. A alone
+     * carries k2: f_A = f⁰_A + y t with t · f_A = 1.26, y = (1.26 − 0.5)/0.0025 = 304, f_A =
+     * (−25.2, 0, 0), inside its cone. The same without locked loads (least norm): f_A = 1.26 t/|t|²,
+     * the same (−25.2, 0, 0); and frictionless, 25.2 N along A's normal. The edge forces of the
+     * least-squares phase carry these torques too, but they are not the nearest ones: A on its
+     * cone's edge, (−25.2, 0, −12.6) N.
+     */
+    @Test
+    void torquesOnTheBoundaryOfTheConesKeepTheMechanismsForces() {
+        double[] frames = upright();
+        int fr = 36;                                          // frame {k3}: x along link 3
+        double[] p = {0.05, 0, 0.05, 0, 0, 0}, d = {-1, 0, 0, 0, 0, 0};
+        for (int c = 0; c < 3; c++) {
+            p[3 + c] = frames[fr + 4 * c + 3] - 0.03 * frames[fr + 4 * c];
+            d[3 + c] = frames[fr + 4 * c + 1];
+        }
+        double[] cones = cones(d, 2, MU);
+        for (int e = 0; e < M; e++) {
+            assertTrue(torqueDir(frames, 2, p, 1, cones, 3 * M + 3 * e) > 0.01, "edge " + e + " of B presses k3 closed");
+        }
+        for (double locked : new double[] {10, 0}) {
+            double[] f0 = {-locked, 0, 0, locked * d[3], locked * d[4], locked * d[5]};
+            ContactForces cf = new ContactForces();
+            cf.solve(problem(frames, new double[] {0, TAU, 0}, 2, p, d, new int[] {2, 3}).friction(cones, M).locked(f0));
+            double[] f = new double[6];
+            cf.forceVector(0, f, 0);
+            cf.forceVector(1, f, 3);
+            double[] expected = {-25.2, 0, 0, 0, 0, 0};
+            for (int c = 0; c < 6; c++) assertEquals(expected[c], f[c], 1e-9, locked + " N locked: component " + c);
+            assertEquals(0, cf.residual(), 1e-12, locked + " N locked");
+        }
+        ContactForces frictionless = new ContactForces();
+        frictionless.solve(problem(frames, new double[] {0, TAU, 0}, 2, p, d, new int[] {2, 3}).locked(new double[] {-10, 0, 0, 10 * d[3], 10 * d[4], 10 * d[5]}));
+        assertEquals(25.2, frictionless.force(0), 1e-9);
+        assertEquals(0, frictionless.force(1), 1e-9);
+        assertEquals(0, frictionless.residual(), 1e-12);
+    }
+
+    /**
      * Torques drawn at random (τk2, τk3 in [−0.5, 1.5] N·m, most of them not carriable by the
      * contacts of the pose) on 300 seeded finger poses: the torques carried are the least-squares
      * ones of an independent quadratic program (ojAlgo: minimise |Σ Tᵀf − τ|² over edge weights

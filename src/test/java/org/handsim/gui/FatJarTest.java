@@ -133,8 +133,9 @@ class FatJarTest {
             String log = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
             assertTrue(p.waitFor(2, TimeUnit.MINUTES));
             assertEquals(3, p.exitValue(), log);
-            assertTrue(log.startsWith(dir.toRealPath().resolve("scenarios/paper-breakaway.json") + ": no such file (the models and scenarios of "
-                + jar().getFileName() + " could not be unpacked: "), log);
+            assertTrue(log.startsWith("HandSim's models and scenarios (vrml/hand/*.wrl, scenarios/) were not found: "), log);
+            assertTrue(log.contains("set -Dhandsim.home=DIR"), log);
+            assertTrue(log.contains("(the models and scenarios of " + jar().getFileName() + " could not be unpacked: "), log);
             assertTrue(log.trim().endsWith("(the cache " + file.resolve("cache/handsim") + " and the temporary folder " + file.resolve("tmp")
                 + " must be writable))"), log);
             assertEquals(1, log.trim().split("\n").length, log);

@@ -43,7 +43,7 @@ class ReadmeEmbeddingTest {
     void theSnippetCompilesAndRunsFromAFolderOutsideTheCheckout() throws Exception {
         GuiWindowTest.needDisplay();
         Path lib = TestPaths.root().resolve("build/install/handsim/lib");
-        assertTrue(Files.isRegularFile(lib.resolve("handsim.jar")), "gradle :installDist first");
+        assertTrue(Files.isRegularFile(lib.resolve("handsim.jar")), "build/install/handsim/lib/handsim.jar missing: ./test --all builds it (gradle installDist)");
         Path dir = outside();
         try {
             Files.writeString(dir.resolve("MyGraspExperiment.java"), snippet());

@@ -12,6 +12,7 @@ import java.util.regex.Pattern;
 import javax.swing.JTable;
 import javax.swing.table.DefaultTableModel;
 import org.handsim.TestPaths;
+import org.handsim.clutch.ClutchState;
 import org.handsim.cli.CliTesting;
 import org.handsim.model.HandModel;
 import org.handsim.scenario.Scenario;
@@ -22,9 +23,14 @@ import org.junit.jupiter.api.Test;
 
 /** Readouts of the window that need no window: the time label and the Dynamics table's columns. */
 class WindowReadoutsTest {
-    /** The time label says what {@code handsim run} says: 8.947 s at the paper's end, not the duration's 8.946. */
+    /**
+     * Every time the window shows of the paper's run is the one {@code handsim run} prints, to its
+     * last printed digit: the time label and the Events box's header say the run's length (8.947 s
+     * at the paper's end, not the trajectories' 8.9464 written as 8.946), the Events list and the
+     * Dynamics table's breakaway column the breakaway time of finger 3.
+     */
     @Test
-    void theTimeLabelWritesTimesAsTheCommandLineDoes() throws Exception {
+    void everyTimeTheWindowShowsIsTheCommandLinesToThePrintedDigit() throws Exception {
         Path paper = TestPaths.root().resolve("scenarios/paper-breakaway.json");
         Path dir = Files.createTempDirectory("handsim-time-label");
         CliTesting.Run r = CliTesting.run("run", paper.toString(), "--out", dir.toString(), "--no-charts");
@@ -39,6 +45,15 @@ class WindowReadoutsTest {
         assertEquals(HandModel.endTime(s), end.time(), "endTime is the time of the last step");
         assertEquals("t = " + m.group(1) + " s / " + m.group(1) + " s", HandSimWindow.timeText(state(s, end.snapshot())));
         assertEquals("t = 0.000 s / " + m.group(1) + " s", HandSimWindow.timeText(state(s, null)));
+        assertEquals("Run of paper-breakaway with cube.wrl, " + m.group(1) + " s:" + String.format("%n"), DynamicsPanel.eventsHeader(state(s, null)));
+        Matcher b = Pattern.compile("finger 3: breakaway at t = ([0-9.]+) s").matcher(r.out());
+        assertTrue(b.find(), r.out());
+        // the window's event carries the model's breakaway time, located inside its step (SimulationRunner)
+        SimulationRunner.Event e = new SimulationRunner.Event(1, end.breakawayTime(3), 3, ClutchState.BLOCKED, ClutchState.BROKEN);
+        assertTrue(DynamicsPanel.line(e).startsWith("t = " + b.group(1) + " s  finger 3: BLOCKED → BROKEN"), DynamicsPanel.line(e));
+        Object[] row = new Object[8];
+        DynamicsPanel.row(3, end.snapshot().fingers()[2], end.breakawayTime(3), row);
+        assertEquals(b.group(1), row[7], "the Dynamics table's breakaway column");
         VrmlTesting.deleteTree(dir);
     }
 
@@ -83,17 +98,5 @@ class WindowReadoutsTest {
             }
         }
         assertTrue(negative > 0, "the run shows negative torques, whose minus sign must fit too");
-    }
-
-    /**
-     * The Events box's header says the run's length as handsim run does (8.947 s for the paper,
-     * not the trajectories' 8.9464 written to three places as 8.946); after Pause the status bar's
-     * message says paused.
-     */
-    @Test
-    void eventsHeaderUnitsAndPauseSayWhatTheScenarioAndTheRunSay() throws Exception {
-        Scenario paper = Scenario.load(TestPaths.root().resolve("scenarios/paper-breakaway.json"));
-        assertEquals("Run of paper-breakaway with cube.wrl, 8.947 s:" + String.format("%n"), DynamicsPanel.eventsHeader(state(paper, null)));
-        assertTrue(HandSimWindow.PAUSED.startsWith("paused"), HandSimWindow.PAUSED);
     }
 }
