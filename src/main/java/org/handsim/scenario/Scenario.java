@@ -38,7 +38,10 @@ import org.handsim.text.JsonObject;
  *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file; .wrl, .obj or .stl
  *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24,
  *     "units": "m",                            // the file's unit: auto (default), mm, cm or m
- *     "friction": 0.5 },                       // Coulomb μ of the contacts, ≥ 0 (default 0.5)
+ *     "friction": 0.5,                         // Coulomb μ of the contacts, ≥ 0 (default 0.5)
+ *     "free": true, "mass_kg": 0.3,            // optional: a free object (FreeObject), mass_kg or density_kg_m3,
+ *     "inertia_kg_m2": [[..],[..],[..]], "com_m": [..],        // optional (default from the closed mesh),
+ *     "velocity_m_s": [..], "angular_velocity_rad_s": [..], "release_s": 0 },   // world, at release
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
  *     "M3": [ {"type": "trapezoid", "to": 17500, "v_max": 5000, "a_max": 25000},
@@ -68,6 +71,7 @@ public final class Scenario implements Cloneable {
     private double[] handPose = new double[6];   // position_m, rotation_rad as written
     private double[] gravity;
     private ObjectPlacement object;
+    private FreeObject freeObject;
     private double[] startCounts = new double[4];
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
@@ -209,7 +213,11 @@ public final class Scenario implements Cloneable {
         }
         if (r.has("object")) {
             JsonObject o = r.object("object");
-            o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions", "units", "friction");
+            String[] fields = {"file", "position_m", "rotation_rad", "scale", "divisions", "units", "friction"};
+            String[] all = java.util.Arrays.copyOf(fields, fields.length + FreeObject.FIELDS.length);
+            System.arraycopy(FreeObject.FIELDS, 0, all, fields.length, FreeObject.FIELDS.length);
+            o.allowOnly(all);
+            freeObject = FreeObject.parse(o);
             Path dir = file.toAbsolutePath().getParent();
             Path f = dir.resolve(o.string("file")).normalize();
             String why = InputFile.problem(f);
@@ -429,6 +437,8 @@ public final class Scenario implements Cloneable {
     public double[] gravity() { return gravity.clone(); }
     /** The object, or null when the scene has none. */
     public ObjectPlacement object() { return object; }
+    /** The object's motion when it is free ({@code "object": {"free": true, ...}}), else null: fixed in place. */
+    public FreeObject freeObject() { return freeObject; }
     /** Motor m (0..3 = M1..M4) set-point trajectory. */
     public Trajectory motor(int m) { return motors[m]; }
     /** Initial counts of motor m (0..3). */
@@ -537,6 +547,7 @@ public final class Scenario implements Cloneable {
             o.put("units", object.units().id());
             o.put("divisions", object.divisions());
             o.put("friction", object.friction());
+            if (freeObject != null) freeObject.toJson(o);
             m.put("object", o);
         }
         java.util.Map<String, Object> start = new java.util.LinkedHashMap<>();
@@ -636,6 +647,7 @@ public final class Scenario implements Cloneable {
     public Scenario withObject(ObjectPlacement placement) {
         Scenario c = copy();
         c.object = placement;
+        if (placement == null) c.freeObject = null;
         c.unitsBySize = false;   // a placement made by the caller carries a chosen unit
         return c;
     }

@@ -1,0 +1,142 @@
+package org.handsim.scenario;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.Map;
+import org.handsim.TestPaths;
+import org.handsim.model.Simulation;
+import org.handsim.text.Json;
+import org.handsim.text.JsonWriter;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The free object's fields in a scenario ({@code "object": {"free": true, ...}}): read with their
+ * defaults, written back as read, and every value that is no body refused naming the field.
+ */
+class FreeObjectTest {
+    static final Path MUG = TestPaths.root().resolve("scenarios/mug-grasp.json");
+
+    /** The mug scenario with {@code fields} (JSON object text) added to its object. */
+    @SuppressWarnings("unchecked")
+    static Scenario mugWith(String fields) {
+        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
+        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
+        return Scenario.parse(MUG, JsonWriter.write(j));
+    }
+
+    @Test
+    void theFieldsAreReadWithTheirDefaultsAndWrittenBackAsRead() {
+        assertNull(Scenario.load(MUG).freeObject(), "without \"free\": true the object is fixed");
+        assertNull(mugWith("{\"free\": false}").freeObject());
+        FreeObject f = mugWith("{\"free\": true, \"density_kg_m3\": 1200}").freeObject();
+        assertEquals(1200, f.densityKgM3());
+        assertTrue(Double.isNaN(f.massKg()) && f.fromMesh() && f.comM() == null);
+        assertArrayEquals(new double[3], f.velocityMS());
+        assertArrayEquals(new double[3], f.angularVelocityRadS());
+        assertEquals(0, f.releaseS());
+        String full = "{\"free\": true, \"mass_kg\": 0.3, \"inertia_kg_m2\": [[2e-4, 0, 1e-5], [0, 3e-4, 0], [1e-5, 0, 4e-4]],"
+            + " \"com_m\": [0, 0.001, 0.05], \"velocity_m_s\": [0.1, 0, -0.2], \"angular_velocity_rad_s\": [0, 1, 0], \"release_s\": 2.5}";
+        Scenario s = mugWith(full);
+        f = s.freeObject();
+        assertEquals(0.3, f.massKg());
+        assertArrayEquals(new double[] {2e-4, 0, 1e-5, 0, 3e-4, 0, 1e-5, 0, 4e-4}, f.inertiaKgM2());
+        assertArrayEquals(new double[] {0, 0.001, 0.05}, f.comM());
+        assertArrayEquals(new double[] {0.1, 0, -0.2}, f.velocityMS());
+        assertArrayEquals(new double[] {0, 1, 0}, f.angularVelocityRadS());
+        assertEquals(2.5, f.releaseS());
+        // written and read back: the same fields, the same text
+        Path dir = MUG.getParent();
+        Map<String, Object> json = s.toJson(dir);
+        Scenario back = Scenario.parse(MUG, JsonWriter.write(json));
+        assertEquals(JsonWriter.pretty(json), JsonWriter.pretty(back.toJson(dir)));
+        assertArrayEquals(f.inertiaKgM2(), back.freeObject().inertiaKgM2());
+        assertEquals(2.5, back.freeObject().releaseS());
+        assertNull(s.withObject(null).freeObject());
+    }
+
+    @Test
+    void aValueThatIsNoBodyIsRefusedNamingTheField() {
+        String[][] bad = {
+            {"{\"mass_kg\": 0.3}", "field object.mass_kg: belongs to a free object: add \"free\": true"},
+            {"{\"free\": true}", "field object.free: a free object needs its mass: add \"mass_kg\" or \"density_kg_m3\""},
+            {"{\"free\": true, \"mass_kg\": 1, \"density_kg_m3\": 1000}", "field object.density_kg_m3: give mass_kg or density_kg_m3, not both"},
+            {"{\"free\": true, \"mass_kg\": 0}", "field object.mass_kg: must be > 0, got 0"},
+            {"{\"free\": true, \"mass_kg\": -2}", "field object.mass_kg: must be > 0, got -2"},
+            {"{\"free\": true, \"density_kg_m3\": 0}", "field object.density_kg_m3: must be > 0"},
+            {"{\"free\": \"yes\", \"mass_kg\": 1}", "field object.free: must be true or false"},
+            {"{\"free\": true, \"mass_kg\": 1, \"inertia_kg_m2\": [[1, 0, 0], [0, 1, 0], [0, 0, -1]], \"com_m\": [0, 0, 0]}",
+                "field object.inertia_kg_m2: must be positive definite (principal moments -1, 1, 1 kg·m²)"},
+            {"{\"free\": true, \"mass_kg\": 1, \"inertia_kg_m2\": [[1, 0, 0], [0, 1, 0], [0, 0, 3]], \"com_m\": [0, 0, 0]}",
+                "field object.inertia_kg_m2: breaks the triangle inequality"},
+            {"{\"free\": true, \"mass_kg\": 1, \"inertia_kg_m2\": [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]], \"com_m\": [0, 0, 0]}",
+                "field object.inertia_kg_m2: must be symmetric: [0][1] = 0.5 but [1][0] = 0"},
+            {"{\"free\": true, \"mass_kg\": 1, \"inertia_kg_m2\": [[1, 0, 0], [0, 1, 0]], \"com_m\": [0, 0, 0]}",
+                "field object.inertia_kg_m2: must be 3 rows of 3 numbers, got 2 rows"},
+            {"{\"free\": true, \"mass_kg\": 1, \"inertia_kg_m2\": [[1, 0, 0], [0, 1, 0], [0, \"x\", 1]], \"com_m\": [0, 0, 0]}",
+                "field object.inertia_kg_m2[2][1]: must be a finite number"},
+            {"{\"free\": true, \"density_kg_m3\": 1000, \"inertia_kg_m2\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], \"com_m\": [0, 0, 0]}",
+                "field object.inertia_kg_m2: given with density_kg_m3: give mass_kg with it"},
+            {"{\"free\": true, \"mass_kg\": 1, \"com_m\": [0, 0, 0]}", "field object.com_m: given without inertia_kg_m2"},
+            {"{\"free\": true, \"mass_kg\": 1, \"inertia_kg_m2\": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}", "field object.inertia_kg_m2: given without com_m"},
+            {"{\"free\": true, \"mass_kg\": 1, \"velocity_m_s\": [0, 0]}", "field object.velocity_m_s: must have 3 numbers, got 2"},
+            {"{\"free\": true, \"mass_kg\": 1, \"release_s\": -1}", "field object.release_s: must be >= 0, got -1"},
+        };
+        for (String[] b : bad) {
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugWith(b[0]), b[0]);
+            assertTrue(e.getMessage().contains(b[1]), b[0] + " -> " + e.getMessage());
+            assertTrue(e.getMessage().contains("mug-grasp.json"), e.getMessage());
+        }
+    }
+
+    /**
+     * A box without its lid (10 triangles, 4 open edges after welding) bounds no solid: a free
+     * object of it without its inertia is refused naming the file and what to add; with its mass,
+     * inertia and centre given it needs no volume.
+     */
+    @Test
+    @SuppressWarnings("unchecked")
+    void anOpenMeshWithoutMassAndInertiaIsRefusedNamingTheFile() throws Exception {
+        Path dir = java.nio.file.Files.createTempDirectory("handsim-free");
+        try {
+            Path obj = dir.resolve("open-box.obj");
+            java.nio.file.Files.writeString(obj, "v 0 0 0\nv 0.05 0 0\nv 0.05 0.05 0\nv 0 0.05 0\n"
+                + "v 0 0 0.05\nv 0.05 0 0.05\nv 0.05 0.05 0.05\nv 0 0.05 0.05\n"
+                + "f 1 3 2\nf 1 4 3\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n");
+            Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
+            Map<String, Object> o = (Map<String, Object>) j.get("object");
+            o.put("file", obj.toString());
+            o.put("scale", 1.0);
+            o.put("free", true);
+            o.put("mass_kg", 0.3);
+            Path f = dir.resolve("free.json");
+            Scenario s = Scenario.parse(f, JsonWriter.write(j));
+            ScenarioException e = assertThrows(ScenarioException.class, () -> Simulation.model(s, false));
+            assertTrue(e.getMessage().startsWith(f + ": field object.free: "), e.getMessage());
+            assertTrue(e.getMessage().contains("open-box.obj: the surface is not closed (4 edges are not shared by exactly two triangles"),
+                e.getMessage());
+            assertTrue(e.getMessage().contains("give \"mass_kg\" and \"inertia_kg_m2\" (and \"com_m\"), or close the mesh"), e.getMessage());
+            o.put("inertia_kg_m2", java.util.List.of(java.util.List.of(1e-4, 0.0, 0.0), java.util.List.of(0.0, 1e-4, 0.0),
+                java.util.List.of(0.0, 0.0, 1e-4)));
+            o.put("com_m", java.util.List.of(0.025, 0.025, 0.025));
+            Scenario given = Scenario.parse(f, JsonWriter.write(j));
+            e = assertThrows(ScenarioException.class, () -> Simulation.model(given, false));
+            assertTrue(e.getMessage().contains("field object.free: a free object is read and checked but not simulated"), e.getMessage());
+        } finally {
+            try (var files = java.nio.file.Files.walk(dir)) {
+                files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+            }
+        }
+    }
+
+    @Test
+    void aFreeObjectIsRefusedByTheRunRatherThanRunFixed() {
+        Scenario s = mugWith("{\"free\": true, \"mass_kg\": 0.3}");
+        ScenarioException e = assertThrows(ScenarioException.class, () -> Simulation.model(s, false));
+        assertTrue(e.getMessage().contains("field object.free: a free object is read and checked but not simulated"), e.getMessage());
+    }
+}
