@@ -42,6 +42,7 @@ import org.handsim.text.JsonObject;
  *     "free": true, "mass_kg": 0.3,            // optional: a free object (FreeObject), mass_kg or density_kg_m3,
  *     "inertia_kg_m2": [[..],[..],[..]], "com_m": [..],        // optional (default from the closed mesh),
  *     "velocity_m_s": [..], "angular_velocity_rad_s": [..], "release_s": 0 },   // world, at release
+ *   "disturbances": [ {"from_s": 1, "to_s": 1.2, "force_N": [x,y,z], "torque_N_m": [x,y,z]} ],   // free object only; world, at its centre of mass
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
  *     "M3": [ {"type": "trapezoid", "to": 17500, "v_max": 5000, "a_max": 25000},
@@ -72,6 +73,7 @@ public final class Scenario implements Cloneable {
     private double[] gravity;
     private ObjectPlacement object;
     private FreeObject freeObject;
+    private List<Disturbance> disturbances = List.of();
     private double[] startCounts = new double[4];
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
@@ -189,7 +191,8 @@ public final class Scenario implements Cloneable {
         this.file = file;
         this.hand = hand;
         this.root = r;
-        r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "start_counts", "motors", "dt_s", "duration_s", "outputs");
+        r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "disturbances", "start_counts", "motors", "dt_s",
+            "duration_s", "outputs");
         name = r.string("name");
         String bad = FileName.problem(name);
         if (bad != null) throw r.error("name", bad + ", got \"" + name + "\"");
@@ -252,6 +255,7 @@ public final class Scenario implements Cloneable {
             if (object != null) object = object.withFriction(handParameters.friction());
             defaultFriction = handParameters.friction();
         }
+        disturbances = List.copyOf(Disturbance.parse(r, freeObject != null));
         hand = this.hand;
         dt = r.positive("dt_s");
         if (dt > 0.1) throw r.error("dt_s", "must be at most 0.1 s, got " + dt);
@@ -439,6 +443,8 @@ public final class Scenario implements Cloneable {
     public ObjectPlacement object() { return object; }
     /** The object's motion when it is free ({@code "object": {"free": true, ...}}), else null: fixed in place. */
     public FreeObject freeObject() { return freeObject; }
+    /** Wrenches on the free object ({@code "disturbances"}), in the order given; empty without them. */
+    public List<Disturbance> disturbances() { return disturbances; }
     /** Motor m (0..3 = M1..M4) set-point trajectory. */
     public Trajectory motor(int m) { return motors[m]; }
     /** Initial counts of motor m (0..3). */
@@ -550,6 +556,11 @@ public final class Scenario implements Cloneable {
             if (freeObject != null) freeObject.toJson(o);
             m.put("object", o);
         }
+        if (!disturbances.isEmpty()) {
+            List<Object> d = new ArrayList<>();
+            for (Disturbance x : disturbances) d.add(x.toJson());
+            m.put("disturbances", d);
+        }
         java.util.Map<String, Object> start = new java.util.LinkedHashMap<>();
         for (int i = 0; i < 4; i++) start.put("M" + (i + 1), startCounts[i]);
         m.put("start_counts", start);
@@ -647,7 +658,10 @@ public final class Scenario implements Cloneable {
     public Scenario withObject(ObjectPlacement placement) {
         Scenario c = copy();
         c.object = placement;
-        if (placement == null) c.freeObject = null;
+        if (placement == null) {
+            c.freeObject = null;
+            c.disturbances = List.of();
+        }
         c.unitsBySize = false;   // a placement made by the caller carries a chosen unit
         return c;
     }

@@ -29,6 +29,47 @@ class FreeObjectTest {
         return Scenario.parse(MUG, JsonWriter.write(j));
     }
 
+    /** The mug scenario with {@code fields} added to its object and {@code disturbances} (JSON array text) to the scenario. */
+    @SuppressWarnings("unchecked")
+    static Scenario mugWith(String fields, String disturbances) {
+        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
+        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
+        j.put("disturbances", Json.parse("disturbances", disturbances));
+        return Scenario.parse(MUG, JsonWriter.write(j));
+    }
+
+    @Test
+    void disturbancesAreReadWrittenBackAndRefusedNamingTheField() {
+        Scenario s = mugWith("{\"free\": true, \"mass_kg\": 0.3}",
+            "[{\"from_s\": 1, \"to_s\": 1.5, \"force_N\": [0, 2, 0]}, {\"from_s\": 2, \"to_s\": 2.1, \"torque_N_m\": [0, 0, 0.1]}]");
+        assertEquals(2, s.disturbances().size());
+        Disturbance d = s.disturbances().get(0);
+        assertArrayEquals(new double[] {0, 2, 0}, d.forceN());
+        assertArrayEquals(new double[3], d.torqueNm());
+        assertTrue(d.actsAt(1) && d.actsAt(1.4999) && !d.actsAt(1.5) && !d.actsAt(0.999));
+        assertArrayEquals(new double[] {0, 0, 0.1}, s.disturbances().get(1).torqueNm());
+        Path dir = MUG.getParent();
+        Map<String, Object> json = s.toJson(dir);
+        Scenario back = Scenario.parse(MUG, JsonWriter.write(json));
+        assertEquals(JsonWriter.pretty(json), JsonWriter.pretty(back.toJson(dir)));
+        assertEquals(0, Scenario.load(MUG).disturbances().size());
+        String[][] bad = {
+            {"{}", "[{\"from_s\": 1, \"to_s\": 2, \"force_N\": [1, 0, 0]}]", "field disturbances: push a free object: add \"free\": true"},
+            {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": 2, \"to_s\": 2, \"force_N\": [1, 0, 0]}]",
+                "field disturbances[0].to_s: must be after from_s (2 s), got 2 s"},
+            {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": 0, \"to_s\": 1, \"force_N\": [1, 0, 0]}, {\"from_s\": 3, \"to_s\": 1, \"force_N\": [1, 0, 0]}]",
+                "field disturbances[1].to_s: must be after from_s (3 s), got 1 s"},
+            {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": -1, \"to_s\": 1, \"force_N\": [1, 0, 0]}]", "field disturbances[0].from_s: must be >= 0"},
+            {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": 0, \"to_s\": 1}]", "field disturbances[0].force_N: missing: give force_N, torque_N_m or both"},
+            {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": 0, \"to_s\": 1, \"force_N\": [1, 0]}]", "field disturbances[0].force_N: must have 3 numbers"},
+            {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": 0, \"to_s\": 1, \"force\": [1, 0, 0]}]", "force"},
+        };
+        for (String[] b : bad) {
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugWith(b[0], b[1]), b[1]);
+            assertTrue(e.getMessage().contains(b[2]), b[1] + " -> " + e.getMessage());
+        }
+    }
+
     @Test
     void theFieldsAreReadWithTheirDefaultsAndWrittenBackAsRead() {
         assertNull(Scenario.load(MUG).freeObject(), "without \"free\": true the object is fixed");
