@@ -42,6 +42,7 @@ import org.handsim.text.JsonObject;
  *     "free": true, "mass_kg": 0.3,            // optional: a free object (FreeObject), mass_kg or density_kg_m3,
  *     "inertia_kg_m2": [[..],[..],[..]], "com_m": [..],        // optional (default from the closed mesh),
  *     "velocity_m_s": [..], "angular_velocity_rad_s": [..], "release_s": 0 },   // world, at release
+ *   "supports": [ {"box_m": [x,y,z], "position_m": [..], "rotation_rad": [..]}, {"file": "table.stl", ...} ],   // free object only
  *   "disturbances": [ {"from_s": 1, "to_s": 1.2, "force_N": [x,y,z], "torque_N_m": [x,y,z]} ],   // free object only; world, at its centre of mass
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
@@ -74,6 +75,7 @@ public final class Scenario implements Cloneable {
     private ObjectPlacement object;
     private FreeObject freeObject;
     private List<Disturbance> disturbances = List.of();
+    private List<Support> supports = List.of();
     private double[] startCounts = new double[4];
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
@@ -191,7 +193,7 @@ public final class Scenario implements Cloneable {
         this.file = file;
         this.hand = hand;
         this.root = r;
-        r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "disturbances", "start_counts", "motors", "dt_s",
+        r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "supports", "disturbances", "start_counts", "motors", "dt_s",
             "duration_s", "outputs");
         name = r.string("name");
         String bad = FileName.problem(name);
@@ -254,6 +256,13 @@ public final class Scenario implements Cloneable {
             }
             if (object != null) object = object.withFriction(handParameters.friction());
             defaultFriction = handParameters.friction();
+        }
+        if (r.has("supports")) {
+            int n = r.list("supports").size();
+            if (n > 0 && freeObject == null) throw r.error("supports", "hold up a free object: add \"free\": true to the object, or remove them");
+            List<Support> sup = new ArrayList<>();
+            for (int i = 0; i < n; i++) sup.add(Support.parse(r.objectAt("supports", i), file.toAbsolutePath().getParent(), Scenario::pose));
+            supports = List.copyOf(sup);
         }
         disturbances = List.copyOf(Disturbance.parse(r, freeObject != null));
         hand = this.hand;
@@ -443,6 +452,8 @@ public final class Scenario implements Cloneable {
     public ObjectPlacement object() { return object; }
     /** The object's motion when it is free ({@code "object": {"free": true, ...}}), else null: fixed in place. */
     public FreeObject freeObject() { return freeObject; }
+    /** Static bodies under a free object ({@code "supports"}); empty without them. */
+    public List<Support> supports() { return supports; }
     /** Wrenches on the free object ({@code "disturbances"}), in the order given; empty without them. */
     public List<Disturbance> disturbances() { return disturbances; }
     /** Motor m (0..3 = M1..M4) set-point trajectory. */
@@ -556,6 +567,11 @@ public final class Scenario implements Cloneable {
             if (freeObject != null) freeObject.toJson(o);
             m.put("object", o);
         }
+        if (!supports.isEmpty()) {
+            List<Object> l = new ArrayList<>();
+            for (Support x : supports) l.add(x.toJson(dir));
+            m.put("supports", l);
+        }
         if (!disturbances.isEmpty()) {
             List<Object> d = new ArrayList<>();
             for (Disturbance x : disturbances) d.add(x.toJson());
@@ -661,6 +677,7 @@ public final class Scenario implements Cloneable {
         if (placement == null) {
             c.freeObject = null;
             c.disturbances = List.of();
+            c.supports = List.of();
         }
         c.unitsBySize = false;   // a placement made by the caller carries a chosen unit
         return c;

@@ -70,6 +70,43 @@ class FreeObjectTest {
         }
     }
 
+    /** The mug scenario with {@code fields} added to its object and {@code supports} (JSON array text) to the scenario. */
+    @SuppressWarnings("unchecked")
+    static Scenario mugOn(String fields, String supports) {
+        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
+        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
+        j.put("supports", Json.parse("supports", supports));
+        return Scenario.parse(MUG, JsonWriter.write(j));
+    }
+
+    @Test
+    void supportsAreReadWrittenBackAndRefusedNamingTheField() {
+        String free = "{\"free\": true, \"mass_kg\": 0.3}";
+        Scenario s = mugOn(free, "[{\"box_m\": [0.5, 0.4, 0.02], \"position_m\": [0, 0, 0.05]},"
+            + " {\"file\": \"../vrml/objects/cube.wrl\", \"position_m\": [1, 0, 0], \"rotation_rad\": [0, 0, 0.5]}]");
+        assertEquals(2, s.supports().size());
+        assertArrayEquals(new double[] {0.5, 0.4, 0.02}, s.supports().get(0).boxM());
+        assertArrayEquals(new double[] {0, 0, 0.05}, s.supports().get(0).worldFromSupport().origin());
+        assertEquals(TestPaths.root().resolve("vrml/objects/cube.wrl").toAbsolutePath().normalize(), s.supports().get(1).file().toAbsolutePath());
+        assertEquals(0.5, s.supports().get(1).worldFromSupport().rotationVector()[2], 1e-15);
+        Path dir = MUG.getParent();
+        Map<String, Object> json = s.toJson(dir);
+        Scenario back = Scenario.parse(MUG, JsonWriter.write(json));
+        assertEquals(JsonWriter.pretty(json), JsonWriter.pretty(back.toJson(dir)));
+        String[][] bad = {
+            {"{}", "[{\"box_m\": [1, 1, 1]}]", "field supports: hold up a free object: add \"free\": true"},
+            {free, "[{\"box_m\": [1, 0, 1]}]", "field supports[0].box_m[1]: must be > 0, got 0"},
+            {free, "[{\"position_m\": [0, 0, 0]}]", "field supports[0].box_m: missing: give box_m (edge lengths) or file (a mesh)"},
+            {free, "[{\"box_m\": [1, 1, 1], \"file\": \"a.stl\"}]", "field supports[0].file: give box_m or file, not both"},
+            {free, "[{\"box_m\": [1, 1, 1]}, {\"file\": \"no-such-table.stl\"}]", "field supports[1].file: "},
+            {free, "[{\"box_m\": [1, 1, 1], \"rotation_rad\": [0, 0]}]", "field supports[0].rotation_rad: must have 3 numbers"},
+        };
+        for (String[] b : bad) {
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugOn(b[0], b[1]), b[1]);
+            assertTrue(e.getMessage().contains(b[2]), b[1] + " -> " + e.getMessage());
+        }
+    }
+
     @Test
     void theFieldsAreReadWithTheirDefaultsAndWrittenBackAsRead() {
         assertNull(Scenario.load(MUG).freeObject(), "without \"free\": true the object is fixed");
