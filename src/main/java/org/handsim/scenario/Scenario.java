@@ -32,7 +32,10 @@ import org.handsim.text.JsonObject;
  *   "name": "paper-breakaway",
  *   "description": "...",                     // optional, free text
  *   "notes": { "any": "text" },               // optional: choices and their reasons
- *   "hand": { "position_m": [0,0,0], "rotation_rad": [0,0,0] },   // world <- palm (axis-angle)
+ *   "hand": { "position_m": [0,0,0], "rotation_rad": [0,0,0],     // world <- palm (axis-angle)
+ *             "moves": [ {"type": "hold", "duration_s": 4},          // optional, free object only: the base's segments
+ *                        {"type": "line", "by_m": [0,0,0.1], "v_max": 0.1, "a_max": 1},
+ *                        {"type": "rotate", "axis": [1,0,0], "angle_rad": 0.5, "v_max": 1, "a_max": 5} ] },
  *   "gravity_m_s2": [-9.81, 0, 0],            // world frame
  *   "object": {                                // optional
  *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file; .wrl, .obj or .stl
@@ -76,6 +79,7 @@ public final class Scenario implements Cloneable {
     private FreeObject freeObject;
     private List<Disturbance> disturbances = List.of();
     private List<Support> supports = List.of();
+    private List<HandMove> moves = List.of();
     private double[] startCounts = new double[4];
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
@@ -201,7 +205,8 @@ public final class Scenario implements Cloneable {
         description = r.string("description", "");
         if (r.has("hand")) {
             JsonObject h = r.object("hand");
-            h.allowOnly("position_m", "rotation_rad", "parameters");
+            h.allowOnly("position_m", "rotation_rad", "parameters", "moves");
+            moves = List.copyOf(HandMove.parse(h));
             if (h.has("parameters")) {
                 handParameters = HandParametersJson.parse(h.object("parameters"));
                 this.hand = hand.with(handParameters);
@@ -256,6 +261,9 @@ public final class Scenario implements Cloneable {
             }
             if (object != null) object = object.withFriction(handParameters.friction());
             defaultFriction = handParameters.friction();
+        }
+        if (!moves.isEmpty() && freeObject == null) {
+            throw r.object("hand").error("moves", "carry a free object: add \"free\": true to the object, or remove them");
         }
         if (r.has("supports")) {
             int n = r.list("supports").size();
@@ -452,6 +460,8 @@ public final class Scenario implements Cloneable {
     public ObjectPlacement object() { return object; }
     /** The object's motion when it is free ({@code "object": {"free": true, ...}}), else null: fixed in place. */
     public FreeObject freeObject() { return freeObject; }
+    /** The hand base's segments ({@code hand.moves}), played in order; empty when the base stays put. */
+    public List<HandMove> moves() { return moves; }
     /** Static bodies under a free object ({@code "supports"}); empty without them. */
     public List<Support> supports() { return supports; }
     /** Wrenches on the free object ({@code "disturbances"}), in the order given; empty without them. */
@@ -546,6 +556,11 @@ public final class Scenario implements Cloneable {
         h.put("position_m", java.util.Arrays.copyOfRange(handPose, 0, 3));
         h.put("rotation_rad", java.util.Arrays.copyOfRange(handPose, 3, 6));
         if (!handParameters.isEmpty()) h.put("parameters", handParameters.toJson());
+        if (!moves.isEmpty()) {
+            List<Object> l = new ArrayList<>();
+            for (HandMove x : moves) l.add(x.toJson());
+            h.put("moves", l);
+        }
         m.put("hand", h);
         m.put("gravity_m_s2", gravity.clone());
         if (object != null) {
@@ -678,6 +693,7 @@ public final class Scenario implements Cloneable {
             c.freeObject = null;
             c.disturbances = List.of();
             c.supports = List.of();
+            c.moves = List.of();
         }
         c.unitsBySize = false;   // a placement made by the caller carries a chosen unit
         return c;

@@ -107,6 +107,58 @@ class FreeObjectTest {
         }
     }
 
+    /** The mug scenario with {@code fields} added to its object and {@code moves} (JSON array text) as the hand's. */
+    @SuppressWarnings("unchecked")
+    static Scenario mugMoved(String fields, String moves) {
+        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
+        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
+        ((Map<String, Object>) j.get("hand")).put("moves", Json.parse("moves", moves));
+        return Scenario.parse(MUG, JsonWriter.write(j));
+    }
+
+    /**
+     * The hand's moves: a 10 cm lift at 0.1 m/s and 1 m/s² takes 0.1 + 0.9 + 0.1 = 1.1 s (ramps
+     * of v/a = 0.1 s over 5 mm each, cruise 90 mm); a rotation's sign goes into its axis.
+     */
+    @Test
+    void handMovesAreReadWrittenBackAndRefusedNamingTheField() {
+        String free = "{\"free\": true, \"mass_kg\": 0.3}";
+        Scenario s = mugMoved(free, "[{\"type\": \"hold\", \"duration_s\": 4.7},"
+            + " {\"type\": \"line\", \"by_m\": [0, 0, 0.1], \"v_max\": 0.1, \"a_max\": 1},"
+            + " {\"type\": \"rotate\", \"axis\": [0, 2, 0], \"angle_rad\": -0.5, \"v_max\": 1, \"a_max\": 5}]");
+        assertEquals(3, s.moves().size());
+        assertEquals(4.7, s.moves().get(0).profile().duration());
+        HandMove lift = s.moves().get(1);
+        assertArrayEquals(new double[] {0, 0, 1}, lift.direction());
+        assertEquals(1.1, lift.profile().duration(), 1e-12);
+        double[] at = new double[3];
+        lift.profile().sample(0.1, at);
+        assertEquals(0.005, at[0], 1e-15);
+        lift.profile().sample(1.1, at);
+        assertEquals(0.1, at[0], 1e-15);
+        assertArrayEquals(new double[] {0, -1, 0}, s.moves().get(2).direction());
+        assertEquals(0.5, s.moves().get(2).profile().end());
+        Path dir = MUG.getParent();
+        Map<String, Object> json = s.toJson(dir);
+        Scenario back = Scenario.parse(MUG, JsonWriter.write(json));
+        assertEquals(JsonWriter.pretty(json), JsonWriter.pretty(back.toJson(dir)));
+        String[][] bad = {
+            {"{}", "[{\"type\": \"hold\", \"duration_s\": 1}]", "field hand.moves: carry a free object: add \"free\": true"},
+            {free, "[{\"type\": \"jump\"}]", "field hand.moves[0].type: must be line, rotate or hold, got \"jump\""},
+            {free, "[{\"type\": \"line\", \"by_m\": [0, 0, 0], \"v_max\": 0.1, \"a_max\": 1}]", "field hand.moves[0].by_m: must not be zero"},
+            {free, "[{\"type\": \"line\", \"by_m\": [0, 0, 0.1], \"v_max\": 0, \"a_max\": 1}]", "field hand.moves[0].v_max: must be > 0, got 0"},
+            {free, "[{\"type\": \"line\", \"by_m\": [0, 0, 0.1], \"v_max\": 0.1}]", "field hand.moves[0].a_max: missing"},
+            {free, "[{\"type\": \"rotate\", \"axis\": [0, 0, 0], \"angle_rad\": 1, \"v_max\": 1, \"a_max\": 1}]", "field hand.moves[0].axis: must not be zero"},
+            {free, "[{\"type\": \"rotate\", \"axis\": [0, 0, 1], \"angle_rad\": 0, \"v_max\": 1, \"a_max\": 1}]",
+                "field hand.moves[0].angle_rad: must be non-zero and within ±4π, got 0"},
+            {free, "[{\"type\": \"hold\", \"duration_s\": -1}]", "field hand.moves[0].duration_s: must be > 0"},
+        };
+        for (String[] b : bad) {
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugMoved(b[0], b[1]), b[1]);
+            assertTrue(e.getMessage().contains(b[2]), b[1] + " -> " + e.getMessage());
+        }
+    }
+
     @Test
     void theFieldsAreReadWithTheirDefaultsAndWrittenBackAsRead() {
         assertNull(Scenario.load(MUG).freeObject(), "without \"free\": true the object is fixed");
