@@ -29,24 +29,92 @@ public final class BodyScene {
     private final double[] gravity = {0, 0, -9.80665};
     private final double[] force = new double[3], torque = new double[3], disturbForce = new double[3], disturbTorque = new double[3];
     private final double[] objectPose = new double[12];
+    private final List<double[]> joints = new ArrayList<>();    // axis, origin, inertia, torque, worm (1/0), release angle, turned
+    private final List<int[]> supportJoints = new ArrayList<>();
+    private final double[] axis = new double[3], origin = new double[3];
     private double friction = 0.5, margin = ProximityContacts.DEFAULT_MARGIN, depth = 5 * ProximityContacts.DEFAULT_MARGIN;
     private double time;
 
     /** The object with its mesh at {@code worldFromMesh}, at rest. */
     public BodyScene(TriangleMesh objectMesh, MassProperties props, RigidTransform worldFromMesh) {
-        this.objectMesh = objectMesh;
-        this.objectTree = KdopTree.build(objectMesh, K);
-        this.objectTopology = new MeshTopology(objectMesh);
+        this(KdopTree.build(objectMesh, K), new MeshTopology(objectMesh), props, worldFromMesh);
+    }
+
+    /**
+     * As {@link #BodyScene(TriangleMesh, MassProperties, RigidTransform)} with the object's tree
+     * (any k; the supports' of the same k) and topology built already, shared read-only (a
+     * caller that makes many scenes of one object builds them once).
+     */
+    public BodyScene(KdopTree objectTree, MeshTopology objectTopology, MassProperties props, RigidTransform worldFromMesh) {
+        this.objectMesh = objectTree.mesh();
+        this.objectTree = objectTree;
+        this.objectTopology = objectTopology;
         this.body = new FreeBody(props, worldFromMesh);
         this.stepper = new BodyStepper(body);
     }
 
     /** Adds a static support: {@code mesh} placed by {@code pose}; returns its id (0, 1, …). */
     public int addSupport(TriangleMesh mesh, RigidTransform pose) {
-        KdopTree tree = KdopTree.build(mesh, K);
+        return addSupport(KdopTree.build(mesh, K), new MeshTopology(mesh), pose);
+    }
+
+    /** Adds a static support whose tree (the object's k) and topology are built already, shared read-only; returns its id. */
+    public int addSupport(KdopTree tree, MeshTopology topology, RigidTransform pose) {
         supportPoses.add(pose.toArray());
-        supportQueries.add(new ProximityContacts(tree, new MeshTopology(mesh), objectTree, objectTopology));
+        supportQueries.add(new ProximityContacts(tree, topology, objectTree, objectTopology));
         return supportQueries.size() - 1;
+    }
+
+    /**
+     * Adds a joint that presses supports on the object (a finger joint of a locked grasp): each
+     * step it is a follower of {@link BodyStepper#addFollower(double[], double[], double, double, boolean)}
+     * — at rest at the step's start, torque τ closing, held against opening by its worm or not —
+     * and the contacts of the supports it {@link #moves} depend on it. The supports keep their
+     * poses: the joint's motion acts within each step, as a press, which is what a link held by
+     * its worm does (it turns by no visible angle while the object stays).
+     *
+     * @return its index
+     */
+    public int addJoint(double[] axis, double[] origin, double inertia, double torqueNm, boolean wormHeld) {
+        return addJoint(axis, origin, inertia, torqueNm, wormHeld, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * {@link #addJoint(double[], double[], double, double, boolean)} whose torque is an elastic
+     * preload: it falls linearly from τ to 0 as the joint turns closing by {@code releaseRad}
+     * (τ·(1 − θ/θ_r), θ the angle it has turned since it was added), as a link held by its worm
+     * presses with the energy its drive train and the contacts stored, which a tiny motion
+     * releases; infinity: τ throughout.
+     */
+    public int addJoint(double[] axis, double[] origin, double inertia, double torqueNm, boolean wormHeld, double releaseRad) {
+        if (!(releaseRad > 0) || !(torqueNm >= 0) || !Double.isFinite(torqueNm)) {
+            throw new IllegalArgumentException("a joint's torque must be finite and >= 0 and its release angle > 0, got " + torqueNm
+                + " N*m over " + releaseRad + " rad");
+        }
+        joints.add(new double[] {axis[0], axis[1], axis[2], origin[0], origin[1], origin[2], inertia, torqueNm, wormHeld ? 1 : 0,
+            releaseRad, 0});
+        return joints.size() - 1;
+    }
+
+    /** Each joint's angle turned since it was added, rad (what is left of its preload follows from it); a new array. */
+    public double[] jointTurns() {
+        double[] t = new double[joints.size()];
+        for (int j = 0; j < t.length; j++) t[j] = joints.get(j)[10];
+        return t;
+    }
+
+    /** Sets each joint's turned angle (as {@link #jointTurns} gave them), rad. */
+    public void setJointTurns(double[] turns) {
+        for (int j = 0; j < turns.length; j++) joints.get(j)[10] = turns[j];
+    }
+
+    /** Says that {@code joint} ({@link #addJoint}) moves {@code support} ({@link #addSupport}). */
+    public void moves(int joint, int support) {
+        while (supportJoints.size() <= support) supportJoints.add(new int[0]);
+        int[] a = supportJoints.get(support);
+        int[] b = java.util.Arrays.copyOf(a, a.length + 1);
+        b[a.length] = joint;
+        supportJoints.set(support, b);
     }
 
     /** Sets gravity (m/s², world); returns this. */
@@ -82,8 +150,21 @@ public final class BodyScene {
     public ContactSolver.Outcome step(double h) {
         contacts.clear();
         body.worldFromMesh(objectPose, 0);
+        stepper.clearFollowers();
+        for (double[] j : joints) {
+            axis[0] = j[0]; axis[1] = j[1]; axis[2] = j[2];
+            origin[0] = j[3]; origin[1] = j[4]; origin[2] = j[5];
+            double left = j[9] == Double.POSITIVE_INFINITY ? 1 : Math.max(0, 1 - j[10] / j[9]);
+            stepper.addFollower(axis, origin, j[6], j[7] * left, j[8] != 0);
+        }
         for (int s = 0; s < supportQueries.size(); s++) {
+            int first = contacts.size();
             supportQueries.get(s).find(supportPoses.get(s), objectPose, margin, depth, friction, null, s, contacts);
+            if (s < supportJoints.size()) {
+                for (int joint : supportJoints.get(s)) {
+                    for (int i = first; i < contacts.size(); i++) contacts.dependsOn(i, joint);
+                }
+            }
         }
         double m = body.mass();
         for (int i = 0; i < 3; i++) {
@@ -91,6 +172,7 @@ public final class BodyScene {
             torque[i] = disturbTorque[i];
         }
         ContactSolver.Outcome o = stepper.step(h, force, torque, contacts);
+        for (int j = 0; j < joints.size(); j++) joints.get(j)[10] += h * stepper.followerVelocity(j);
         time += h;
         return o;
     }

@@ -36,6 +36,7 @@ public final class BodyStepper {
     private int followers;
     private double[] fAxis = new double[12], fOrigin = new double[12], fInertia = new double[4], fTorque = new double[4];
     private double[] fVelocity = new double[4];
+    private boolean[] fWorm = new boolean[4];
     private final double[] t1 = new double[3], t2 = new double[3], rel = new double[3];
 
     /** Steps {@code body}. */
@@ -65,6 +66,16 @@ public final class BodyStepper {
      * @return its index (for {@link BodyContacts#dependsOn})
      */
     public int addFollower(double[] axis, double[] origin, double inertia, double torqueNm) {
+        return addFollower(axis, origin, inertia, torqueNm, true);
+    }
+
+    /**
+     * {@link #addFollower(double[], double[], double, double)}, with or without the worm: a
+     * follower not {@code wormHeld} has no bound on its velocity, so an object that pushes it
+     * with more than τ drives it open (a joint that gives way at a torque, as an engaged clutch
+     * does at its breakaway torque when τ is that).
+     */
+    public int addFollower(double[] axis, double[] origin, double inertia, double torqueNm, boolean wormHeld) {
         if (followers == fInertia.length) {
             int cap = 2 * followers;
             fAxis = Arrays.copyOf(fAxis, 3 * cap);
@@ -72,12 +83,14 @@ public final class BodyStepper {
             fInertia = Arrays.copyOf(fInertia, cap);
             fTorque = Arrays.copyOf(fTorque, cap);
             fVelocity = Arrays.copyOf(fVelocity, cap);
+            fWorm = Arrays.copyOf(fWorm, cap);
         }
         int j = followers++;
         System.arraycopy(axis, 0, fAxis, 3 * j, 3);
         System.arraycopy(origin, 0, fOrigin, 3 * j, 3);
         fInertia[j] = inertia;
         fTorque[j] = torqueNm;
+        fWorm[j] = wormHeld;
         return j;
     }
 
@@ -134,6 +147,7 @@ public final class BodyStepper {
             }
         }
         for (int j = 0; j < followers; j++) {
+            if (!fWorm[j]) continue;
             int c = problem.addConstraint(0);
             problem.jacobian()[(3 * c) * nv + 6 + j] = 1;   // the worm: velocity ≥ 0
         }

@@ -53,6 +53,7 @@ public final class HandSim implements Runnable {
         SwingCommand.class,
         QualityCommand.class,
         GraspCommand.class,
+        HoldTestCommand.class,
         PlanCommand.class
         // sub-commands register here, one line each; the launcher adds the resident server's
         // own (handsim server), which sits above this package (execute(List, String...))

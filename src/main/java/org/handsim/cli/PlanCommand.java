@@ -22,6 +22,9 @@ import org.handsim.text.JsonWriter;
 import org.handsim.files.OutputSet;
 import org.handsim.process.Phase;
 import picocli.CommandLine.Command;
+import org.handsim.hand.HandDescription;
+import org.handsim.hold.HoldSettings;
+import org.handsim.plan.PlanHold;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -45,7 +48,13 @@ import picocli.CommandLine.Model.CommandSpec;
         "column aside). plan.csv's header:",
         "  trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,",
         "  standoff_m,contacts,force_closure,epsilon,volume,hold_min_N,final_state1,",
-        "  final_state2,final_state3,sim_time_s,wall_s,error"})
+        "  final_state2,final_state3,sim_time_s,wall_s,error",
+        "--hold-test also runs handsim hold-test's six pushes on every trial's grasp",
+        "(F from --hold-force, else 10 m/s2 x the object's mass: --hold-mass, else its",
+        "closed mesh at 1000 kg/m3; 2 s each at 1 ms, 5 cm, 15 deg) and adds the columns",
+        "  hold_-x,hold_+x,hold_-y,hold_+y,hold_-z,hold_+z,hold_margin",
+        "(the six verdicts and the smallest margin); --rank-by hold-margin ranks the",
+        "best grasps by that margin, then epsilon."})
 public final class PlanCommand implements Callable<Integer> {
     /** The files of a plan's folder: plan.json is published last. */
     static final OutputSet.Layout LAYOUT = new OutputSet.Layout("plan.json",
@@ -86,6 +95,19 @@ public final class PlanCommand implements Callable<Integer> {
 
     @picocli.CommandLine.Mixin HandOptions hand = new HandOptions();
 
+    @Option(names = "--hold-test", description = "run the six-direction hold test on every trial's grasp")
+    boolean holdTest;
+
+    @Option(names = "--hold-force", paramLabel = "N", description = "the hold test's push, newtons (default 10 m/s2 x the object's mass)")
+    Double holdForce;
+
+    @Option(names = "--hold-mass", paramLabel = "KG", description = "the object's mass for the hold test, kg (default: its closed mesh at 1000 kg/m3)")
+    Double holdMass;
+
+    @Option(names = "--rank-by", paramLabel = "epsilon|hold-margin", defaultValue = "epsilon",
+        description = "what ranks the best grasps (default epsilon; hold-margin needs --hold-test)")
+    String rankBy;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
@@ -94,6 +116,26 @@ public final class PlanCommand implements Callable<Integer> {
             throw CliError.usage("handsim: --trials must be in [1, " + PlanSpec.MAX_TRIALS + "] (a million trials take one to two hours"
                 + " on two cores), got " + trials);
         }
+        if (!rankBy.equals("epsilon") && !rankBy.equals("hold-margin")) {
+            throw CliError.usage("handsim: --rank-by must be epsilon or hold-margin, got " + Args.typed(spec, "--rank-by"));
+        }
+        if (!holdTest && (rankBy.equals("hold-margin") || holdForce != null || holdMass != null)) {
+            throw CliError.usage("handsim: " + (rankBy.equals("hold-margin") ? "--rank-by hold-margin" : holdForce != null ? "--hold-force" : "--hold-mass")
+                + " needs --hold-test");
+        }
+        PlanHold planHold = null;
+        if (holdTest) {
+            if (holdMass != null && !(holdMass > 0 && Double.isFinite(holdMass))) {
+                throw CliError.usage("handsim: --hold-mass must be a finite number > 0, got " + Args.typed(spec, "--hold-mass"));
+            }
+            try {
+                HoldSettings hs = HoldSettings.defaults(HandDescription.barrettHand().handRatingN());
+                if (holdForce != null) hs = hs.withForce(holdForce);
+                planHold = new PlanHold(hs, holdMass != null ? holdMass : Double.NaN, Double.NaN, rankBy.equals("hold-margin"));
+            } catch (IllegalArgumentException e) {
+                throw CliError.usage("handsim: " + e.getMessage().replace("--force", "--hold-force"));
+            }
+        }
         EngineChoice eng = EngineChoice.of(engine, master, threads, Runtime.getRuntime().availableProcessors());
         Args.frictionAndEdges(friction, null);
         Scenario.Units unit = Args.units(units);
@@ -101,10 +143,13 @@ public final class PlanCommand implements Callable<Integer> {
         TrialRunner runner;
         try {
             hand.check();
-            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES, unit).withHandParameters(hand.parameters());
+            planSpec = PlanSpec.forTarget(target, trials, seed, friction, FrictionCone.DEFAULT_EDGES, unit).withHandParameters(hand.parameters())
+                .withHold(planHold);
             runner = new TrialRunner(planSpec);      // loads the object once here: a bad file is one error, not N rows
         } catch (ScenarioException e) {
             throw new CliError(CliError.LOAD, "handsim: " + e.getMessage());
+        } catch (IllegalArgumentException e) {      // the hold test cannot know the object's mass
+            throw new CliError(CliError.LOAD, "handsim: " + target + ": " + e.getMessage());
         }
         Path dir = out != null ? Args.outputPath("--out", out) : Path.of("out", "plan-" + planSpec.name());
         if (unit == null) {
@@ -143,6 +188,10 @@ public final class PlanCommand implements Callable<Integer> {
             planSpec.name(), trials, output.failed(), output.forceClosure(), fmt(best == null ? 0 : best.epsilon()),
             best == null ? "" : " (trial " + best.index() + ")", (double) summary.get("wall_time_s"), (double) summary.get("trials_per_s"),
             engine, eng.where()));
+        if (holdTest) {
+            stdout.println(String.format(Locale.ROOT, "hold test: %d of %d trials held in all six directions%s", output.heldAll(),
+                trials - output.failed(), rankBy.equals("hold-margin") ? "; best/ ranked by the smallest hold margin" : ""));
+        }
         int nBest = output.bestFirst().size();
         stdout.println("wrote " + SafeText.escape(dir.toString()) + "/{plan.csv, plan.json" + (nBest == 0 ? "" : nBest == 1 ? ", best/01.json"
             : ", best/01.json.." + String.format("%02d", nBest) + ".json")

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.PriorityQueue;
 import java.util.function.Consumer;
+import org.handsim.hold.HoldSettings;
 import org.handsim.files.AtomicFile;
 import org.handsim.text.JsonWriter;
 import org.handsim.process.Phase;
@@ -39,11 +40,20 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     private final TrialRunner scenarios;
     private final AtomicFile csv;
     private final Writer w;
-    private final PriorityQueue<TrialResult> best = new PriorityQueue<>(BETTER_FIRST.reversed());
+    /**
+     * With {@code --rank-by hold-margin}: the hold test's smallest margin, descending; then as
+     * {@link #BETTER_FIRST}.
+     */
+    static final Comparator<TrialResult> HELD_FIRST = Comparator.comparingDouble(TrialResult::holdMargin).reversed()
+        .thenComparing(BETTER_FIRST);
+
+    private final Comparator<TrialResult> order;
+    private final boolean withHold;
+    private final PriorityQueue<TrialResult> best;
     private final EpsilonHistogram histogram = new EpsilonHistogram();
     private final DirectionMap directions;
     private final Consumer<Integer> progress;
-    private long rows, failed, forceClosure;
+    private long rows, failed, forceClosure, heldAll;
     private final long[] outcomes = new long[TrialOutcome.values().length];
     private int expected;
 
@@ -69,9 +79,13 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         this.scenarios = scenarios;
         this.progress = progress;
         this.directions = new DirectionMap(scenarios.spec().trials());   // cells sized to the trial count
+        PlanHold hold = scenarios.spec().hold();
+        this.withHold = hold != null;
+        this.order = hold != null && hold.rankByMargin() ? HELD_FIRST : BETTER_FIRST;
+        this.best = new PriorityQueue<>(order.reversed());
         this.csv = new AtomicFile(dir.resolve("plan.csv"));
         this.w = csv.writer();
-        w.write(TrialResult.HEADER);
+        w.write(withHold ? TrialResult.HEADER + TrialResult.HOLD_HEADER : TrialResult.HEADER);
         w.write('\n');
     }
 
@@ -82,7 +96,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         }
         expected++;
         try {
-            w.write(r.csvRow());
+            w.write(r.csvRow(withHold));
             w.write('\n');
         } catch (IOException e) {
             throw new java.io.UncheckedIOException(e);
@@ -92,6 +106,11 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
             failed++;
         } else {
             if (r.forceClosure()) forceClosure++;
+            if (r.holdPassed() != null) {
+                boolean all = true;
+                for (boolean b : r.holdPassed()) all &= b;
+                if (all) heldAll++;
+            }
             if (r.outcome() != null) outcomes[r.outcome().ordinal()]++;
             histogram.add(r.forceClosure(), r.epsilon());
             directions.add(r.approach(), r.forceClosure() ? r.epsilon() : 0);
@@ -142,6 +161,18 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
         json.put("trials_per_s", wallS > 0 ? spec.trials() / wallS : 0.0);
         json.put("engine", engine);
         json.put("seed", spec.seed());
+        if (withHold) {
+            HoldSettings hs = spec.hold().settings();
+            Map<String, Object> h = new LinkedHashMap<>();
+            h.put("force_N", Double.isNaN(hs.forceN()) ? null : (Object) hs.forceN());
+            h.put("duration_s", hs.durationS());
+            h.put("dt_s", hs.dtS());
+            h.put("max_displacement_m", hs.maxDisplacementM());
+            h.put("max_rotation_deg", hs.maxRotationDeg());
+            h.put("held_all_six", heldAll);
+            h.put("ranked_by", spec.hold().rankByMargin() ? "hold_margin" : "epsilon");
+            json.put("hold_test", h);
+        }
         AtomicFile.writeString(dir.resolve("plan.json"), JsonWriter.pretty(json));
         return json;
     }
@@ -158,7 +189,7 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     /** The best trials with force closure so far, best first (at most {@link #BEST}). */
     public List<TrialResult> bestFirst() {
         List<TrialResult> l = new ArrayList<>(best);
-        l.sort(BETTER_FIRST);
+        l.sort(order);
         return l;
     }
 
@@ -167,6 +198,8 @@ public final class PlanOutput implements Consumer<TrialResult>, AutoCloseable {
     public long rows() { return rows; }
     public long failed() { return failed; }
     public long forceClosure() { return forceClosure; }
+    /** Trials whose grasp held in all six directions of the hold test (0 without it). */
+    public long heldAll() { return heldAll; }
 
     /** Deletes the temporary table unless {@link #finish} committed it. */
     @Override

@@ -30,10 +30,21 @@ import org.handsim.text.JsonWriter;
  * @param seed         the seed of the whole plan
  * @param mu           Coulomb friction coefficient of the evaluation
  * @param edges        friction-cone edges of the evaluation
+ * @param hold         the hold test run on every trial's grasp, or null (none)
  */
 public record PlanSpec(String name, String target, String templateJson, String templateFile, int trials, long seed,
-                       double mu, int edges) implements Serializable {
-    private static final long serialVersionUID = 2L;
+                       double mu, int edges, PlanHold hold) implements Serializable {
+    private static final long serialVersionUID = 3L;
+
+    /** A spec without the hold test. */
+    public PlanSpec(String name, String target, String templateJson, String templateFile, int trials, long seed, double mu, int edges) {
+        this(name, target, templateJson, templateFile, trials, seed, mu, edges, null);
+    }
+
+    /** This spec with the hold test {@code h} (null: none) run on every trial's grasp. */
+    public PlanSpec withHold(PlanHold h) {
+        return new PlanSpec(name, target, templateJson, templateFile, trials, seed, mu, edges, h);
+    }
 
     /** The closing profile of an object-file target: every finger motor 0 → 17 500 counts (as scenarios/mug-grasp.json). */
     public static final double CLOSE_TO_COUNTS = 17_500, CLOSE_V_MAX = 5_000, CLOSE_A_MAX = 25_000;
@@ -128,7 +139,7 @@ public record PlanSpec(String name, String target, String templateJson, String t
         t.put("hand", hand);
         String text = JsonWriter.write(t);
         Scenario.parse(Path.of(templateFile), text);
-        return new PlanSpec(name, target, text, templateFile, trials, seed, mu, edges);
+        return new PlanSpec(name, target, text, templateFile, trials, seed, mu, edges, hold);
     }
 
     /** The template of a bare object file: at the origin, scale 1, the default closing profile and time step. */

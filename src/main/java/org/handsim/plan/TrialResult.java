@@ -13,12 +13,35 @@ import org.handsim.text.SafeText;
  * @param palmRotation its axis-angle rotation, radians (null likewise)
  * @param outcome      how the grasp ended, for the plan's diagnosis when no trial reaches force
  *                     closure ({@link TrialOutcome}; null for a failed trial); not in plan.csv
+ * @param holdPassed   the hold test's six verdicts, in {@link org.handsim.hold.HoldTest#DIRECTIONS}' order
+ *                     (−x, +x, −y, +y, −z, +z), or null (no hold test, or the trial failed)
+ * @param holdMargin   the hold test's smallest margin over the six ({@link org.handsim.hold.DirectionResult#margin}),
+ *                     or NaN
  */
 public record TrialResult(int index, boolean ok, double[] approach, double roll, int spreadCounts, double standoff,
                           int contacts, boolean forceClosure, double epsilon, double volume, double holdMinN,
                           String[] finalStates, double simTimeS, double wallS, String error,
-                          double[] palmPosition, double[] palmRotation, TrialOutcome outcome) implements Serializable {
-    private static final long serialVersionUID = 2L;
+                          double[] palmPosition, double[] palmRotation, TrialOutcome outcome, boolean[] holdPassed,
+                          double holdMargin) implements Serializable {
+    private static final long serialVersionUID = 3L;
+
+    /** A row without the hold test. */
+    public TrialResult(int index, boolean ok, double[] approach, double roll, int spreadCounts, double standoff,
+                       int contacts, boolean forceClosure, double epsilon, double volume, double holdMinN,
+                       String[] finalStates, double simTimeS, double wallS, String error,
+                       double[] palmPosition, double[] palmRotation, TrialOutcome outcome) {
+        this(index, ok, approach, roll, spreadCounts, standoff, contacts, forceClosure, epsilon, volume, holdMinN, finalStates, simTimeS,
+            wallS, error, palmPosition, palmRotation, outcome, null, Double.NaN);
+    }
+
+    /** The hold test's columns, after {@link #HEADER}'s, in a plan run with {@code --hold-test} (contract). */
+    public static final String HOLD_HEADER = ",hold_-x,hold_+x,hold_-y,hold_+y,hold_-z,hold_+z,hold_margin";
+
+    /** This row with the hold test's answer. */
+    public TrialResult withHold(boolean[] passed, double margin) {
+        return new TrialResult(index, ok, approach, roll, spreadCounts, standoff, contacts, forceClosure, epsilon, volume, holdMinN,
+            finalStates, simTimeS, wallS, error, palmPosition, palmRotation, outcome, passed, margin);
+    }
 
     /** The header of plan.csv (contract). */
     public static final String HEADER = "trial,status,approach_x,approach_y,approach_z,roll_rad,spread_counts,standoff_m,"
@@ -29,6 +52,22 @@ public record TrialResult(int index, boolean ok, double[] approach, double roll,
         String e = error == null ? "" : error.replace('\n', ' ').replace('\r', ' ');
         return new TrialResult(p.index(), false, p.approach(), p.roll(), p.spreadCounts(), standoff, 0, false, 0, 0, 0,
             null, 0, wallS, e, null, null, null);
+    }
+
+    /**
+     * The CSV row (no line end) with the hold test's columns ({@link #HOLD_HEADER}; empty cells
+     * for a trial without its answer) when {@code withHold}.
+     */
+    public String csvRow(boolean withHold) {
+        if (!withHold) return csvRow();
+        StringBuilder sb = new StringBuilder(csvRow());
+        if (holdPassed == null) {
+            sb.append(",,,,,,,");
+        } else {
+            for (boolean b : holdPassed) sb.append(',').append(b);
+            sb.append(',').append(Decimal.orEmpty(holdMargin));
+        }
+        return sb.toString();
     }
 
     /** The CSV row (no line end). Numbers in text.Decimal's form (shortest round trip, integers as integers). */

@@ -7,7 +7,12 @@ import java.util.function.IntConsumer;
 import org.handsim.dynamics.HandDynamics;
 import org.handsim.hand.HandDescription;
 import org.handsim.clutch.ClutchState;
+import org.handsim.body.MassProperties;
 import org.handsim.grasp.GraspAssessment;
+import org.handsim.hold.DirectionResult;
+import org.handsim.hold.HoldTest;
+import org.handsim.hold.LockedGrasp;
+import org.handsim.hold.ObjectMass;
 import org.handsim.model.HandClearance;
 import org.handsim.model.HandModel;
 import org.handsim.scenario.Scenario;
@@ -48,6 +53,8 @@ public final class TrialRunner {
     private final ObjectFrame shape;
     private final double[] startCounts = new double[3];
     private final IntConsumer fault;
+    /** The object's mass properties for the hold test (null without it). */
+    private final MassProperties holdMass;
     /** The last trial's collision: the next trial's takes over its query scratch (no allocation). */
     private SceneGeometry geometry;
 
@@ -72,6 +79,8 @@ public final class TrialRunner {
         this.shape = new ObjectFrame(scene.objectMesh(), scene.worldFromObject(), clearance.objectCentroid());
         this.sampler = new TrialSampler(spec.trials(), spec.seed(), shape);
         this.standoffs = new StandoffRule(shape, new FingertipPath(HandDescription.barrettHand()));
+        PlanHold h = spec.hold();
+        this.holdMass = h == null ? null : ObjectMass.of(scene.objectMesh(), h.massKg(), h.densityKgM3());
         for (int k = 0; k < 3; k++) startCounts[k] = t.startCounts(k);
         this.fault = fault;
     }
@@ -116,12 +125,34 @@ public final class TrialRunner {
         double[][] frames = {m.framesWorld(1), m.framesWorld(2), m.framesWorld(3)};
         if (clearance.fingersCross(frames)) {
             // fingers that closed through each other: no pose of the hand, so no grasp (force closure false, ε, volume, hold 0)
-            return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), standoff, contacts,
+            TrialResult r = new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), standoff, contacts,
                 false, 0, 0, 0, states, m.time(), wall, "", ap.position(), ap.rotation(), TrialOutcome.FINGERS_CROSS);
+            // no pose of the hand: nothing holds it
+            return spec.hold() == null ? r : r.withHold(new boolean[6], Double.NEGATIVE_INFINITY);
         }
-        return new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), standoff, contacts,
+        TrialResult r = new TrialResult(p.index(), true, p.approach(), p.roll(), p.spreadCounts(), standoff, contacts,
             g.quality().forceClosure(), g.quality().epsilon(), g.quality().volume(), g.holdMinN(), states, m.time(), wall, "",
             ap.position(), ap.rotation(), TrialOutcome.of(g, touch.approach()));
+        return spec.hold() == null ? r : holdTest(r, m, sg, t0);
+    }
+
+    /**
+     * The trial's row with the hold test's six verdicts and smallest margin (verdicts only: a
+     * failed push stops where it crossed a threshold); the trial's wall time includes it.
+     */
+    private TrialResult holdTest(TrialResult r, HandModel m, SceneGeometry sg, long t0) {
+        HoldTest test = new HoldTest(LockedGrasp.of(m, sg, holdMass), spec.hold().settings());
+        boolean[] passed = new boolean[6];
+        double margin = Double.POSITIVE_INFINITY;
+        for (int d = 0; d < 6; d++) {
+            DirectionResult x = test.push(d, true);
+            passed[d] = x.passed();
+            margin = Math.min(margin, x.margin());
+        }
+        double wall = (System.nanoTime() - t0) / 1e9;
+        return new TrialResult(r.index(), r.ok(), r.approach(), r.roll(), r.spreadCounts(), r.standoff(), r.contacts(), r.forceClosure(),
+            r.epsilon(), r.volume(), r.holdMinN(), r.finalStates(), r.simTimeS(), wall, r.error(), r.palmPosition(), r.palmRotation(),
+            r.outcome(), passed, margin);
     }
 
     /**
