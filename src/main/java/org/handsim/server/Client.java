@@ -55,7 +55,7 @@ import java.util.concurrent.TimeUnit;
 public final class Client {
     static final int MAGIC = 0x48534331;   // "HSC1"
     static final byte RUN = 'R', STATUS = 'S', STOP = 'Q';
-    static final byte ACCEPTED = 'A', BUSY = 'B', REFUSED = 'N';
+    static final byte ACCEPTED = 'A', BUSY = 'B', REFUSED = 'N', WAIT = 'W';
     static final byte OUT = 'O', ERR = 'E', EXIT = 'X', CANCEL = 'C';
 
     /** The commands a server runs: short ones of the local engine (not gui, not tradeoff, not Spark). */
@@ -128,6 +128,7 @@ public final class Client {
         try (SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX)) {
             new DataInputStream(new java.io.BufferedInputStream(in(ch)));
             new DataOutputStream(new java.io.BufferedOutputStream(out(ch)));
+            new Watchdog(ch, answerMs()).disarm();
             ch.connect(UnixDomainSocketAddress.of(nowhere));   // nobody there: refused, as a stale socket is
         } catch (IOException | RuntimeException expected) {
             // what was to be loaded is loaded
@@ -153,6 +154,13 @@ public final class Client {
     static long answerMs() {
         return Long.getLong("handsim.server.answerMs", ANSWER_MS);
     }
+
+    /**
+     * How long a client waits, once its server has answered {@link #WAIT} (it is ending a warm-up
+     * run at the run's next cancellation point), for it to accept or refuse: a cold warm-up run on a
+     * loaded machine can take seconds to reach one, but not this long.
+     */
+    static final long WARM_UP_WAIT_MS = 20_000;
 
     /**
      * The longest frame or text either side takes (a server's output frames are at most
@@ -384,6 +392,7 @@ public final class Client {
                 for (String a : args) writeString(c.out, a);
                 c.out.flush();
                 answer = c.in.read();
+                if (answer == WAIT && dog.extend(WARM_UP_WAIT_MS)) answer = c.in.read();
             } catch (IOException e) {
                 ch.close();
                 if (dog.fired) return timedOut(c, dog);
@@ -543,7 +552,7 @@ public final class Client {
         }
         try {
             for (String l : Files.readAllLines(Path.of("/proc/self/limits"), StandardCharsets.ISO_8859_1)) {
-                if (l.startsWith("Max ")) sb.append("limit ").append(l.replaceAll("\\s+", " ").trim()).append('\n');
+                if (l.startsWith("Max ")) sb.append("limit ").append(squeezed(l)).append('\n');
             }
         } catch (IOException | RuntimeException e) {
             sb.append("limit ?\n");
@@ -556,6 +565,21 @@ public final class Client {
             sb.append("nice ?\n");
         }
         return sb.toString();
+    }
+
+    /**
+     * The line with each run of spaces made one, trimmed: by hand, since a regular expression
+     * would make the client's JVM spin the method-handle classes it uses (about 30 ms).
+     */
+    private static String squeezed(String l) {
+        StringBuilder sb = new StringBuilder(l.length());
+        for (int i = 0; i < l.length(); i++) {
+            char c = l.charAt(i);
+            if (c != ' ' && c != '\t') sb.append(c);
+            else if (sb.length() > 0 && sb.charAt(sb.length() - 1) != ' ') sb.append(' ');
+        }
+        int n = sb.length();
+        return n > 0 && sb.charAt(n - 1) == ' ' ? sb.substring(0, n - 1) : sb.toString();
     }
 
     /** This process's umask (Linux: /proc/self/status), "?" if unknown. */

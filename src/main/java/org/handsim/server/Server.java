@@ -285,6 +285,8 @@ public final class Server {
             synchronized (this) {
                 clientCame = true;   // no more warming up
                 if (warming) {       // a warm-up run: it stops at its next cancellation point, and the client is served
+                    out.writeByte(Client.WAIT);   // alive: the client waits longer than for a first answer
+                    out.flush();
                     warmUpCancelledAt = System.nanoTime();
                     CommandContext.cancel();
                     while (warming) {

@@ -12,6 +12,7 @@ import java.nio.channels.SocketChannel;
 final class Watchdog extends Thread {
     private final SocketChannel ch;
     final long ms;
+    private long end;
     private boolean disarmed;
     volatile boolean fired;
 
@@ -21,12 +22,12 @@ final class Watchdog extends Thread {
         setDaemon(true);
         this.ch = ch;
         this.ms = ms;
+        this.end = System.nanoTime() + ms * 1_000_000;
         start();
     }
 
     @Override
     public void run() {
-        long end = System.nanoTime() + ms * 1_000_000;
         synchronized (this) {
             for (long left = ms; left > 0 && !disarmed; left = (end - System.nanoTime()) / 1_000_000) {
                 try {
@@ -43,6 +44,13 @@ final class Watchdog extends Thread {
         } catch (IOException e) {
             // closed already
         }
+    }
+
+    /** Gives the peer {@code more} ms from now (it has said it is alive and why it waits); false if it had fired already. */
+    synchronized boolean extend(long more) {
+        end = System.nanoTime() + more * 1_000_000;
+        notifyAll();
+        return !fired;
     }
 
     /** Disarms it; false if it had fired already. */
