@@ -10,6 +10,7 @@ import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
 import org.handsim.math.RigidTransform;
 import org.handsim.scenario.Scenario;
+import org.handsim.scenario.ScenarioException;
 import org.handsim.scenario.SceneMeshes;
 import org.handsim.scenario.UnitRule;
 import org.handsim.trace.Recorder;
@@ -179,6 +180,12 @@ public final class HandModel {
      * @param recorder where the trace goes (e.g. {@link Recorder#bounded}), or null for none
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
+        if (scenario.freeObject() != null) {
+            if (objectContacts instanceof SceneGeometry sg) FreeObjectMass.of(scenario, sg.objectMesh());
+            // the free object's step (org.handsim.body) is not yet part of this loop: refuse rather than run it fixed
+            throw new ScenarioException(scenario.file() + ": field object.free: a free object is read and checked but not simulated"
+                + " by this version; remove \"free\": true to run the object fixed in place");
+        }
         this.scenario = scenario;
         this.hand = scenario.hand();
         this.tr = new Transmission(hand);

@@ -32,13 +32,21 @@ import org.handsim.text.JsonObject;
  *   "name": "paper-breakaway",
  *   "description": "...",                     // optional, free text
  *   "notes": { "any": "text" },               // optional: choices and their reasons
- *   "hand": { "position_m": [0,0,0], "rotation_rad": [0,0,0] },   // world <- palm (axis-angle)
+ *   "hand": { "position_m": [0,0,0], "rotation_rad": [0,0,0],     // world <- palm (axis-angle)
+ *             "moves": [ {"type": "hold", "duration_s": 4},          // optional, free object only: the base's segments
+ *                        {"type": "line", "by_m": [0,0,0.1], "v_max": 0.1, "a_max": 1},
+ *                        {"type": "rotate", "axis": [1,0,0], "angle_rad": 0.5, "v_max": 1, "a_max": 5} ] },
  *   "gravity_m_s2": [-9.81, 0, 0],            // world frame
  *   "object": {                                // optional
  *     "file": "../vrml/objects/cube.wrl",      // relative to the scenario file; .wrl, .obj or .stl
  *     "position_m": [..], "rotation_rad": [..], "scale": 1.0, "divisions": 24,
  *     "units": "m",                            // the file's unit: auto (default), mm, cm or m
- *     "friction": 0.5 },                       // Coulomb μ of the contacts, ≥ 0 (default 0.5)
+ *     "friction": 0.5,                         // Coulomb μ of the contacts, ≥ 0 (default 0.5)
+ *     "free": true, "mass_kg": 0.3,            // optional: a free object (FreeObject), mass_kg or density_kg_m3,
+ *     "inertia_kg_m2": [[..],[..],[..]], "com_m": [..],        // optional (default from the closed mesh),
+ *     "velocity_m_s": [..], "angular_velocity_rad_s": [..], "release_s": 0 },   // world, at release
+ *   "supports": [ {"box_m": [x,y,z], "position_m": [..], "rotation_rad": [..]}, {"file": "table.stl", ...} ],   // free object only
+ *   "disturbances": [ {"from_s": 1, "to_s": 1.2, "force_N": [x,y,z], "torque_N_m": [x,y,z]} ],   // free object only; world, at its centre of mass
  *   "start_counts": { "M1": 0, "M2": 0, "M3": 0, "M4": 0 },        // optional, default 0
  *   "motors": {                                // each motor: a list of segments played in order
  *     "M3": [ {"type": "trapezoid", "to": 17500, "v_max": 5000, "a_max": 25000},
@@ -68,6 +76,10 @@ public final class Scenario implements Cloneable {
     private double[] handPose = new double[6];   // position_m, rotation_rad as written
     private double[] gravity;
     private ObjectPlacement object;
+    private FreeObject freeObject;
+    private List<Disturbance> disturbances = List.of();
+    private List<Support> supports = List.of();
+    private List<HandMove> moves = List.of();
     private double[] startCounts = new double[4];
     private Trajectory[] motors = new Trajectory[4];
     private double dt, duration;
@@ -185,14 +197,16 @@ public final class Scenario implements Cloneable {
         this.file = file;
         this.hand = hand;
         this.root = r;
-        r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "start_counts", "motors", "dt_s", "duration_s", "outputs");
+        r.allowOnly("name", "description", "notes", "hand", "gravity_m_s2", "object", "supports", "disturbances", "start_counts", "motors", "dt_s",
+            "duration_s", "outputs");
         name = r.string("name");
         String bad = FileName.problem(name);
         if (bad != null) throw r.error("name", bad + ", got \"" + name + "\"");
         description = r.string("description", "");
         if (r.has("hand")) {
             JsonObject h = r.object("hand");
-            h.allowOnly("position_m", "rotation_rad", "parameters");
+            h.allowOnly("position_m", "rotation_rad", "parameters", "moves");
+            moves = List.copyOf(HandMove.parse(h));
             if (h.has("parameters")) {
                 handParameters = HandParametersJson.parse(h.object("parameters"));
                 this.hand = hand.with(handParameters);
@@ -209,7 +223,11 @@ public final class Scenario implements Cloneable {
         }
         if (r.has("object")) {
             JsonObject o = r.object("object");
-            o.allowOnly("file", "position_m", "rotation_rad", "scale", "divisions", "units", "friction");
+            String[] fields = {"file", "position_m", "rotation_rad", "scale", "divisions", "units", "friction"};
+            String[] all = java.util.Arrays.copyOf(fields, fields.length + FreeObject.FIELDS.length);
+            System.arraycopy(FreeObject.FIELDS, 0, all, fields.length, FreeObject.FIELDS.length);
+            o.allowOnly(all);
+            freeObject = FreeObject.parse(o);
             Path dir = file.toAbsolutePath().getParent();
             Path f = dir.resolve(o.string("file")).normalize();
             String why = InputFile.problem(f);
@@ -244,6 +262,17 @@ public final class Scenario implements Cloneable {
             if (object != null) object = object.withFriction(handParameters.friction());
             defaultFriction = handParameters.friction();
         }
+        if (!moves.isEmpty() && freeObject == null) {
+            throw r.object("hand").error("moves", "carry a free object: add \"free\": true to the object, or remove them");
+        }
+        if (r.has("supports")) {
+            int n = r.list("supports").size();
+            if (n > 0 && freeObject == null) throw r.error("supports", "hold up a free object: add \"free\": true to the object, or remove them");
+            List<Support> sup = new ArrayList<>();
+            for (int i = 0; i < n; i++) sup.add(Support.parse(r.objectAt("supports", i), file.toAbsolutePath().getParent(), Scenario::pose));
+            supports = List.copyOf(sup);
+        }
+        disturbances = List.copyOf(Disturbance.parse(r, freeObject != null));
         hand = this.hand;
         dt = r.positive("dt_s");
         if (dt > 0.1) throw r.error("dt_s", "must be at most 0.1 s, got " + dt);
@@ -429,6 +458,14 @@ public final class Scenario implements Cloneable {
     public double[] gravity() { return gravity.clone(); }
     /** The object, or null when the scene has none. */
     public ObjectPlacement object() { return object; }
+    /** The object's motion when it is free ({@code "object": {"free": true, ...}}), else null: fixed in place. */
+    public FreeObject freeObject() { return freeObject; }
+    /** The hand base's segments ({@code hand.moves}), played in order; empty when the base stays put. */
+    public List<HandMove> moves() { return moves; }
+    /** Static bodies under a free object ({@code "supports"}); empty without them. */
+    public List<Support> supports() { return supports; }
+    /** Wrenches on the free object ({@code "disturbances"}), in the order given; empty without them. */
+    public List<Disturbance> disturbances() { return disturbances; }
     /** Motor m (0..3 = M1..M4) set-point trajectory. */
     public Trajectory motor(int m) { return motors[m]; }
     /** Initial counts of motor m (0..3). */
@@ -519,6 +556,11 @@ public final class Scenario implements Cloneable {
         h.put("position_m", java.util.Arrays.copyOfRange(handPose, 0, 3));
         h.put("rotation_rad", java.util.Arrays.copyOfRange(handPose, 3, 6));
         if (!handParameters.isEmpty()) h.put("parameters", handParameters.toJson());
+        if (!moves.isEmpty()) {
+            List<Object> l = new ArrayList<>();
+            for (HandMove x : moves) l.add(x.toJson());
+            h.put("moves", l);
+        }
         m.put("hand", h);
         m.put("gravity_m_s2", gravity.clone());
         if (object != null) {
@@ -537,7 +579,18 @@ public final class Scenario implements Cloneable {
             o.put("units", object.units().id());
             o.put("divisions", object.divisions());
             o.put("friction", object.friction());
+            if (freeObject != null) freeObject.toJson(o);
             m.put("object", o);
+        }
+        if (!supports.isEmpty()) {
+            List<Object> l = new ArrayList<>();
+            for (Support x : supports) l.add(x.toJson(dir));
+            m.put("supports", l);
+        }
+        if (!disturbances.isEmpty()) {
+            List<Object> d = new ArrayList<>();
+            for (Disturbance x : disturbances) d.add(x.toJson());
+            m.put("disturbances", d);
         }
         java.util.Map<String, Object> start = new java.util.LinkedHashMap<>();
         for (int i = 0; i < 4; i++) start.put("M" + (i + 1), startCounts[i]);
@@ -636,6 +689,12 @@ public final class Scenario implements Cloneable {
     public Scenario withObject(ObjectPlacement placement) {
         Scenario c = copy();
         c.object = placement;
+        if (placement == null) {
+            c.freeObject = null;
+            c.disturbances = List.of();
+            c.supports = List.of();
+            c.moves = List.of();
+        }
         c.unitsBySize = false;   // a placement made by the caller carries a chosen unit
         return c;
     }

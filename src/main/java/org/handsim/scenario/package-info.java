@@ -4,7 +4,8 @@
  * install's folders and the models in the jar ({@link org.handsim.scenario.Home}), and the
  * messages for a missing file.
  *
- * <p>May use {@code trajectory}, {@code vrml}, {@code mesh}, {@code grasp} (the friction bounds),
+ * <p>May use {@code trajectory}, {@code body} (a free object's given inertia checked as it is
+ * read), {@code vrml}, {@code mesh}, {@code grasp} (the friction bounds),
  * {@code hand}, {@code math}, {@code files}, {@code process} and {@code text} (docs/DESIGN.md,
  * "Modules").
  */
