@@ -16,7 +16,8 @@
  *       contact points, and the step with them (finger links that press as followers);</li>
  *   <li>{@link org.handsim.body.ProximityContacts}, {@link org.handsim.body.MeshTopology}: contact
  *       points from proximity within a margin, at most 9 spanning each patch;</li>
- *   <li>{@link org.handsim.body.BodyScene}: the object among static supports.</li>
+ *   <li>{@link org.handsim.body.BodyScene}: the object among static supports;
+ *       {@link org.handsim.body.BoxMesh}, a support given by its edge lengths.</li>
  * </ul>
  *
  * <p>Units SI, frames stated per method (world unless said). Never touches files, the console

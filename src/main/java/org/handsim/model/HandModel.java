@@ -181,7 +181,10 @@ public final class HandModel {
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
         if (scenario.freeObject() != null) {
-            if (objectContacts instanceof SceneGeometry sg) FreeObjectMass.of(scenario, sg.objectMesh());
+            if (objectContacts instanceof SceneGeometry sg) {
+                FreeObjectMass.of(scenario, sg.objectMesh());
+                FreeObjectStart.check(scenario, sg.objectMesh(), sg.worldFromObject());
+            }
             // the free object's step (org.handsim.body) is not yet part of this loop: refuse rather than run it fixed
             throw new ScenarioException(scenario.file() + ": field object.free: a free object is read and checked but not simulated"
                 + " by this version; remove \"free\": true to run the object fixed in place");

@@ -565,14 +565,7 @@ public final class Scenario implements Cloneable {
         m.put("gravity_m_s2", gravity.clone());
         if (object != null) {
             java.util.Map<String, Object> o = new java.util.LinkedHashMap<>();
-            Path f = object.file().toAbsolutePath().normalize();
-            String name;
-            try {
-                name = dir.toAbsolutePath().normalize().relativize(f).toString().replace(java.io.File.separatorChar, '/');
-            } catch (IllegalArgumentException e) {
-                name = f.toString();
-            }
-            o.put("file", name);
+            o.put("file", fileName(dir, object.file()));
             o.put("position_m", object.position());
             o.put("rotation_rad", object.rotation());
             o.put("scale", object.scale());
@@ -612,6 +605,16 @@ public final class Scenario implements Cloneable {
         out.put("torques", computeTorques);
         m.put("outputs", out);
         return m;
+    }
+
+    /** {@code file} as a scenario in {@code dir} names it: relative to dir with '/', absolute when it cannot be. */
+    static String fileName(Path dir, Path file) {
+        Path f = file.toAbsolutePath().normalize();
+        try {
+            return dir.toAbsolutePath().normalize().relativize(f).toString().replace(java.io.File.separatorChar, '/');
+        } catch (IllegalArgumentException e) {
+            return f.toString();
+        }
     }
 
     private static void addSegments(Trajectory t, List<Object> out) {

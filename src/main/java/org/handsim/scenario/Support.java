@@ -47,14 +47,7 @@ public record Support(double[] boxM, Path file, double[] pose) {
         if (boxM != null) {
             m.put("box_m", boxM.clone());
         } else {
-            Path a = file.toAbsolutePath().normalize();
-            String name;
-            try {
-                name = dir.toAbsolutePath().normalize().relativize(a).toString().replace(java.io.File.separatorChar, '/');
-            } catch (IllegalArgumentException e) {
-                name = a.toString();
-            }
-            m.put("file", name);
+            m.put("file", Scenario.fileName(dir, file));
         }
         m.put("position_m", java.util.Arrays.copyOfRange(pose, 0, 3));
         m.put("rotation_rad", java.util.Arrays.copyOfRange(pose, 3, 6));

@@ -22,25 +22,28 @@ class FreeObjectTest {
     static final Path MUG = TestPaths.root().resolve("scenarios/mug-grasp.json");
 
     /** The mug scenario with {@code fields} (JSON object text) added to its object. */
-    @SuppressWarnings("unchecked")
     static Scenario mugWith(String fields) {
-        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
-        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
-        return Scenario.parse(MUG, JsonWriter.write(j));
+        return mugWith(fields, null, null);
     }
 
-    /** The mug scenario with {@code fields} added to its object and {@code disturbances} (JSON array text) to the scenario. */
+    /**
+     * The mug scenario with {@code fields} added to its object and, when {@code field} is not
+     * null, {@code value} (JSON text) as the scenario's field ({@code "hand.moves"}: the hand's).
+     */
     @SuppressWarnings("unchecked")
-    static Scenario mugWith(String fields, String disturbances) {
+    static Scenario mugWith(String fields, String field, String value) {
         Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
         ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
-        j.put("disturbances", Json.parse("disturbances", disturbances));
+        if (field != null) {
+            Map<String, Object> into = field.startsWith("hand.") ? (Map<String, Object>) j.get("hand") : j;
+            into.put(field.substring(field.indexOf('.') + 1), Json.parse(field, value));
+        }
         return Scenario.parse(MUG, JsonWriter.write(j));
     }
 
     @Test
     void disturbancesAreReadWrittenBackAndRefusedNamingTheField() {
-        Scenario s = mugWith("{\"free\": true, \"mass_kg\": 0.3}",
+        Scenario s = mugWith("{\"free\": true, \"mass_kg\": 0.3}", "disturbances",
             "[{\"from_s\": 1, \"to_s\": 1.5, \"force_N\": [0, 2, 0]}, {\"from_s\": 2, \"to_s\": 2.1, \"torque_N_m\": [0, 0, 0.1]}]");
         assertEquals(2, s.disturbances().size());
         Disturbance d = s.disturbances().get(0);
@@ -65,24 +68,15 @@ class FreeObjectTest {
             {"{\"free\": true, \"mass_kg\": 0.3}", "[{\"from_s\": 0, \"to_s\": 1, \"force\": [1, 0, 0]}]", "force"},
         };
         for (String[] b : bad) {
-            ScenarioException e = assertThrows(ScenarioException.class, () -> mugWith(b[0], b[1]), b[1]);
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugWith(b[0], "disturbances", b[1]), b[1]);
             assertTrue(e.getMessage().contains(b[2]), b[1] + " -> " + e.getMessage());
         }
-    }
-
-    /** The mug scenario with {@code fields} added to its object and {@code supports} (JSON array text) to the scenario. */
-    @SuppressWarnings("unchecked")
-    static Scenario mugOn(String fields, String supports) {
-        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
-        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
-        j.put("supports", Json.parse("supports", supports));
-        return Scenario.parse(MUG, JsonWriter.write(j));
     }
 
     @Test
     void supportsAreReadWrittenBackAndRefusedNamingTheField() {
         String free = "{\"free\": true, \"mass_kg\": 0.3}";
-        Scenario s = mugOn(free, "[{\"box_m\": [0.5, 0.4, 0.02], \"position_m\": [0, 0, 0.05]},"
+        Scenario s = mugWith(free, "supports", "[{\"box_m\": [0.5, 0.4, 0.02], \"position_m\": [0, 0, 0.05]},"
             + " {\"file\": \"../vrml/objects/cube.wrl\", \"position_m\": [1, 0, 0], \"rotation_rad\": [0, 0, 0.5]}]");
         assertEquals(2, s.supports().size());
         assertArrayEquals(new double[] {0.5, 0.4, 0.02}, s.supports().get(0).boxM());
@@ -102,18 +96,9 @@ class FreeObjectTest {
             {free, "[{\"box_m\": [1, 1, 1], \"rotation_rad\": [0, 0]}]", "field supports[0].rotation_rad: must have 3 numbers"},
         };
         for (String[] b : bad) {
-            ScenarioException e = assertThrows(ScenarioException.class, () -> mugOn(b[0], b[1]), b[1]);
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugWith(b[0], "supports", b[1]), b[1]);
             assertTrue(e.getMessage().contains(b[2]), b[1] + " -> " + e.getMessage());
         }
-    }
-
-    /** The mug scenario with {@code fields} added to its object and {@code moves} (JSON array text) as the hand's. */
-    @SuppressWarnings("unchecked")
-    static Scenario mugMoved(String fields, String moves) {
-        Map<String, Object> j = (Map<String, Object>) Json.parse("mug", Scenario.readText(MUG));
-        ((Map<String, Object>) j.get("object")).putAll((Map<String, Object>) Json.parse("fields", fields));
-        ((Map<String, Object>) j.get("hand")).put("moves", Json.parse("moves", moves));
-        return Scenario.parse(MUG, JsonWriter.write(j));
     }
 
     /**
@@ -123,7 +108,7 @@ class FreeObjectTest {
     @Test
     void handMovesAreReadWrittenBackAndRefusedNamingTheField() {
         String free = "{\"free\": true, \"mass_kg\": 0.3}";
-        Scenario s = mugMoved(free, "[{\"type\": \"hold\", \"duration_s\": 4.7},"
+        Scenario s = mugWith(free, "hand.moves", "[{\"type\": \"hold\", \"duration_s\": 4.7},"
             + " {\"type\": \"line\", \"by_m\": [0, 0, 0.1], \"v_max\": 0.1, \"a_max\": 1},"
             + " {\"type\": \"rotate\", \"axis\": [0, 2, 0], \"angle_rad\": -0.5, \"v_max\": 1, \"a_max\": 5}]");
         assertEquals(3, s.moves().size());
@@ -154,7 +139,7 @@ class FreeObjectTest {
             {free, "[{\"type\": \"hold\", \"duration_s\": -1}]", "field hand.moves[0].duration_s: must be > 0"},
         };
         for (String[] b : bad) {
-            ScenarioException e = assertThrows(ScenarioException.class, () -> mugMoved(b[0], b[1]), b[1]);
+            ScenarioException e = assertThrows(ScenarioException.class, () -> mugWith(b[0], "hand.moves", b[1]), b[1]);
             assertTrue(e.getMessage().contains(b[2]), b[1] + " -> " + e.getMessage());
         }
     }
@@ -261,6 +246,27 @@ class FreeObjectTest {
                 files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
             }
         }
+    }
+
+    /**
+     * The mug (scaled 1.2, axis along x at z = 0.125 m: body radius 48 mm, so its lowest point at
+     * z = 0.077 m) over a table whose top is at z = 0.070, 0.077 (resting) and 0.080 m: refused
+     * only when it starts inside, 3 mm deep.
+     */
+    @Test
+    void anObjectThatStartsInsideASupportIsRefusedWithTheDepth() {
+        String free = "{\"free\": true, \"mass_kg\": 0.3}";
+        for (double top : new double[] {0.070, 0.077}) {
+            Scenario s = mugWith(free, "supports", "[{\"box_m\": [0.4, 0.4, 0.02], \"position_m\": [0, 0, " + (top - 0.01) + "]}]");
+            ScenarioException e = assertThrows(ScenarioException.class, () -> Simulation.model(s, false));
+            assertTrue(e.getMessage().contains("field object.free: a free object is read and checked but not simulated"), top + ": " + e.getMessage());
+        }
+        Scenario s = mugWith(free, "supports", "[{\"box_m\": [0.4, 0.4, 0.02], \"position_m\": [0, 0, 0.07]}]");
+        ScenarioException e = assertThrows(ScenarioException.class, () -> Simulation.model(s, false));
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("field supports\\[0\\]: the object starts inside it, ([0-9.]+) mm deep at")
+            .matcher(e.getMessage());
+        assertTrue(m.find(), e.getMessage());
+        assertEquals(3.0, Double.parseDouble(m.group(1)), 0.05, e.getMessage());
     }
 
     @Test
