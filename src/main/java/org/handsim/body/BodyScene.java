@@ -96,6 +96,35 @@ public final class BodyScene {
         return joints.size() - 1;
     }
 
+    /**
+     * Changes joint {@code joint}'s press and hold from the next step on: torque τ (N·m, ≥ 0),
+     * held by its worm or not, its preload let go over {@code releaseRad} (infinity: τ
+     * throughout) from here (its turned angle starts again at 0) — as a clutch that slips once
+     * its torque passes its threshold, transmits that torque while it slips, and grips again
+     * where it stops.
+     */
+    public void setJoint(int joint, double torqueNm, boolean wormHeld, double releaseRad) {
+        if (!(releaseRad > 0) || !(torqueNm >= 0) || !Double.isFinite(torqueNm)) {
+            throw new IllegalArgumentException("a joint's torque must be finite and >= 0 and its release angle > 0, got " + torqueNm
+                + " N*m over " + releaseRad + " rad");
+        }
+        double[] j = joints.get(joint);
+        j[7] = torqueNm;
+        j[8] = wormHeld ? 1 : 0;
+        j[9] = releaseRad;
+        j[10] = 0;
+    }
+
+    /** Joint {@code joint}'s velocity in the last step, rad/s (closing positive). */
+    public double jointVelocity(int joint) {
+        return stepper.followerVelocity(joint);
+    }
+
+    /** Joint {@code joint}'s worm reaction in the last step, N·m (what held it against opening; 0 without the worm). */
+    public double jointWormTorque(int joint, double h) {
+        return stepper.wormImpulse(joint) / h;
+    }
+
     /** Each joint's angle turned since it was added, rad (what is left of its preload follows from it); a new array. */
     public double[] jointTurns() {
         double[] t = new double[joints.size()];

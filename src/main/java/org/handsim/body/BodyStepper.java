@@ -37,6 +37,7 @@ public final class BodyStepper {
     private double[] fAxis = new double[12], fOrigin = new double[12], fInertia = new double[4], fTorque = new double[4];
     private double[] fVelocity = new double[4];
     private boolean[] fWorm = new boolean[4];
+    private double[] fWormImpulse = new double[4];
     private final double[] t1 = new double[3], t2 = new double[3], rel = new double[3];
 
     /** Steps {@code body}. */
@@ -84,6 +85,7 @@ public final class BodyStepper {
             fTorque = Arrays.copyOf(fTorque, cap);
             fVelocity = Arrays.copyOf(fVelocity, cap);
             fWorm = Arrays.copyOf(fWorm, cap);
+            fWormImpulse = Arrays.copyOf(fWormImpulse, cap);
         }
         int j = followers++;
         System.arraycopy(axis, 0, fAxis, 3 * j, 3);
@@ -96,6 +98,9 @@ public final class BodyStepper {
 
     /** @return follower j's velocity over the last step, rad/s (≥ 0: closing) */
     public double followerVelocity(int j) { return fVelocity[j]; }
+
+    /** Follower j's worm reaction over the last step, N·m·s (the impulse holding it against opening; 0 without the worm). */
+    public double wormImpulse(int j) { return fWormImpulse[j]; }
 
     /**
      * Advances the body by h under force f and torque τ (world, at the centre of mass) with the
@@ -146,6 +151,7 @@ public final class BodyStepper {
                 jac[(3 * c + 2) * nv + col] = -(rel[0] * t2[0] + rel[1] * t2[1] + rel[2] * t2[2]);
             }
         }
+        int firstWorm = nc;   // the contacts are constraints 0..nc-1, the worms follow
         for (int j = 0; j < followers; j++) {
             if (!fWorm[j]) continue;
             int c = problem.addConstraint(0);
@@ -153,7 +159,10 @@ public final class BodyStepper {
         }
         ContactSolver.Outcome out = solver.solveCoulomb(problem);
         solver.velocities(twist, 6);
-        for (int j = 0; j < followers; j++) fVelocity[j] = solver.velocity(6 + j);
+        for (int j = 0, w = firstWorm; j < followers; j++) {
+            fVelocity[j] = solver.velocity(6 + j);
+            fWormImpulse[j] = fWorm[j] ? solver.impulse(w++, 0) : 0;
+        }
         for (int i = 0; i < nc; i++) {
             double nx = contacts.normal[3 * i], ny = contacts.normal[3 * i + 1], nz = contacts.normal[3 * i + 2];
             tangents(nx, ny, nz, t1, t2);

@@ -95,6 +95,11 @@ public final class HoldTest {
     /** The longest the object is left to settle after its release, s. */
     public static final double SETTLE_MAX_S = 1;
     private final double[][] spheres = new double[LockedGrasp.BODIES][];
+    /** Per joint of the scene: its press, N·m, its release angle, rad, and whether an engaged clutch holds it (it may slip). */
+    private final double[] jointPress = new double[6], jointRelease = new double[6];
+    private final boolean[] jointSlips = new boolean[6];
+    private final double[] jointArm = new double[6], pressNow = new double[6];
+    private final boolean[] slipping = new boolean[6];
     private final double objectRadius;
     private final double[] x = new double[3], q = new double[4], v = new double[3], w = new double[3];
     private final double[] zero = new double[3], force = new double[3], torque = new double[3], accel = new double[3], flight = new double[3];
@@ -119,9 +124,16 @@ public final class HoldTest {
         for (int k = 1; k <= 3; k++) {
             for (int j = 2; j <= 3; j++) {
                 double[] jt = grasp.joint(k, j);
-                double releaseRad = jt[7] > 0 && jt[8] > 0 ? jt[7] / (CONTACT_STIFFNESS_N_M * jt[8] * jt[8]) : Double.POSITIVE_INFINITY;
-                int id = scene.addJoint(new double[] {jt[0], jt[1], jt[2]}, new double[] {jt[3], jt[4], jt[5]}, jt[6], jt[7], true,
+                // an engaged clutch carries at most τ_break: it presses with no more than that
+                boolean slips = j == 2 && grasp.clutchEngaged(k);
+                double press = slips ? Math.min(jt[7], grasp.tauBreak()) : jt[7];
+                double releaseRad = press > 0 && jt[8] > 0 ? press / (CONTACT_STIFFNESS_N_M * jt[8] * jt[8]) : Double.POSITIVE_INFINITY;
+                int id = scene.addJoint(new double[] {jt[0], jt[1], jt[2]}, new double[] {jt[3], jt[4], jt[5]}, jt[6], press, true,
                     releaseRad);
+                jointPress[id] = press;
+                jointRelease[id] = releaseRad;
+                jointSlips[id] = slips;
+                jointArm[id] = jt[8];
                 for (int link = j; link <= 3; link++) scene.moves(id, LockedGrasp.body(k, link));
             }
         }
@@ -253,6 +265,11 @@ public final class HoldTest {
 
         void go(long n) {
             FreeBody body = scene.body();
+            for (int j = 0; j < 6; j++) {
+                if (jointSlips[j] && pressNow[j] != jointPress[j] || slipping[j]) scene.setJoint(j, jointPress[j], true, jointRelease[j]);
+                pressNow[j] = jointPress[j];
+                slipping[j] = false;
+            }
             scene.setJointTurns(settledTurns);
             body.setPose(settledPose);
             body.setVelocity(zero, zero);
@@ -290,6 +307,20 @@ public final class HoldTest {
                         throw new IllegalStateException("hold test: the contact problem at t = " + t + " s is not positive definite");
                     }
                     contacts = scene.contacts().size();
+                    // an engaged clutch slips once the torque it carries (its press and what held it
+                    // against opening) passes τ_break, transmits τ_break while it slips, and grips
+                    // again where the link stops opening, loaded then with τ_break
+                    for (int j = 0; j < 6; j++) {
+                        if (!jointSlips[j]) continue;
+                        if (!slipping[j] && pressNow[j] + scene.jointWormTorque(j, h) > grasp.tauBreak()) {
+                            scene.setJoint(j, grasp.tauBreak(), false, Double.POSITIVE_INFINITY);
+                            slipping[j] = true;
+                        } else if (slipping[j] && scene.jointVelocity(j) >= 0) {
+                            scene.setJoint(j, grasp.tauBreak(), true, grasp.tauBreak() / (CONTACT_STIFFNESS_N_M * jointArm[j] * jointArm[j]));
+                            pressNow[j] = grasp.tauBreak();
+                            slipping[j] = false;
+                        }
+                    }
                 }
                 body.position(x);
                 body.orientation(q);

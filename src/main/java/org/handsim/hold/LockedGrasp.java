@@ -32,6 +32,8 @@ public final class LockedGrasp {
     private final double[] gravity;
     /** Per finger (0..2) and flexion joint (0: k2, 1: k3): {zx, zy, zz, ox, oy, oz, D, τ} (world; kg·m²; N·m). */
     private final double[][][] joints = new double[3][2][];
+    private final boolean[] engaged = new boolean[3];
+    private double tauBreak = Double.POSITIVE_INFINITY;
 
     private LockedGrasp(TriangleMesh objectMesh, MassProperties mass, double[] worldFromObject, double friction, double[] gravity) {
         this.objectMesh = objectMesh;
@@ -64,7 +66,9 @@ public final class LockedGrasp {
             squeeze.add(new GraspAssessment.Contact(c.finger(), c.link(), c.point(), c.normal(), java.util.Arrays.copyOfRange(kept, 3 * i, 3 * i + 3)));
         }
         HandDynamics dyn = HandDynamics.barrettHand();
+        g.tauBreak = in.hand().tauBreak();
         for (int k = 1; k <= 3; k++) {
+            g.engaged[k - 1] = model.clutchEngaged(k);
             double[] frames = model.framesWorld(k);
             for (int j = 1; j <= 3; j++) {
                 int b = body(k, j);
@@ -123,6 +127,16 @@ public final class LockedGrasp {
      * largest distance from its axis to a contact it carries (m, 0 without one); a copy.
      */
     public double[] joint(int finger, int j) { return joints[finger - 1][j - 2].clone(); }
+
+    /**
+     * Finger k's clutch was engaged when the closing ended (it never broke away): its inner joint
+     * is held through the clutch, which slips above {@link #tauBreak()} (the hold LP's limit of
+     * that joint, {@code GraspAssessment.jointLimit}); otherwise its worm holds it.
+     */
+    public boolean clutchEngaged(int finger) { return engaged[finger - 1]; }
+
+    /** The clutches' breakaway torque τ_break, N·m (the hand's). */
+    public double tauBreak() { return tauBreak; }
 
     /** The body index of finger k's link j (k, j in 1..3). */
     public static int body(int finger, int link) {

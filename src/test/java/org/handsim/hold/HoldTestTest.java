@@ -98,4 +98,46 @@ public class HoldTestTest {
             }
         }
     }
+
+    /**
+     * Statics against dynamics where an engaged clutch is the limit: a planner grasp of the mug
+     * (seed 101's best, fingers 1 and 2 stalled with their clutches engaged) whose hold LP says
+     * the grasp carries L = 13.05 N along +x and 10.72 N along −y, both set by τ_break at an
+     * engaged inner joint. The ramp of the free test — the force raised slowly until the object
+     * has moved 5 mm or turned 5° — must come out within 12 % of L: the slipping clutch gives
+     * way where the LP's joint limit binds (with every joint held by a worm it held the ramp's
+     * 58.84 N ceiling).
+     */
+    @Test
+    @Tag("slow")   // a planner grasp closed and ramped twice: seconds of CPU
+    void theRampGivesWayNearTheHoldLpsLoadWhereAnEngagedClutchIsTheLimit() throws Exception {
+        String text;
+        try (java.io.InputStream in = HoldTestTest.class.getResourceAsStream("plan-mug-s101-best01.json")) {
+            text = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        }
+        Path dir = Files.createTempDirectory("hold-lp");
+        try {
+            text = text.replace("\"../vrml/objects/mug.wrl\"", "\"" + Home.dir().resolve("vrml/objects/mug.wrl").toString().replace("\\", "/") + "\"");
+            Path f = dir.resolve("best01.json");
+            Files.writeString(f, text);
+            Scenario s = Scenario.load(f);
+            org.handsim.model.SceneGeometry g = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K);
+            org.handsim.model.HandModel m = org.handsim.model.Simulation.model(s, g);
+            HoldReport.close(m);
+            assertTrue(m.clutchEngaged(1) && m.clutchEngaged(2), "fingers 1 and 2 stalled with their clutches engaged");
+            org.handsim.grasp.GraspAssessment ga = org.handsim.grasp.GraspAssessment.of(m.graspInput(), s.friction(), 8);
+            HoldTest t = new HoldTest(LockedGrasp.of(m, g, ObjectMass.of(g.objectMesh(), Double.NaN, Double.NaN)), HoldSettings.defaults(58.84));
+            int[] dirs = {1, 2};   // +x, −y in DIRECTIONS' order
+            int[] lp = {0, 3};     // holdN's order: +x, −x, +y, −y, +z, −z
+            for (int i = 0; i < 2; i++) {
+                double l = ga.holdN()[lp[i]];
+                assertTrue(l > 5 && l < 58.84, "the LP's load is below the cap: " + l);
+                RampResult r = t.ramp(HoldTest.DIRECTIONS.get(dirs[i]), HoldTest.unit(dirs[i]));
+                assertFalse(r.heldAtMax(), HoldTest.DIRECTIONS.get(dirs[i]));
+                assertEquals(l, r.forceN(), 0.12 * l, HoldTest.DIRECTIONS.get(dirs[i]) + ": ramp against the LP's L");
+            }
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
 }
