@@ -31,7 +31,7 @@ import org.handsim.mesh.TriangleMesh;
  *       the table: {@code fell_through} (any of the drops).</li>
  * </ul>
  * x: dt (s, log). The wall time of each run (one run, no repeats: a run is 10⁴–10⁵ steps) is in
- * the CSV as {@code wall_per_s} (wall time per simulated second). Default: dt = 1 ms, the
+ * the CSV as {@code wall_s_per_sim_s} (wall time per simulated second). Default: dt = 1 ms, the
  * simulator's.
  */
 public final class BodyRestStudy implements Study {
@@ -42,7 +42,7 @@ public final class BodyRestStudy implements Study {
     static final TriangleMesh BOX = BoxMesh.of("box", 2 * HX, 2 * HY, 2 * HZ), TABLE = BoxMesh.of("table", 0.8, 0.6, 0.02);
     static final String RESTING = "resting 10 s: drift", DROPPED = "dropped 10-11.75 mm: deepest penetration";
     static final java.util.List<String> COLUMNS = java.util.List.of("dt_s", "error_m", "drift_m", "rotation_rad", "penetration_m",
-        "tunnelling_steps", "fell_through", "wall_per_s");
+        "tunnelling_steps", "fell_through", "wall_s_per_sim_s");
 
     @Override
     public String id() {

@@ -15,7 +15,7 @@ import org.handsim.math.RigidTransform;
 /**
  * Chart 6, the free object's step without contact: the time step against the error of a
  * torque-free tumble. An asymmetric box (100 × 60 × 30 mm, 800 kg/m³: principal moments
- * 1 : 3.4 : 4.2) spun at ω = (0.3, 4, −0.5) rad/s (body axes), near its unstable middle axis, so
+ * 1 : 2.4 : 3.0) spun at ω = (0.3, 4, −0.5) rad/s (body axes), near its unstable middle axis, so
  * it turns over, for 2 s ({@link FreeBody}: a fourth-order Lie–Poisson integrator). Three
  * errors at the end, against:
  * <ul>

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
  * {@link Tunnelling} through {@link BodyScene} and {@link BodyStepper}: the first step whose
  * travel exceeds the margin, found by hand from the step's kinematics.
  */
-class TunnellingTest {
+class BodyTunnellingTest {
     static final double G = 9.80665;
     static final TriangleMesh BOX = BoxMesh.of("box", 0.06, 0.04, 0.02);
     static final TriangleMesh TABLE = BoxMesh.of("table", 0.8, 0.6, 0.02);
