@@ -136,9 +136,11 @@ public final class RunCommand implements Callable<Integer> {
                     throw new CliError(CliError.NUMERIC, "handsim: " + file + ": run stopped: " + e.getMessage() + " (no output written)");
                 }
                 wall = (System.nanoTime() - t1) / 1e9;
-                // and what the run found: stretches without a static equilibrium (once each, not per step)
-                List<String> found = model.warnings().subList(warnings.size(), model.warnings().size());
-                for (String w : found) err.println("handsim: warning: " + w);
+                // what the run found (stretches without a static equilibrium, forces above the
+                // ratings; once each, not per step) is said once the trace is whole: a trace that
+                // fails to write fails the run whether the writer's thread noticed during the run
+                // or at its end, and the output must not depend on which
+                List<String> found = List.copyOf(model.warnings().subList(warnings.size(), model.warnings().size()));
                 warnings = model.warnings();
                 Phase.reach("ran");
                 long t3 = System.nanoTime();
@@ -160,6 +162,7 @@ public final class RunCommand implements Callable<Integer> {
                 chartSeconds = (System.nanoTime() - t3) / 1e9;
                 // the trace writer worked on its own thread during the run and the charts; now it completes
                 if (rec != null) rec.finish();
+                for (String w : found) err.println("handsim: warning: " + w);
                 Phase.reach("trace");
                 Map<String, Object> phases = new java.util.LinkedHashMap<>();
                 phases.put("load_s", setup);

@@ -72,8 +72,12 @@ public final class Client {
     /** How long a stopped client waits for the server to end the command (the server gives it 10 s, then exits). */
     private static final long CANCEL_WAIT_MS = 40_000;
 
-    /** Longest socket path the kernel takes (sun_path is 108 bytes with its final zero). */
-    private static final int MAX_SOCKET_PATH = 107;
+    /**
+     * Longest socket path this JDK binds: sun_path has 108 bytes, but the JDK keeps two for
+     * itself and refuses 107 ("Unix domain path too long"; measured with JDK 17: 106 binds,
+     * 107 does not), so a path counted against the kernel's 107 would reach a bind that fails.
+     */
+    static final int MAX_SOCKET_PATH = 106;
 
     private Client() {}
 
@@ -426,7 +430,7 @@ public final class Client {
      * The folder of the servers' sockets, locks and logs: system property
      * {@code handsim.server.dir}, else {@code $XDG_CACHE_HOME/handsim/server} (an absolute
      * XDG_CACHE_HOME), else {@code ~/.cache/handsim/server}; null without a home. When a socket
-     * there would pass the kernel's 107 bytes (a deep home or checkout), a short folder
+     * there would pass {@link #MAX_SOCKET_PATH} bytes (a deep home or checkout), a short folder
      * {@code /tmp/handsim-HASH} instead, HASH of the user and the long folder: checked as any
      * ({@link #unsafe}: the user's, mode 700, not a link), so another user's folder of that name
      * means no server, never a shared one.
@@ -437,9 +441,14 @@ public final class Client {
 
     /** The folder used for the configured folder {@code f}: itself, or its short stand-in when a socket in it would be too long. */
     static Path effective(Path f) {
-        if (f == null || socketFile(f, "0000000000000000").toString().getBytes(StandardCharsets.UTF_8).length <= MAX_SOCKET_PATH) return f;
+        if (f == null || fits(socketFile(f, "0000000000000000"))) return f;
         // too long for a socket's name: a short private folder of its own, named by the long one
         return Path.of("/tmp", "handsim-" + key(System.getProperty("user.name") + "\n" + f).substring(0, 12));
+    }
+
+    /** Whether the JDK binds a socket at {@code socket} (its bytes in UTF-8, never fewer than in the platform's encoding for a path it can name). */
+    static boolean fits(Path socket) {
+        return socket.toString().getBytes(StandardCharsets.UTF_8).length <= MAX_SOCKET_PATH;
     }
 
     /** The folder as configured (property, XDG, home), whatever its length. */

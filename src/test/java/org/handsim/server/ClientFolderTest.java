@@ -35,6 +35,44 @@ class ClientFolderTest {
         }
     }
 
+    /**
+     * Every length of servers' folder, around the limit too, gives a socket path the JDK binds: a
+     * real bind at each length from 90 to 130 bytes (a path counted against the kernel's 107
+     * bytes failed at exactly 107, where the JDK refuses).
+     */
+    @Test
+    void aSocketBindsInAFolderOfAnyDepth() throws Exception {
+        Path top = Files.createTempDirectory(Path.of("/tmp"), "handsim-socket-depth");
+        java.util.Set<Path> shortOnes = new java.util.HashSet<>();
+        try {
+            int moved = 0;
+            for (int n = 90; n <= 130; n++) {
+                String key = "0123456789abcdef";
+                int pad = n - Client.socketFile(top.resolve("x"), key).toString().length();   // one name of pad + 1 characters
+                Path configured = top.resolve("f".repeat(pad + 1));
+                assertEquals(n, Client.socketFile(configured, key).toString().length());
+                Path dir = Client.effective(configured);
+                if (!dir.equals(configured)) {
+                    moved++;
+                    shortOnes.add(dir);
+                }
+                assertNull(Client.unsafe(dir, true), dir.toString());
+                Path socket = Client.socketFile(dir, key);
+                try (java.nio.channels.ServerSocketChannel l = java.nio.channels.ServerSocketChannel.open(java.net.StandardProtocolFamily.UNIX)) {
+                    l.bind(java.net.UnixDomainSocketAddress.of(socket));
+                } catch (java.io.IOException e) {
+                    throw new AssertionError(n + " bytes: " + socket + ": " + e, e);
+                } finally {
+                    Files.deleteIfExists(socket);
+                }
+            }
+            assertEquals(130 - Client.MAX_SOCKET_PATH, moved, "the paths beyond the limit, and only those, go to a short folder");
+        } finally {
+            ChildJvm.deleteTree(top);
+            for (Path p : shortOnes) ChildJvm.deleteTree(p);
+        }
+    }
+
     @Test
     void theShortLocalCommandsAreServed() {
         org.junit.jupiter.api.Assumptions.assumeFalse("0".equals(System.getenv("HANDSIM_SERVER")), "HANDSIM_SERVER=0 serves nothing");

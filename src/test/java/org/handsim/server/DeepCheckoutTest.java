@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
 /**
  * The battery's deep checkout: cloned 36 characters deep, {@code .ci/run} failed five
  * {@code ServerTest} cases ("Unix domain path too long": the tests put the servers' folder in the
- * build folder, and a socket path may have 107 bytes). Here the repository is cloned 120
+ * build folder, and the JDK binds a socket path of at most 106 bytes). Here the repository is cloned 120
  * characters deep and the clone's own build runs every server test there, which must all pass.
  */
 @Tag("slow")

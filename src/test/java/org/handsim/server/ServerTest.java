@@ -88,9 +88,8 @@ class ServerTest {
             started.add(p);
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(90);
             while (System.nanoTime() < end) {
-                if (Files.isDirectory(srv) && !ServerAdmin.servers(srv).isEmpty()) {
-                    for (ServerAdmin.Status s : ServerAdmin.servers(srv)) if (s.field("pid").equals(Long.toString(p.pid()))) return p;
-                }
+                // ServerAdmin looks in the folder the servers use: srv, or its short stand-in in a deep checkout (never made)
+                for (ServerAdmin.Status s : ServerAdmin.servers(srv)) if (s.field("pid").equals(Long.toString(p.pid()))) return p;
                 if (!p.isAlive()) fail("the server ended: " + Files.readString(log));
                 Thread.sleep(50);
             }
@@ -152,18 +151,16 @@ class ServerTest {
         public void close() throws Exception {
             try {
                 for (Process p : started) if (p.isAlive()) new ProcessBuilder("kill", "-CONT", Long.toString(p.pid())).start().waitFor();
-                if (Files.isDirectory(srv)) {
-                    for (ServerAdmin.Status s : ServerAdmin.servers(srv)) {
-                        ServerAdmin.stop(s.socket());
-                        long pid = Long.parseLong(s.field("pid"));
-                        ProcessHandle.of(pid).ifPresent(h -> {
-                            try {
-                                h.onExit().get(30, TimeUnit.SECONDS);
-                            } catch (Exception e) {
-                                h.destroyForcibly();   // a server this test started (directly or through its client)
-                            }
-                        });
-                    }
+                for (ServerAdmin.Status s : ServerAdmin.servers(srv)) {   // in srv or its short stand-in
+                    ServerAdmin.stop(s.socket());
+                    long pid = Long.parseLong(s.field("pid"));
+                    ProcessHandle.of(pid).ifPresent(h -> {
+                        try {
+                            h.onExit().get(30, TimeUnit.SECONDS);
+                        } catch (Exception e) {
+                            h.destroyForcibly();   // a server this test started (directly or through its client)
+                        }
+                    });
                 }
                 for (Process p : started) {
                     if (!p.waitFor(30, TimeUnit.SECONDS)) p.destroyForcibly().waitFor();
@@ -520,6 +517,42 @@ class ServerTest {
         }
     }
 
+    /**
+     * {@code handsim server stop} stops this install's servers; {@code --all} reaches every
+     * server of the user in the folder, another install's too (a moved checkout's), and
+     * {@code status} shows each one's memory and why the last command was not served.
+     */
+    @Test
+    void stopAllReachesTheServersOfEveryInstall() throws Exception {
+        Path home = Files.createTempDirectory("handsim-other-install");
+        for (String d : List.of("vrml", "scenarios")) Files.createSymbolicLink(home.resolve(d), TestPaths.root().resolve(d));
+        try (Setup s = new Setup("all", "-Dhandsim.server.warmup=0")) {
+            Process ours = s.server();
+            List<String> otherJvm = new ArrayList<>(s.jvmCommand(WatchedServer.class.getName()));
+            otherJvm.replaceAll(o -> o.startsWith("-Dhandsim.home=") ? "-Dhandsim.home=" + home : o.startsWith("-Dhandsim.server.jvm=")
+                ? o.replace("-Dhandsim.home=" + TestPaths.root(), "-Dhandsim.home=" + home) : o);
+            Process other = new ProcessBuilder(otherJvm).directory(s.work.toFile()).redirectErrorStream(true)
+                .redirectOutput(s.dir.resolve("other.log").toFile()).start();
+            s.started.add(other);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(90);
+            while (System.nanoTime() < end && ServerAdmin.servers(s.srv).size() < 2) Thread.sleep(50);
+            assertEquals(2, ServerAdmin.servers(s.srv).size(), Files.readString(s.dir.resolve("other.log")));
+            Ran status = s.run(true, "server", "status", "--all");
+            assertEquals(0, status.code(), status.err());
+            assertEquals(2, status.out().split("\n").length, status.out());
+            assertTrue(status.out().matches("(?s)pid [0-9]+: idle, working directory .*, [0-9]+ MB resident, log .*"), status.out());
+            Ran stop = s.run(true, "server", "stop");
+            assertEquals("stopping pid " + ours.pid() + " (working directory " + s.work + ")", stop.out().trim());
+            assertTrue(ours.waitFor(30, TimeUnit.SECONDS));
+            assertTrue(other.isAlive(), "another install's server stays");
+            stop = s.run(true, "server", "stop", "--all");
+            assertEquals("stopping pid " + other.pid() + " (working directory " + s.work + ")", stop.out().trim());
+            assertTrue(other.waitFor(30, TimeUnit.SECONDS), "--all reaches it");
+        } finally {
+            ChildJvm.deleteTree(home);
+        }
+    }
+
     /** An exit 1 the command reports (a sweep whose run fails) leaves nothing in doubt: the same server serves the next. */
     @Test
     void aFailingCommandDoesNotEndTheServer() throws Exception {
@@ -537,7 +570,7 @@ class ServerTest {
     }
 
     /**
-     * A servers' folder so deep that a socket in it passes the kernel's 107 bytes (the battery's
+     * A servers' folder so deep that a socket in it passes the JDK's 106 bytes (the battery's
      * deep checkout, a long cache path): the servers use a short private folder named after it,
      * mode 700, and serve as usual; it goes when they do.
      */
@@ -577,6 +610,7 @@ class ServerTest {
             Path socket = ServerAdmin.servers(s.srv).get(0).socket();
             ServerAdmin.stop(socket);
             assertTrue(server.waitFor(30, TimeUnit.SECONDS));
+            assertEquals(null, Client.unsafe(socket.getParent(), true), "the folder again (a short stand-in goes with its last server)");
             try (java.nio.channels.ServerSocketChannel fake = java.nio.channels.ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
                 fake.bind(UnixDomainSocketAddress.of(socket));
                 Thread t = new Thread(() -> {
