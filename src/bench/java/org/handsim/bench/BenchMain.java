@@ -29,6 +29,7 @@ public final class BenchMain {
         SUITES.put("live-grasp", new LiveGraspBench());
         SUITES.put("body-solver", new BodyBench(false));
         SUITES.put("body-proximity", new BodyBench(true));
+        SUITES.put("body-step", new BodyStepBench());
     }
 
     public static void main(String[] args) throws Exception {

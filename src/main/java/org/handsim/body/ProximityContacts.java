@@ -15,7 +15,14 @@ import org.handsim.mesh.TriangleMesh;
  * candidates is reduced to at most {@value #MAX_POINTS_PER_PATCH} points that span it.
  *
  * <p><b>Nearby triangles</b>: the pairs whose k-DOP bounds and boxes are within δ, by the trees'
- * {@link TreeQuery#near} walk (the object placed in the other body's frame).
+ * {@link TreeQuery#near} walk (the object placed in the other body's frame). The walk gathers
+ * the pairs within δ + {@value #SLACK_FRACTION}·δ and is not repeated while no point of the object
+ * has moved, relative to the other body, by as much as the pairs' clearance leaves above δ
+ * ({@link NearPairs#clearance()}; the motion bounded by |ΔR·c + Δt| + ‖ΔR‖_F·ρ, c and ρ the
+ * centre and radius of the object's vertices' bounding sphere): every pair now within δ was
+ * then within the clearance, so it is in the list (temporal coherence: an object held in the
+ * hand or resting on a table walks the trees once in many steps, which was 40 % of its step).
+ * The features below are tested at the current pose.
  *
  * <p><b>Features</b> (the closest features of two disjoint convex pieces are a vertex and a face,
  * or two edges; Ericson 2005, §5.1.9; Lin and Canny's Voronoi regions):
@@ -54,6 +61,8 @@ public final class ProximityContacts {
     public static final double PATCH_ANGLE_DEG = 20;
     private static final double PATCH_COS = Math.cos(Math.toRadians(PATCH_ANGLE_DEG));
     private static final double SUPPORT_TOLERANCE = 1e-6;
+    /** The walk's reach above the margin, as a fraction of it: how far the object may move before the walk is repeated. */
+    static final double SLACK_FRACTION = 0.5;
 
     private final KdopTree other, object;
     private final MeshTopology otherTopo, objectTopo;
@@ -63,6 +72,8 @@ public final class ProximityContacts {
     private final double[] pose = new double[12], scratch = new double[12];
     private final double[] placed, placedNormals;
     private final int[] vertStamp, triStamp;
+    // the face each vertex was last tested over in this query (a vertex is in several triangles of the near pairs)
+    private final int[] objectVertFace, objectVertStamp, otherVertFace, otherVertStamp;
     private int stamp;
     // candidates, in the other body's frame
     private int nc;
@@ -71,6 +82,13 @@ public final class ProximityContacts {
     private final double[] patchNormal = new double[3 * 64];
     private final int[] picked = new int[MAX_POINTS_PER_PATCH];
     private final double[] p = new double[3], nrm = new double[3], vel = new double[3], t1 = new double[3], t2 = new double[3];
+    // the walk's pose and margin, and the object's vertices' bounding sphere (mesh frame)
+    private final double[] nearPose = new double[12];
+    private double nearMargin = Double.NaN;
+    private final double cx, cy, cz, radius;
+    // per triangle edge 3t + e: whether it is convex (a property of the mesh, whatever its pose)
+    private final boolean[] otherConvex, objectConvex;
+    private long walks;
 
     /**
      * @param otherTree  the other body's tree (its own frame)
@@ -86,6 +104,55 @@ public final class ProximityContacts {
         placedNormals = new double[om.normals().length];
         vertStamp = new int[om.vertexCount()];
         triStamp = new int[om.triangleCount()];
+        objectVertFace = new int[om.vertexCount()];
+        objectVertStamp = new int[om.vertexCount()];
+        otherVertFace = new int[otherTree.mesh().vertexCount()];
+        otherVertStamp = new int[otherTree.mesh().vertexCount()];
+        double[] v = om.vertices();
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY}, hi = {-lo[0], -lo[0], -lo[0]};
+        for (int i = 0; i < v.length; i++) {
+            lo[i % 3] = Math.min(lo[i % 3], v[i]);
+            hi[i % 3] = Math.max(hi[i % 3], v[i]);
+        }
+        cx = v.length == 0 ? 0 : 0.5 * (lo[0] + hi[0]);
+        cy = v.length == 0 ? 0 : 0.5 * (lo[1] + hi[1]);
+        cz = v.length == 0 ? 0 : 0.5 * (lo[2] + hi[2]);
+        double r2 = 0;
+        for (int i = 0; i < v.length; i += 3) r2 = Math.max(r2, (v[i] - cx) * (v[i] - cx) + (v[i + 1] - cy) * (v[i + 1] - cy) + (v[i + 2] - cz) * (v[i + 2] - cz));
+        radius = Math.sqrt(r2);
+        otherConvex = convexEdges(otherTree.mesh(), otherTopology);
+        objectConvex = convexEdges(om, objectTopology);
+    }
+
+    /** {@link #convex} of every triangle edge of {@code mesh} in its own frame (convexity does not change with the pose). */
+    private static boolean[] convexEdges(TriangleMesh mesh, MeshTopology topo) {
+        int[] t = mesh.triangles();
+        double[] v = mesh.vertices(), n = mesh.normals();
+        boolean[] c = new boolean[t.length];
+        for (int i = 0; i < t.length; i++) c[i] = convex(v, 3 * t[i], topo.across(i / 3, i % 3), n, 3 * (i / 3));
+        return c;
+    }
+
+    /** @return how many times {@link #find} walked the trees (the others reused the last walk's pairs) */
+    public long walks() { return walks; }
+
+    /**
+     * A bound on how far any point of the object moved, relative to the other body, between the
+     * walk's pose and {@link #pose}: |ΔR·c + Δt| + ‖ΔR‖_F·ρ (m).
+     */
+    private double movedSinceWalk() {
+        double[] a = pose, b = nearPose;
+        double f = 0;
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                double d = a[4 * r + c] - b[4 * r + c];
+                f += d * d;
+            }
+        }
+        double dx = (a[0] - b[0]) * cx + (a[1] - b[1]) * cy + (a[2] - b[2]) * cz + a[3] - b[3];
+        double dy = (a[4] - b[4]) * cx + (a[5] - b[5]) * cy + (a[6] - b[6]) * cz + a[7] - b[7];
+        double dz = (a[8] - b[8]) * cx + (a[9] - b[9]) * cy + (a[10] - b[10]) * cz + a[11] - b[11];
+        return Math.sqrt(dx * dx + dy * dy + dz * dz) + Math.sqrt(f) * radius;
     }
 
     /**
@@ -104,10 +171,20 @@ public final class ProximityContacts {
     public int find(double[] worldFromOther, double[] worldFromObject, double margin, double depth, double mu, double[] otherTwist,
                     int bodyId, BodyContacts out) {
         RigidTransform.inverseTimes(worldFromOther, worldFromObject, scratch, pose);
-        query.near(other, object, pose, 0, margin, near);
+        // the last walk's pairs hold every pair within its clearance then: enough while the motion since keeps margin below it
+        double moved = margin == nearMargin ? movedSinceWalk() : Double.NaN;
+        if (!(margin + moved < near.clearance())) {
+            query.near(other, object, pose, 0, margin * (1 + SLACK_FRACTION), near);
+            System.arraycopy(pose, 0, nearPose, 0, 12);
+            nearMargin = margin;
+            moved = 0;
+            walks++;
+        }
         if (++stamp == Integer.MAX_VALUE) {
             Arrays.fill(vertStamp, 0);
             Arrays.fill(triStamp, 0);
+            Arrays.fill(objectVertStamp, 0);
+            Arrays.fill(otherVertStamp, 0);
             stamp = 1;
         }
         nc = 0;
@@ -118,21 +195,33 @@ public final class ProximityContacts {
         for (int i = 0, n = near.size(); i < n; i++) {
             int a = near.triangleA(i), b = near.triangleB(i);
             if (!(aa[a] > 0) || !(ba[b] > 0)) continue;
+            // a pair whose separation then, less the motion since, is above the margin is as far from contact as the walk's reach allows
+            if (near.separation(i) - moved > margin) continue;
             placeTriangle(bm, b);
             int a0 = 3 * ta[3 * a], a1 = 3 * ta[3 * a + 1], a2 = 3 * ta[3 * a + 2];
             int b0 = 3 * tb[3 * b], b1 = 3 * tb[3 * b + 1], b2 = 3 * tb[3 * b + 2];
             // the object's vertices over the other's face: pushed along the face's normal
+            // (a vertex tested over this face already, from another of its triangles, would give the same candidate again)
             for (int k = 0; k < 3; k++) {
                 int q = k == 0 ? b0 : k == 1 ? b1 : b2;
+                if (objectVertStamp[q / 3] == stamp && objectVertFace[q / 3] == a) continue;
+                objectVertStamp[q / 3] = stamp;
+                objectVertFace[q / 3] = a;
                 vertexFace(placed, q, va, a0, a1, a2, na, 3 * a, margin, depth, false, objectTopo, true);
             }
             // the other's vertices over the object's face: pushed against the face's normal
             for (int k = 0; k < 3; k++) {
                 int q = k == 0 ? a0 : k == 1 ? a1 : a2;
+                if (otherVertStamp[q / 3] == stamp && otherVertFace[q / 3] == b) continue;
+                otherVertStamp[q / 3] = stamp;
+                otherVertFace[q / 3] = b;
                 vertexFace(va, q, placed, b0, b1, b2, placedNormals, 3 * b, margin, depth, true, otherTopo, false);
             }
             for (int ea = 0; ea < 3; ea++) {
-                for (int eb = 0; eb < 3; eb++) edgeEdge(a, ea, b, eb, va, ta, tb, margin, depth);
+                if (!otherConvex[3 * a + ea]) continue;
+                for (int eb = 0; eb < 3; eb++) {
+                    if (objectConvex[3 * b + eb]) edgeEdge(a, ea, b, eb, va, ta, tb, margin, depth);
+                }
             }
         }
         int before = out.size();
@@ -210,9 +299,8 @@ public final class ProximityContacts {
         int p2 = 3 * tb[3 * b + eb], q2 = 3 * tb[3 * b + (eb + 1) % 3], r2 = 3 * tb[3 * b + (eb + 2) % 3];
         int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
         if (o2 >= 0) placeVertex(object.mesh().vertices(), o2);
-        // only a convex edge can be the closest feature in a direction that its faces do not
-        // already give: a flat edge (a face's inside) is its face's, and has no outside of its own
-        if (!convex(va, p1, o1, other.mesh().normals(), 3 * a) || !convex(placed, p2, o2, placedNormals, 3 * b)) return;
+        // (the caller passes convex edges only: a flat edge (a face's inside) is its face's, and
+        // has no outside of its own; a concave edge has none either)
         double d2 = td.segments(va, p1, q1, placed, p2, q2);
         double lim = Math.max(margin, depth);
         if (d2 > lim * lim) return;
