@@ -400,7 +400,7 @@ public final class HandModel {
             }
             released = true;
             objectState.releasedAt = t - h;
-            free.release();
+            free.release(t - h);
             org.handsim.dynamics.HandDynamics hd = org.handsim.dynamics.HandDynamics.barrettHand();
             for (int k = 1; k <= 3; k++) {
                 org.handsim.dynamics.ChainDynamics chain = hd.finger(k);
@@ -1363,12 +1363,16 @@ public final class HandModel {
      * torques by more than {@link #RESIDUAL_WARN_NM} (one warning per stretch, naming the finger,
      * its start and end time and its largest residual), then each stretch in which a contact force
      * or a joint's fingertip-equivalent force exceeded Barrett's rating ({@link RatingWatch}); each
-     * kind in the order the stretches ended, those still going on ending now, last.
+     * kind in the order the stretches ended, those still going on ending now, last; then, for a
+     * free object, the steps in which it moved more than the contact margin (tunnelling: the
+     * first and the fastest, with their times and speeds).
      */
     public java.util.List<String> warnings() {
         java.util.List<String> w = startWarnings();
         w.addAll(residualStretches.warnings());
         w.addAll(ratings.warnings());
+        String tunnel = free == null || free.tunnelling() == null ? null : free.tunnelling().warning();
+        if (tunnel != null) w.add(tunnel.replaceFirst("^warning: ", ""));
         return w;
     }
     /** Motor count of finger k's (first) breakaway, NaN if none. */
@@ -1422,6 +1426,13 @@ public final class HandModel {
 
     /** When the free object first moved more than 5 mm relative to the palm, s; NaN if never. */
     public double objectSlippedAt() { return free == null ? Double.NaN : objectState.slippedAt; }
+
+    /**
+     * What the free object's tunnelling watch saw since its release ({@link
+     * org.handsim.body.Tunnelling}: steps in which a point of it moved more than the contact
+     * margin), or null for a fixed object or before the release.
+     */
+    public org.handsim.body.Tunnelling objectTunnelling() { return free == null ? null : free.tunnelling(); }
 
     /** When the free object was released (the start of its first free step), s; NaN before. */
     public double objectReleasedAt() { return free == null ? Double.NaN : objectState.releasedAt; }
