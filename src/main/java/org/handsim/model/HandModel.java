@@ -330,6 +330,8 @@ public final class HandModel {
             }
             System.arraycopy(palmPose, 0, startPalm, 0, 12);
         }
+        // released at the start of the step whose start is release_s or later: the fingers' update then takes its forces from the object's step
+        if (free != null && !released && t - dt >= releaseS - 1e-12) released = true;
         if (path != null) placeBase(t);
         moveSpread(t);
         for (int k = 1; k <= 3; k++) {
@@ -394,13 +396,12 @@ public final class HandModel {
     private void stepObject() {
         double h = dt;
         if (!released) {
-            if (t - h < releaseS - 1e-12) {
-                objectState.held(t, palmPose, free);
-                return;
-            }
-            released = true;
-            objectState.releasedAt = t - h;
-            free.release(t - h);
+            objectState.held(t, palmPose, free);
+            return;
+        }
+        if (Double.isNaN(objectState.releasedAt)) {
+            objectState.releasedAt = clock.at(step - 1);
+            free.release(objectState.releasedAt);
             org.handsim.dynamics.HandDynamics hd = org.handsim.dynamics.HandDynamics.barrettHand();
             for (int k = 1; k <= 3; k++) {
                 org.handsim.dynamics.ChainDynamics chain = hd.finger(k);
@@ -671,7 +672,8 @@ public final class HandModel {
     private void watch(int i) {
         double r = residual[i];
         maxResidual[i] = Math.max(maxResidual[i], r);
-        residualStretches.watch(i, r, t);
+        // a released object's residual is the torque that moved a pressing joint (dynamics), not a missing static equilibrium
+        residualStretches.watch(i, released ? 0 : r, t);
         if (clutch[i].innerHeld()) {
             double w = Math.abs(carried[i][1]);
             if (!(w <= maxWormReaction[i])) maxWormReaction[i] = w;
