@@ -132,6 +132,44 @@ public final class PaperCharts {
         return chart;
     }
 
+    /**
+     * The free object's motion relative to the palm against time (the trace's {@code obj_disp_m}
+     * and {@code obj_rot_deg}): displacement of its centre of mass (mm) above, rotation (degrees)
+     * below, the release ({@code releasedAt}) and a drop ({@code droppedAt}; NaN: none) marked:
+     * how far the object moved in the hand, what a lift or a push is judged by.
+     */
+    public static JFreeChart objectMotion(Recorder r, double releasedAt, double droppedAt, String title) {
+        CombinedDomainXYPlot plot = new CombinedDomainXYPlot(new NumberAxis("time t (s)"));
+        plot.setGap(10);
+        XYSeriesCollection d = new XYSeriesCollection();
+        d.addSeries(series(r, "displacement relative to the palm", row -> 1e3 * r.object(Recorder.OBJ_DISP, row)));
+        XYPlot top = new XYPlot(d, null, new NumberAxis("displacement (mm)"), renderer());
+        XYSeriesCollection a = new XYSeriesCollection();
+        a.addSeries(series(r, "rotation relative to the palm", row -> r.object(Recorder.OBJ_ROT, row)));
+        XYLineAndShapeRenderer rr = renderer();
+        rr.setSeriesPaint(0, J3);
+        XYPlot bottom = new XYPlot(a, null, new NumberAxis("rotation (°)"), rr);
+        LegendItemCollection legend = new LegendItemCollection();
+        legend.add(line("displacement of the centre of mass, relative to the palm", J2, SOLID));
+        legend.add(line("rotation, relative to the palm", J3, SOLID));
+        for (XYPlot p : new XYPlot[] {top, bottom}) {
+            style(p);
+            NumberAxis y = (NumberAxis) p.getRangeAxis();
+            y.setAutoRangeIncludesZero(true);
+            y.setAutoRangeMinimumSize(1e-3);   // an object that does not turn: a flat line, not ticks of 1e-9
+            if (!Double.isNaN(releasedAt)) p.addDomainMarker(new ValueMarker(releasedAt, Color.GRAY, DASHED));
+            if (!Double.isNaN(droppedAt)) p.addDomainMarker(new ValueMarker(droppedAt, BREAK, DASHED));
+            plot.add(p, 1);
+        }
+        if (!Double.isNaN(releasedAt)) legend.add(line(String.format(java.util.Locale.ROOT, "released at %.3f s", releasedAt), Color.GRAY, DASHED));
+        if (!Double.isNaN(droppedAt)) legend.add(line(String.format(java.util.Locale.ROOT, "dropped at %.3f s", droppedAt), BREAK, DASHED));
+        plot.setFixedLegendItems(legend);
+        JFreeChart chart = new JFreeChart(title, new Font("SansSerif", Font.BOLD, 16), plot, true);
+        chart.setPadding(new org.jfree.chart.ui.RectangleInsets(4, 4, 4, 16));
+        chart.setBackgroundPaint(Color.WHITE);
+        return chart;
+    }
+
     /** The legend's name of the breakaway line. */
     static String breakawayName(double tb) {
         return String.format(java.util.Locale.ROOT, "breakaway at %.3f s", tb);

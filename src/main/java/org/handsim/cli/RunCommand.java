@@ -36,12 +36,13 @@ import picocli.CommandLine.Model.CommandSpec;
     description = {"Runs a scenario and writes its trace, summary and the paper's Fig. 7 and 8.",
         "SCENARIO defaults to the paper's breakaway experiment,",
         "scenarios/paper-breakaway.json. Writes trace.csv (streamed as the run goes),",
-        "summary.json and fig7/fig8 (PNG and SVG) into out/<scenario name>/",
+        "summary.json and fig7/fig8 (PNG and SVG; with a free object also",
+        "object_motion, its displacement and rotation in the hand) into out/<scenario name>/",
         "(or --out DIR), all at once when every file is complete; a run that fails or",
         "is stopped leaves the folder as it was."})
 public final class RunCommand implements Callable<Integer> {
     /** The files of a run's folder: summary.json is published last. */
-    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("summary.json", "trace\\.csv|summary\\.json|fig[78]_finger[1-3]\\.(png|svg)");
+    static final OutputSet.Layout LAYOUT = new OutputSet.Layout("summary.json", "trace\\.csv|summary\\.json|(fig[78]_finger[1-3]|object_motion)\\.(png|svg)");
     @Spec CommandSpec spec;
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENARIO", description = "scenario JSON file")
@@ -195,6 +196,12 @@ public final class RunCommand implements Callable<Integer> {
                 () -> PaperCharts.figure8(rec, f, tb, "Contact force on finger " + f + " (" + scenario + ")"));
             files.add("fig7_finger" + k + ".png/.svg");
             files.add("fig8_finger" + k + ".png/.svg");
+        }
+        if (rec.objectColumns()) {
+            double released = model.objectReleasedAt(), dropped = model.objectDroppedAt();
+            set.add(dir.resolve("object_motion"), 900, 700,
+                () -> PaperCharts.objectMotion(rec, released, dropped, "The object in the hand (" + scenario + ")"));
+            files.add("object_motion.png/.svg");
         }
         return files;
     }

@@ -64,11 +64,11 @@ class BoundedMemoryTest {
      * heap, every row written, the mug still in the hand at the end.
      */
     @Test
+    @SuppressWarnings("unchecked")
     void aMillionStepFreeObjectRunFitsIn256MegabytesOfHeap() throws Exception {
         Path dir = Files.createTempDirectory("handsim-long-free-run");
         try {
             Path lift = TestPaths.root().resolve("scenarios/mug-lift.json");
-            @SuppressWarnings("unchecked")
             Map<String, Object> s = (Map<String, Object>) Json.parse(lift.toString(), Files.readString(lift));
             s.put("name", "long-free");
             s.put("duration_s", 1000.0);
@@ -87,7 +87,6 @@ class BoundedMemoryTest {
             }
             assertEquals(1_000_001, rows);
             assertTrue(last.startsWith("1000,"), last);
-            @SuppressWarnings("unchecked")
             Map<String, Object> summary = (Map<String, Object>) Json.parse("summary.json", Files.readString(out.resolve("summary.json")));
             assertEquals(null, summary.get("dropped_at_s"), "the mug stays in the hand");
             System.out.printf("BoundedMemoryTest: 10^6 free-object steps with trace in -Xmx256m, peak resident %d MB, %.0f s, max displacement %s m%n",
