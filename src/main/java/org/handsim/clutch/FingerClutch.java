@@ -219,6 +219,41 @@ public final class FingerClutch {
         if (outerAngleRaw() > theta3Max) stallAtLimit();
     }
 
+    /**
+     * The held links gave way closing by dθk2, dθk3 (rad, ≥ 0): a free object moved and the
+     * links pressing on it followed (DESIGN.md decision 7). BLOCKED: the inner link turned, so
+     * the springs unwind — the contact count moves on by dθk2 in counts — and once they are
+     * unwound (the contact count reaches the motor's) the motor drives the finger again: FREE.
+     * BROKEN (and STALLED after it): the load the worm keeps on the inner link falls by
+     * {@code unloadNmPerRad}·dθk2, the stiffness that stored it. STALLED: the outer link turned,
+     * so the stalled motor's winding unwinds by dθk3 in counts (the motor then winds on to its
+     * stall torque as it follows its set-point).
+     */
+    public void giveWay(double dTheta2, double dTheta3, double unloadNmPerRad) {
+        switch (state) {
+            case BLOCKED:
+                heldTheta2 += dTheta2;
+                heldTheta3 = Math.min(theta3Max, heldTheta3 + dTheta3);
+                qContact += dTheta2 / tr.innerRadPerCount();
+                if (qContact >= motor) {
+                    qContact = Double.NaN;
+                    state = ClutchState.FREE;
+                }
+                break;
+            case BROKEN:
+                heldTheta2 += dTheta2;
+                tauAtBreak = Math.max(0, tauAtBreak - unloadNmPerRad * dTheta2);
+                break;
+            case STALLED:
+                heldTheta2 += dTheta2;
+                if (beforeStall == ClutchState.BROKEN) tauAtBreak = Math.max(0, tauAtBreak - unloadNmPerRad * dTheta2);
+                heldTheta3 = Math.min(theta3Max, heldTheta3 + dTheta3);
+                qStall = Math.min(motor, qStall + dTheta3 / tr.outerRadPerCount(beforeStall == ClutchState.BROKEN));
+                break;
+            default:
+        }
+    }
+
     private double clampCounts(double q) {
         return Math.max(0, Math.min(tr.hand().fingerCountsMax(), q));
     }

@@ -8,6 +8,7 @@ import org.handsim.grasp.GraspAssessment;
 import org.handsim.hand.HandDescription;
 import org.handsim.kinematics.FingerKinematics;
 import org.handsim.kinematics.Transmission;
+import org.handsim.body.MassProperties;
 import org.handsim.math.RigidTransform;
 import org.handsim.scenario.Scenario;
 import org.handsim.scenario.ScenarioException;
@@ -137,6 +138,24 @@ public final class HandModel {
     private final long[] counters = new long[Counter.values().length];
     private final int[] contactsAtStart = new int[3];
 
+    // the free object (DESIGN.md decision 7): null / empty when the object is fixed
+    private final FreeObjectScene free;
+    private final SceneGeometry geometry;
+    private final HandPath path;                    // the hand base's motion, null when it stays
+    private final boolean sceneMoves;               // the object or the base moves: no result is reused from an earlier step
+    private final double releaseS;
+    private final double[] objectStart;
+    private final double[] palmStart = new double[12], palmPose = new double[12], palmTwist = new double[6];
+    private final double[][] baseInPalm = new double[3][12];
+    private final double[][] startFrames = new double[3][48];
+    private final double[] startPalm = new double[12], stepTwist = new double[6];
+    private final double[][] startQ = new double[3][3];
+    private boolean released;
+    private final FreeObjectState objectState = new FreeObjectState();
+    private final double[] linkInertia = new double[6];           // D22, D33 per finger (kg·m²) at release
+    private final int[][] followerOf = new int[3][2];
+    private final double[] twistScratch = new double[6], pScratch = new double[3], nScratch = new double[3], fScratch = new double[3];
+
     // scratch (no allocation in the step)
     private final ContactForces[] solvers = {new ContactForces(), new ContactForces(), new ContactForces()};   // per finger (warm starts)
     private final double[] sample = new double[3], rates = new double[2], transmitted = new double[2];
@@ -181,14 +200,27 @@ public final class HandModel {
      */
     public HandModel(Scenario scenario, LinkContacts objectContacts, TorqueModel dynamics, Recorder recorder) {
         if (scenario.freeObject() != null) {
-            if (objectContacts instanceof SceneGeometry sg) {
-                FreeObjectMass.of(scenario, sg.objectMesh());
-                FreeObjectStart.check(scenario, sg.objectMesh(), sg.worldFromObject());
+            if (!(objectContacts instanceof SceneGeometry sg)) {
+                throw new ScenarioException(scenario.file() + ": field object.free: a free object needs the object's mesh (its collision"
+                    + " back end), which this run has not");
             }
-            // the free object's step (org.handsim.body) is not yet part of this loop: refuse rather than run it fixed
-            throw new ScenarioException(scenario.file() + ": field object.free: a free object is read and checked but not simulated"
-                + " by this version; remove \"free\": true to run the object fixed in place");
+            MassProperties props = FreeObjectMass.of(scenario, sg.objectMesh());
+            FreeObjectStart.check(scenario, sg.objectMesh(), sg.worldFromObject());
+            this.geometry = sg;
+            this.free = new FreeObjectScene(scenario, sg, props);
+            this.objectStart = sg.worldFromObject();
+            this.releaseS = scenario.freeObject().releaseS();
+            if (recorder != null) recorder.withObject();
+        } else {
+            this.geometry = null;
+            this.free = null;
+            this.objectStart = null;
+            this.releaseS = Double.POSITIVE_INFINITY;
         }
+        this.path = scenario.moves().isEmpty() ? null : new HandPath(scenario.worldFromPalm(), scenario.moves());
+        this.sceneMoves = free != null || path != null;
+        scenario.worldFromPalm().copyTo(palmStart, 0);
+        System.arraycopy(palmStart, 0, palmPose, 0, 12);
         this.scenario = scenario;
         this.hand = scenario.hand();
         this.tr = new Transmission(hand);
@@ -210,6 +242,7 @@ public final class HandModel {
             // gravity in {k0}: (R_world<-palm · R_palm<-k0)ᵀ g
             RigidTransform base = scenario.worldFromPalm().compose(hand.finger(k).baseInPalm());
             base.copyTo(worldFromK0[k - 1], 0);
+            hand.finger(k).baseInPalm().copyTo(baseInPalm[k - 1], 0);
             base.inverse().rotate(g, gravityK0[k - 1]);
         }
         initialise();
@@ -234,6 +267,14 @@ public final class HandModel {
     public void initialise() {
         step = 0;
         t = 0;
+        if (path != null) placeBase(0);
+        if (free != null) {
+            released = false;
+            free.body().setPose(objectStart);
+            free.body().setVelocity(new double[3], new double[3]);
+            geometry.placeObject(objectStart);
+            objectState.reset(palmPose, free);
+        }
         residualStretches.clear();
         ratings.clear();
         if (recorder != null) recorder.clear();
@@ -271,6 +312,7 @@ public final class HandModel {
             updateFinger(k, false);
             contactsAtStart[i] = contacts[i].size();
         }
+        if (free != null) objectState.held(t, palmPose, free);
         record();
     }
 
@@ -280,6 +322,15 @@ public final class HandModel {
         step++;
         t = clock.at(step);
         counters[Counter.STEPS.ordinal()]++;
+        if (free != null) {
+            // the object's step starts from the poses of the step's start: the hand's bodies as the last step left them
+            for (int i = 0; i < 3; i++) {
+                System.arraycopy(framesWorld[i], 0, startFrames[i], 0, 48);
+                System.arraycopy(q[i], 0, startQ[i], 0, 3);
+            }
+            System.arraycopy(palmPose, 0, startPalm, 0, 12);
+        }
+        if (path != null) placeBase(t);
         moveSpread(t);
         for (int k = 1; k <= 3; k++) {
             int i = k - 1;
@@ -291,6 +342,7 @@ public final class HandModel {
             if (clutch[i].state() == ClutchState.FREE) unlock(i);
             updateFinger(k, true);
         }
+        if (free != null) stepObject();
         record();
     }
 
@@ -307,6 +359,192 @@ public final class HandModel {
             if (progress != null && step % every == 0) progress.accept(step / (double) totalSteps);
         }
         if (progress != null) progress.accept(1.0);
+    }
+
+    /**
+     * The hand's base at {@code time} ({@link HandPath}): the palm's pose and twist, each
+     * finger's base frame {k0} in the world and gravity in it.
+     */
+    private void placeBase(double time) {
+        path.sample(time, palmPose, palmTwist);
+        double[] g = scenario.gravity();
+        for (int i = 0; i < 3; i++) {
+            RigidTransform.multiply(palmPose, 0, baseInPalm[i], 0, worldFromK0[i], 0);
+            double[] w = worldFromK0[i];
+            for (int a = 0; a < 3; a++) gravityK0[i][a] = w[a] * g[0] + w[4 + a] * g[1] + w[8 + a] * g[2];
+            framedTheta1[i] = Double.NaN;
+        }
+    }
+
+    /**
+     * The free object's part of the step (DESIGN.md decision 7). Until {@code release_s} the
+     * object is held where it is and the fingers close on it as on a fixed object. From then on,
+     * each step: the palm and the nine links are placed as the clutch state machines and motor
+     * profiles put them at t, each with its velocity (the base's twist and the joints' rates of
+     * FREE and BROKEN motion: kinematic bodies); a held inner joint (BLOCKED, BROKEN, STALLED)
+     * and a held outer joint (BLOCKED, STALLED) press as followers with the torque their clutch
+     * or stalled motor transmits ({@link FingerClutch#transmittedTorque}: the springs' wind-up,
+     * the load kept at the breakaway, the stall torque), held against opening by the worm; the
+     * object takes one {@link FreeObjectScene#step}; the joints that followed the object give
+     * way by what they turned ({@link FingerClutch#giveWay}); the contact impulses over h are
+     * the contact forces, whose torques about each joint (eq 9: Σ (z × (p − o))·f) are what the
+     * joints carry beyond τ_dyn. The residual of a finger is then the torque that moved its
+     * pressing joints, D·|θ̇|/h (0 while the object holds them).
+     */
+    private void stepObject() {
+        double h = dt;
+        if (!released) {
+            if (t - h < releaseS - 1e-12) {
+                objectState.held(t, palmPose, free);
+                return;
+            }
+            released = true;
+            objectState.releasedAt = t - h;
+            free.release();
+            org.handsim.dynamics.HandDynamics hd = org.handsim.dynamics.HandDynamics.barrettHand();
+            for (int k = 1; k <= 3; k++) {
+                org.handsim.dynamics.ChainDynamics chain = hd.finger(k);
+                double[] qa = chain.dof() == 3 ? q[k - 1] : new double[] {q[k - 1][1], q[k - 1][2]};
+                double[] d = chain.massMatrix(qa, null);
+                int n = chain.dof();
+                linkInertia[2 * (k - 1)] = d[(n - 2) * n + n - 2];
+                linkInertia[2 * (k - 1) + 1] = d[(n - 1) * n + n - 1];
+            }
+        }
+        free.begin();
+        baseStepTwist(h);
+        free.hand(FreeObjectScene.PALM, startPalm, 0, stepTwist, -1, -1);
+        for (int k = 1; k <= 3; k++) {
+            int i = k - 1;
+            FingerClutch c = clutch[i];
+            ClutchState st = c.state();
+            double[] f = startFrames[i];
+            c.transmittedTorque(transmitted);
+            int f2 = -1, f3 = -1;
+            if (st != ClutchState.FREE) f2 = follower(f, 1, linkInertia[2 * i], transmitted[0]);
+            if (st == ClutchState.BLOCKED || st == ClutchState.STALLED) {
+                f3 = follower(f, 2, linkInertia[2 * i + 1], c.stalledAtOuterLimit() ? 0 : transmitted[1]);
+            }
+            followerOf[i][0] = f2;
+            followerOf[i][1] = f3;
+            for (int j = 1; j <= 3; j++) {
+                linkTwist(i, j, twistScratch);
+                free.hand(FreeObjectScene.linkBody(k, j), f, 12 * j, twistScratch, j >= 2 ? f2 : -1, j == 3 ? f3 : -1);
+            }
+        }
+        free.step(t - h, h);
+        org.handsim.body.BodyStepper stepper = free.stepper();
+        for (int i = 0; i < 3; i++) {
+            double w2 = followerOf[i][0] >= 0 ? stepper.followerVelocity(followerOf[i][0]) : 0;
+            double w3 = followerOf[i][1] >= 0 ? stepper.followerVelocity(followerOf[i][1]) : 0;
+            residual[i] = Math.max(linkInertia[2 * i] * Math.abs(w2), linkInertia[2 * i + 1] * Math.abs(w3)) / h;
+            if (w2 > 0 || w3 > 0) {
+                clutch[i].giveWay(h * Math.max(0, w2), h * Math.max(0, w3), hand.kClutch());
+                placeFinger(i + 1);                    // where the links followed to: the next step starts there
+            }
+        }
+        objectForces(h);
+        geometry.placeObject(free.pose(poseScratch));
+        objectState.stepped(t, palmPose, free);
+        for (int i = 0; i < 3; i++) watch(i);
+    }
+
+    private final double[] poseScratch = new double[12], axisScratch = new double[3], originScratch = new double[3];
+
+    /** A follower about joint m + 1's axis (z of frame {km} in {@code f}) with inertia D and torque τ. */
+    private int follower(double[] f, int m, double inertia, double torque) {
+        int a = 12 * m;
+        axisScratch[0] = f[a + 2]; axisScratch[1] = f[a + 6]; axisScratch[2] = f[a + 10];
+        originScratch[0] = f[a + 3]; originScratch[1] = f[a + 7]; originScratch[2] = f[a + 11];
+        return free.follower(axisScratch, originScratch, inertia, Math.max(0, torque), true);
+    }
+
+    /**
+     * The base's motion over the step, as the mean twist that takes the palm from its pose at the
+     * step's start to its pose now (the velocity of its origin, (o − o₀)/h; the angular velocity
+     * from R R₀ᵀ's skew part over h): the kinematic bodies move over the object's step exactly as
+     * their poses change, so no offset builds up step by step.
+     */
+    private void baseStepTwist(double h) {
+        double[] a = palmPose, b = startPalm;
+        stepTwist[0] = (a[3] - b[3]) / h;
+        stepTwist[1] = (a[7] - b[7]) / h;
+        stepTwist[2] = (a[11] - b[11]) / h;
+        // M = R R0ᵀ: M_rc = Σ_k R[r][k] R0[c][k]
+        double m01 = a[0] * b[4] + a[1] * b[5] + a[2] * b[6], m10 = a[4] * b[0] + a[5] * b[1] + a[6] * b[2];
+        double m02 = a[0] * b[8] + a[1] * b[9] + a[2] * b[10], m20 = a[8] * b[0] + a[9] * b[1] + a[10] * b[2];
+        double m12 = a[4] * b[8] + a[5] * b[9] + a[6] * b[10], m21 = a[8] * b[4] + a[9] * b[5] + a[10] * b[6];
+        stepTwist[3] = 0.5 * (m21 - m12) / h;
+        stepTwist[4] = 0.5 * (m02 - m20) / h;
+        stepTwist[5] = 0.5 * (m10 - m01) / h;
+    }
+
+    /**
+     * Finger i's link j's twist over the step (world): the velocity of its frame's origin and its
+     * angular velocity, from the base's ({@link #baseStepTwist}) and the joints 1..j's mean rates
+     * over the step (their change over h: the kinematic motion of FREE and BROKEN links).
+     */
+    private void linkTwist(int i, int j, double[] out) {
+        double[] f = startFrames[i];
+        int b = 12 * j;
+        double ox = f[b + 3], oy = f[b + 7], oz = f[b + 11];
+        double wx = stepTwist[3], wy = stepTwist[4], wz = stepTwist[5];
+        double rx = ox - startPalm[3], ry = oy - startPalm[7], rz = oz - startPalm[11];
+        double vx = stepTwist[0] + wy * rz - wz * ry, vy = stepTwist[1] + wz * rx - wx * rz, vz = stepTwist[2] + wx * ry - wy * rx;
+        for (int m = 1; m <= j; m++) {
+            double r = (q[i][m - 1] - startQ[i][m - 1]) / dt;
+            if (r == 0) continue;
+            int a = 12 * (m - 1);
+            double zx = f[a + 2], zy = f[a + 6], zz = f[a + 10];
+            double dx = ox - f[a + 3], dy = oy - f[a + 7], dz = oz - f[a + 11];
+            wx += r * zx; wy += r * zy; wz += r * zz;
+            vx += r * (zy * dz - zz * dy); vy += r * (zz * dx - zx * dz); vz += r * (zx * dy - zy * dx);
+        }
+        out[0] = vx; out[1] = vy; out[2] = vz; out[3] = wx; out[4] = wy; out[5] = wz;
+    }
+
+    /**
+     * The contact forces of the object's step (impulse / h) as each finger's contacts, with the
+     * torques they put on its joints (carried = τ_dyn + Σ (z × (p − o))·f over the links each
+     * joint carries, eq 9) and the largest sum of the run.
+     */
+    private void objectForces(double h) {
+        org.handsim.body.BodyContacts bc = free.contacts();
+        for (int i = 0; i < 3; i++) {
+            contacts[i].clear();
+            objectState.innerForce[i] = 0;
+        }
+        for (int c = 0, n = bc.size(); c < n; c++) {
+            int b = bc.body(c);
+            if (b < 1 || b >= FreeObjectScene.HAND_BODIES) continue;
+            int i = (b - 1) / 3, j = (b - 1) % 3 + 1;
+            bc.point(c, pScratch);
+            bc.normal(c, nScratch);
+            bc.impulse(c, fScratch);
+            ContactSet cs = contacts[i];
+            int x = cs.add(j, pScratch[0], pScratch[1], pScratch[2], -nScratch[0], -nScratch[1], -nScratch[2], 0);
+            double fx = fScratch[0] / h, fy = fScratch[1] / h, fz = fScratch[2] / h, mag = Math.sqrt(fx * fx + fy * fy + fz * fz);
+            cs.forceVectors[3 * x] = fx; cs.forceVectors[3 * x + 1] = fy; cs.forceVectors[3 * x + 2] = fz;
+            cs.forces[x] = mag;
+            if (j == 2) objectState.innerForce[i] += mag;
+        }
+        for (int i = 0; i < 3; i++) {
+            ContactSet cs = contacts[i];
+            double[] f = startFrames[i];
+            for (int j = 1; j <= 3; j++) {
+                int a = 12 * (j - 1);
+                double zx = f[a + 2], zy = f[a + 6], zz = f[a + 10], ox = f[a + 3], oy = f[a + 7], oz = f[a + 11];
+                double sum = 0;
+                for (int c = 0; c < cs.size(); c++) {
+                    if (cs.links[c] < j) continue;
+                    double rx = cs.points[3 * c] - ox, ry = cs.points[3 * c + 1] - oy, rz = cs.points[3 * c + 2] - oz;
+                    sum += (zy * rz - zz * ry) * cs.forceVectors[3 * c] + (zz * rx - zx * rz) * cs.forceVectors[3 * c + 1]
+                        + (zx * ry - zy * rx) * cs.forceVectors[3 * c + 2];
+                }
+                carried[i][j - 1] = tauDyn[i][j - 1] + sum;
+            }
+            maxForce[i] = Math.max(maxForce[i], cs.forceSum());
+        }
     }
 
     /** Where the spread starts: its set-point at t = 0, moving freely. */
@@ -422,7 +660,7 @@ public final class HandModel {
         maxForce[i] = Math.max(maxForce[i], contacts[i].forceSum());
         clutchTorque[i] = clutch[i].clutchTorque(tauDyn[i][1]);
         guard(k);
-        watch(i);
+        if (!released) watch(i);                      // released: after the object's step gives the forces
     }
 
     /**
@@ -448,6 +686,7 @@ public final class HandModel {
      */
     private boolean idle(int k) {
         int i = k - 1;
+        if (sceneMoves) return false;
         double[] in = lastInput[i];
         double sr = hand.finger(k).spreadRadPerCount();
         double s0 = clutch[i].motor(), s1 = motorVel[i], s2 = motorAcc[i];
@@ -498,7 +737,7 @@ public final class HandModel {
         boolean changed = false;
         for (int j = 1; j <= 3; j++) {
             double[] at = linkCollidedAt[i][j - 1];
-            boolean same = lazy;
+            boolean same = lazy && !sceneMoves;
             for (int m = 0; m < j && same; m++) same = at[m] == q[i][m];
             if (same) {
                 counters[Counter.COLLISIONS_SKIPPED.ordinal()]++;
@@ -715,7 +954,7 @@ public final class HandModel {
         FingerClutch c = clutch[i];
         if (scenario.computeTorques() || c.state() == ClutchState.BLOCKED) {
             double[] a = dynAt[i];
-            boolean same = lazy;
+            boolean same = lazy && !sceneMoves;
             for (int j = 0; j < 3 && same; j++) {
                 same = a[j] == q[i][j] && a[3 + j] == qd[i][j] && a[6 + j] == qdd[i][j];
             }
@@ -739,6 +978,7 @@ public final class HandModel {
         tau[i][0] = tauDyn[i][0];
         tau[i][1] = tauDyn[i][1] + transmitted[0];
         tau[i][2] = tauDyn[i][2] + transmitted[1];
+        if (released) return;                          // the object's step gives the forces (stepObject)
         solveForces(k, c.innerHeld());
     }
 
@@ -909,10 +1149,14 @@ public final class HandModel {
             tauContact[0] = 0;
             tauContact[1] = share;
             tauContact[2] = 0;                         // BLOCKED drives the outer joint at 0
-            solveForces(k, false);
             ContactSet cs = contacts[i];
             double forceInner = 0;
-            for (int j = 0; j < cs.size(); j++) if (cs.links[j] == 2) forceInner += cs.forces[j];
+            if (released) {
+                forceInner = objectState.innerForce[i];   // the last object step's, on the inner link
+            } else {
+                solveForces(k, false);
+                for (int j = 0; j < cs.size(); j++) if (cs.links[j] == 2) forceInner += cs.forces[j];
+            }
             breakForce[i] = forceInner;
             maxForce[i] = Math.max(maxForce[i], cs.forceSum());
             breakQ[i] = qb;
@@ -958,6 +1202,22 @@ public final class HandModel {
             recorder.setSpreadTorque(k, tau[i][0]);
         }
         recorder.setSpread(spread);
+        if (free != null) {
+            FreeObjectState o = objectState;
+            recorder.setObject(Recorder.OBJ_X, o.x[0]);
+            recorder.setObject(Recorder.OBJ_Y, o.x[1]);
+            recorder.setObject(Recorder.OBJ_Z, o.x[2]);
+            recorder.setObject(Recorder.OBJ_QW, o.q[0]);
+            recorder.setObject(Recorder.OBJ_QX, o.q[1]);
+            recorder.setObject(Recorder.OBJ_QY, o.q[2]);
+            recorder.setObject(Recorder.OBJ_QZ, o.q[3]);
+            recorder.setObject(Recorder.OBJ_SPEED, o.speed);
+            recorder.setObject(Recorder.OBJ_SPIN, o.spin);
+            recorder.setObject(Recorder.OBJ_CONTACTS, o.contacts);
+            recorder.setObject(Recorder.OBJ_PENETRATION, o.penetration);
+            recorder.setObject(Recorder.OBJ_DISP, o.disp);
+            recorder.setObject(Recorder.OBJ_ROT, o.rot);
+        }
     }
 
     /**
@@ -1132,6 +1392,39 @@ public final class HandModel {
     public double[] objectCentroidAndRadius() {
         return objectContacts == null ? null : objectContacts.centroidAndRadius();
     }
+
+    /** Whether the scenario's object is free (DESIGN.md decision 7). */
+    public boolean objectFree() { return free != null; }
+
+    /** Whether the free object has been released (false while it is held, and for a fixed object). */
+    public boolean objectReleased() { return released; }
+
+    /**
+     * The free object's figures now, or null for a fixed object: {x, y, z (centre of mass,
+     * world, m), qw, qx, qy, qz (mesh frame to world), speed (m/s), spin (rad/s), contact points,
+     * largest penetration (m), displacement (m) and rotation (degrees) relative to the palm since
+     * the start} (a new array).
+     */
+    public double[] objectNow() {
+        if (free == null) return null;
+        FreeObjectState o = objectState;
+        return new double[] {o.x[0], o.x[1], o.x[2], o.q[0], o.q[1], o.q[2], o.q[3], o.speed, o.spin, o.contacts, o.penetration, o.disp, o.rot};
+    }
+
+    /** The free object's largest displacement relative to the palm so far, m (NaN for a fixed object). */
+    public double objectMaxDisplacement() { return free == null ? Double.NaN : objectState.maxDisp; }
+
+    /** The free object's largest rotation relative to the palm so far, degrees (NaN for a fixed object). */
+    public double objectMaxRotation() { return free == null ? Double.NaN : objectState.maxRot; }
+
+    /** When the free object dropped ({@link FreeObjectState#droppedAt}), s; NaN if it did not, or for a fixed object. */
+    public double objectDroppedAt() { return free == null ? Double.NaN : objectState.droppedAt(); }
+
+    /** When the free object first moved more than 5 mm relative to the palm, s; NaN if never. */
+    public double objectSlippedAt() { return free == null ? Double.NaN : objectState.slippedAt; }
+
+    /** When the free object was released (the start of its first free step), s; NaN before. */
+    public double objectReleasedAt() { return free == null ? Double.NaN : objectState.releasedAt; }
 
     /** Work counters since {@link #initialise()}. */
     public long counter(Counter c) { return counters[c.ordinal()]; }

@@ -14,7 +14,12 @@ import java.util.Map;
  * max_contact_force_N, torque_residual_Nm, max_worm_reaction_Nm|null}], lazy, counters{...}};
  * {@code torque_residual_Nm} is the largest {@link HandModel#torqueResidual} of the run,
  * {@code max_worm_reaction_Nm} the largest torque the inner joint's worm held
- * ({@link HandModel#maxWormReaction}; null if it never held the joint).
+ * ({@link HandModel#maxWormReaction}; null if it never held the joint). A run with a free object
+ * (DESIGN.md decision 7) adds, after {@code fingers}: {@code released_at_s} (null if it was
+ * never released), {@code max_displacement_m} and {@code max_rotation_deg} (its largest
+ * displacement and rotation relative to the palm), {@code slipped_at_s} (when it first moved
+ * more than 5 mm relative to the palm, or null) and {@code dropped_at_s} (when it lost every
+ * contact with the hand and moved away, or null).
  */
 public final class RunSummary {
     private RunSummary() {}
@@ -53,6 +58,13 @@ public final class RunSummary {
             fingers.add(f);
         }
         s.put("fingers", fingers);
+        if (m.objectFree()) {
+            s.put("released_at_s", orNull(m.objectReleasedAt()));
+            s.put("max_displacement_m", m.objectMaxDisplacement());
+            s.put("max_rotation_deg", m.objectMaxRotation());
+            s.put("slipped_at_s", orNull(m.objectSlippedAt()));
+            s.put("dropped_at_s", orNull(m.objectDroppedAt()));
+        }
         Map<String, Object> c = new LinkedHashMap<>();
         for (HandModel.Counter counter : HandModel.Counter.values()) c.put(counter.name().toLowerCase(), m.counter(counter));
         c.putAll(m.collisionCounters());

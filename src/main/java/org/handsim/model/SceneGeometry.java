@@ -130,7 +130,8 @@ public final class SceneGeometry implements LinkContacts {
         objectCentreWorld = object.worldFromObject().apply(new double[] {os[0], os[1], os[2]});
         objectRadius = os[3];
         tolerance = ContactPatches.TOLERANCE_FACTOR * diag;
-        double[] cw = object.worldFromObject().apply(obj.centroid());
+        objectCentroid = obj.centroid();
+        double[] cw = object.worldFromObject().apply(objectCentroid);
         centroidAndRadius = new double[] {cw[0], cw[1], cw[2], obj.centroidReach()};
         thickness = same ? retired.thickness : obj.thickness();
         linkThickness = retired != null && retired.k == k ? retired.linkThickness : linkWidth;
@@ -207,7 +208,7 @@ public final class SceneGeometry implements LinkContacts {
     }
 
     private final double thickness, linkThickness;
-    private final double[] centroidAndRadius;
+    private final double[] centroidAndRadius, objectCentroid;
 
     @Override
     public double[] centroidAndRadius() {
@@ -271,6 +272,19 @@ public final class SceneGeometry implements LinkContacts {
     private static double sq(double x) { return x * x; }
 
 
+
+    /**
+     * Moves the object to {@code worldFromObject} (12 values): a free object (DESIGN.md decision
+     * 7) after its step; the next queries see it there. Allocation-free.
+     */
+    void placeObject(double[] worldFromObject) {
+        System.arraycopy(worldFromObject, 0, this.worldFromObject, 0, 12);
+        double[] w = worldFromObject, os = objectShape.sphere, oc = objectCentroid;
+        for (int i = 0; i < 3; i++) {
+            objectCentreWorld[i] = w[4 * i] * os[0] + w[4 * i + 1] * os[1] + w[4 * i + 2] * os[2] + w[4 * i + 3];
+            centroidAndRadius[i] = w[4 * i] * oc[0] + w[4 * i + 1] * oc[1] + w[4 * i + 2] * oc[2] + w[4 * i + 3];
+        }
+    }
 
     public TriangleMesh objectMesh() { return objectMesh; }
     /** The object's tree (object frame) and link j's (frame {kj}), for other queries on the same trees ({@link HandClearance}). */

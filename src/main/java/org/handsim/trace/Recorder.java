@@ -24,7 +24,11 @@ import org.handsim.text.Decimal;
  * carried33_Nm} (the torque each joint carries, {@link HandModel#carriedTorque}; finger 3 has no
  * joint k1), then {@code tau11_Nm, tau21_Nm, tau31_Nm} (the spread joint's torque τk1, which the
  * window's Dynamics table shows beside τk2 and τk3; 0 for finger 3, whose joint 31 is fixed, as
- * {@code theta31_rad} is 0). Numbers are written by
+ * {@code theta31_rad} is 0). A run with a free object ({@link #withObject()}) appends the object's
+ * columns {@link #OBJECT_COLUMNS}: its centre of mass (world, m), orientation (unit quaternion,
+ * mesh frame to world), speed (m/s) and angular speed (rad/s), its number of contact points and
+ * largest penetration (m), and its displacement (m) and rotation (degrees) relative to the palm
+ * since the start; a fixed run's header is unchanged. Numbers are written by
  * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
  * ({@link Decimal#clean}).
  *
@@ -76,6 +80,16 @@ public final class Recorder implements AutoCloseable {
     /** The spread joints' torque columns τ11, τ21, τ31. */
     static final int SPREAD_TAU = 3;
     private double[][] spreadTau = new double[SPREAD_TAU][1024];
+    /** The free object's columns, appended after {@code tau31_Nm} when the run has one. */
+    public static final String[] OBJECT_COLUMNS = {"obj_x_m", "obj_y_m", "obj_z_m", "obj_qw", "obj_qx", "obj_qy", "obj_qz",
+        "obj_speed_m_s", "obj_spin_rad_s", "obj_contacts", "obj_penetration_m", "obj_disp_m", "obj_rot_deg"};
+    /** Indices of the object's columns ({@link #setObject}, {@link #object}). */
+    public static final int OBJ_X = 0, OBJ_Y = 1, OBJ_Z = 2, OBJ_QW = 3, OBJ_QX = 4, OBJ_QY = 5, OBJ_QZ = 6, OBJ_SPEED = 7, OBJ_SPIN = 8,
+        OBJ_CONTACTS = 9, OBJ_PENETRATION = 10, OBJ_DISP = 11, OBJ_ROT = 12;
+    private static final int NO = OBJECT_COLUMNS.length;
+    private boolean object;
+    private double[][] obj = new double[0][];
+    private int width = WIDTH;
 
     /** A recorder that keeps every row in memory. */
     public Recorder() {
@@ -101,7 +115,38 @@ public final class Recorder implements AutoCloseable {
         return new Recorder(trace, expectedRows);
     }
 
-    /** The header line of trace.csv (without newline). */
+    /**
+     * Adds the free object's columns ({@link #OBJECT_COLUMNS}) to every row; before the first
+     * row only. Returns this.
+     */
+    public Recorder withObject() {
+        if (total > 0) throw new IllegalStateException("the object's columns must be added before the first row");
+        if (!object) {
+            object = true;
+            obj = new double[NO][time.length];
+            width = WIDTH + NO;
+        }
+        return this;
+    }
+
+    /** Whether rows carry the free object's columns. */
+    public boolean objectColumns() { return object; }
+
+    /** Sets the free object's column c ({@link #OBJ_X} … {@link #OBJ_ROT}) in the current row. */
+    public void setObject(int c, double v) { obj[c][rows - 1] = v; }
+
+    /** The free object's column c in a row in memory. */
+    public double object(int c, int row) { return obj[c][row]; }
+
+    /** A copy of the free object's column c over the rows in memory. */
+    public double[] objectColumn(int c) { return Arrays.copyOf(obj[c], rows); }
+
+    /** The header line of this recorder's trace.csv (without newline): {@link #header()}, then the object's columns if it has them. */
+    public String headerLine() {
+        return object ? header() + "," + String.join(",", OBJECT_COLUMNS) : header();
+    }
+
+    /** The header line of trace.csv of a run without a free object (without newline). */
     public static String header() {
         List<String> h = new ArrayList<>();
         h.add("t_s");
@@ -139,7 +184,7 @@ public final class Recorder implements AutoCloseable {
             else if (q != firstQ[k]) moved[k] = true;
         }
         if (target != null) {
-            if (writer == null) writer = new RowWriter(target, buffered);   // the folder and the temporary file appear now
+            if (writer == null) writer = new RowWriter(target, buffered, width, object, headerLine());   // the folder and the temporary file appear now
             writer.put(this, r);
         }
         return index % stride == 0;
@@ -160,6 +205,7 @@ public final class Recorder implements AutoCloseable {
         for (int k = 0; k < 3; k++) to[i++] = residual[k][r];
         for (int c = 0; c < CARRIED; c++) to[i++] = carried[c][r];
         for (int k = 0; k < SPREAD_TAU; k++) to[i++] = spreadTau[k][r];
+        if (object) for (int c = 0; c < NO; c++) to[i++] = obj[c][r];
     }
 
     /** Finger of carried-torque column c (0..7). */
@@ -181,8 +227,11 @@ public final class Recorder implements AutoCloseable {
      */
     static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6 + CARRIED + SPREAD_TAU;
 
-    /** One trace.csv line from a row of {@link #WIDTH} numbers (the one place the format is written). */
-    static void format(double[] row, StringBuilder sb) {
+    /**
+     * One trace.csv line from a row of {@link #WIDTH} numbers, or {@link #WIDTH} + the object's
+     * when {@code object} (the one place the format is written).
+     */
+    static void format(double[] row, boolean object, StringBuilder sb) {
         sb.setLength(0);
         int i = 0;
         Decimal.append(sb, row[i++]);
@@ -194,6 +243,12 @@ public final class Recorder implements AutoCloseable {
         }
         Decimal.append(sb.append(','), Decimal.clean(row[i++]));
         for (int c = 0; c < 6 + CARRIED + SPREAD_TAU; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+        if (object) {
+            for (int c = 0; c < NO; c++) {
+                if (c == OBJ_CONTACTS) sb.append(',').append((long) row[i++]);
+                else Decimal.append(sb.append(','), Decimal.clean(row[i++]));
+            }
+        }
         sb.append('\n');
     }
 
@@ -218,15 +273,21 @@ public final class Recorder implements AutoCloseable {
         private int inCurrent;
         private volatile Throwable failure;
         private volatile long nanos;
+        private final int width;
+        private final boolean object;
+        private final String header;
 
-        RowWriter(Path target, int buffered) {
+        RowWriter(Path target, int buffered, int width, boolean object, String header) {
             super("trace-writer");
+            this.width = width;
+            this.object = object;
+            this.header = header;
             this.chunks = Math.max(2, (buffered + CHUNK - 1) / CHUNK);
             this.free = new java.util.concurrent.ArrayBlockingQueue<>(chunks);
             this.full = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
             this.counts = new java.util.concurrent.ArrayBlockingQueue<>(chunks + 1);
             setDaemon(true);
-            for (int i = 0; i < chunks; i++) free.add(new double[CHUNK * WIDTH]);   // before the file: nothing to clean up if this fails
+            for (int i = 0; i < chunks; i++) free.add(new double[CHUNK * width]);   // before the file: nothing to clean up if this fails
             try {
                 file = new AtomicFile(target);
             } catch (IOException e) {
@@ -247,7 +308,7 @@ public final class Recorder implements AutoCloseable {
                 }
                 inCurrent = 0;
             }
-            rec.copyRow(r, current, inCurrent * WIDTH);
+            rec.copyRow(r, current, inCurrent * width);
             if (++inCurrent == CHUNK) handOver();
         }
 
@@ -266,11 +327,11 @@ public final class Recorder implements AutoCloseable {
         @Override
         public void run() {
             StringBuilder sb = new StringBuilder(512);
-            double[] row = new double[WIDTH];
+            double[] row = new double[width];
             try {
                 AsciiOut w = new AsciiOut(file.stream());
                 long t0 = System.nanoTime();
-                sb.append(header()).append('\n');
+                sb.append(header).append('\n');
                 w.append(sb);
                 nanos += System.nanoTime() - t0;
                 while (true) {
@@ -279,8 +340,8 @@ public final class Recorder implements AutoCloseable {
                     int n = counts.take();
                     t0 = System.nanoTime();
                     for (int i = 0; i < n; i++) {
-                        System.arraycopy(chunk, i * WIDTH, row, 0, WIDTH);
-                        format(row, sb);
+                        System.arraycopy(chunk, i * width, row, 0, width);
+                        format(row, object, sb);
                         w.append(sb);
                     }
                     nanos += System.nanoTime() - t0;
@@ -290,7 +351,7 @@ public final class Recorder implements AutoCloseable {
             } catch (Throwable t) {
                 failure = t;
                 free.clear();
-                for (int i = 0; i < chunks; i++) free.offer(new double[CHUNK * WIDTH]);   // never leave the stepping thread waiting
+                for (int i = 0; i < chunks; i++) free.offer(new double[CHUNK * width]);   // never leave the stepping thread waiting
             }
         }
 
@@ -371,6 +432,7 @@ public final class Recorder implements AutoCloseable {
         }
         for (int c = 0; c < CARRIED; c++) carried[c] = Arrays.copyOf(carried[c], n);
         for (int k = 0; k < SPREAD_TAU; k++) spreadTau[k] = Arrays.copyOf(spreadTau[k], n);
+        for (int c = 0; c < obj.length; c++) obj[c] = Arrays.copyOf(obj[c], n);
     }
 
     /** Sets numeric column c (Q .. TAU3) of finger k (1..3) in the current row. */
@@ -462,13 +524,13 @@ public final class Recorder implements AutoCloseable {
     public void writeCsv(Path target) throws IOException {
         try (AtomicFile f = new AtomicFile(target)) {
             Writer w = f.writer();
-            w.write(header());
+            w.write(headerLine());
             w.write('\n');
-            double[] row = new double[WIDTH];
+            double[] row = new double[width];
             StringBuilder sb = new StringBuilder(512);
             for (int r = 0; r < rows; r++) {
                 copyRow(r, row, 0);
-                format(row, sb);
+                format(row, object, sb);
                 w.append(sb);
             }
             f.commit();
