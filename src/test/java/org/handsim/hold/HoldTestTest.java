@@ -60,6 +60,48 @@ public class HoldTestTest {
         }
     }
 
+    /**
+     * A free object's own mass fields are the hold test's mass when no option gives one: the far
+     * cube made free (held until 100 s, so it stays put while the fingers close) with
+     * {@code mass_kg} 0.3, then {@code density_kg_m3} 500 (× the cube mesh's volume), then a
+     * given inertia and centre of mass; {@code --mass} still wins. The
+     * push is 10 m/s² × that mass and the cube flies off as a free body: 0.2 m in 0.2 s whatever
+     * the mass.
+     */
+    @Test
+    void aFreeObjectsMassFieldsAreTheHoldTestsMass() throws Exception {
+        Path dir = Files.createTempDirectory("hold-mass");
+        try {
+            String far = Files.readString(farCube(dir));
+            HoldSettings hs = new HoldSettings(Double.NaN, 0.2, 0.001, false, 0.05, 15, 0.005, 5, 10, 58.84);
+            String[] fields = {"\"free\": true, \"mass_kg\": 0.3, \"release_s\": 100",
+                "\"free\": true, \"density_kg_m3\": 500, \"release_s\": 100",
+                "\"free\": true, \"mass_kg\": 0.3, \"inertia_kg_m2\": [[1e-3, 0, 0], [0, 2e-3, 0], [0, 0, 3e-3]], \"com_m\": [0.001, 0, 0],"
+                    + " \"release_s\": 100"};
+            for (int i = 0; i < fields.length; i++) {
+                Path f = dir.resolve("free" + i + ".json");
+                Files.writeString(f, far.replace("\"scale\": 1.0", "\"scale\": 1.0, " + fields[i]));
+                Scenario s = Scenario.load(f);
+                org.handsim.model.SceneGeometry g = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K);
+                double want = i == 1 ? 500 * org.handsim.body.MassProperties.ofSolid(g.objectMesh(), 1).mass() : 0.3;
+                HoldReport r = HoldReport.of(s, Double.NaN, Double.NaN, hs, false);
+                assertEquals("scenario", r.massSource(), fields[i]);
+                assertEquals(want, r.mass().mass(), 1e-12 * want, fields[i]);
+                assertEquals(10 * want, r.test().forceN(), 1e-9 * want, fields[i]);
+                if (i == 2) {
+                    assertEquals(2e-3, r.mass().inertia()[4], 1e-15, "the given inertia");
+                    assertEquals(0.001, r.mass().centreOfMass()[0], 1e-15, "the given centre of mass");
+                }
+                for (DirectionResult d : r.directions()) assertEquals(0.2, d.finalDisplacementM(), 1e-12, fields[i] + " " + d.direction());
+                HoldReport given = HoldReport.of(s, 0.05, Double.NaN, hs, false);
+                assertEquals("given", given.massSource());
+                assertEquals(0.05, given.mass().mass(), 1e-15, "--mass wins over the scenario's");
+            }
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
     @Test
     @Tag("slow")   // the mug grasp closed (2.2 s at 1 ms) and pushed six ways: seconds of CPU
     void theMugGraspHoldsEverywhereWithDexGraspBenchsPush() {
