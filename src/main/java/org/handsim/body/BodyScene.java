@@ -36,6 +36,7 @@ public final class BodyScene {
     private final double[] axis = new double[3], origin = new double[3];
     private double friction = 0.5, margin = ProximityContacts.DEFAULT_MARGIN, depth = 5 * ProximityContacts.DEFAULT_MARGIN;
     private double time;
+    private final double reach;
 
     /** The object with its mesh at {@code worldFromMesh}, at rest. */
     public BodyScene(TriangleMesh objectMesh, MassProperties props, RigidTransform worldFromMesh) {
@@ -53,6 +54,8 @@ public final class BodyScene {
         this.objectTopology = objectTopology;
         this.body = new FreeBody(props, worldFromMesh);
         this.stepper = new BodyStepper(body);
+        this.reach = Tunnelling.reach(objectMesh, props);
+        stepper.watchTunnelling(margin, reach);
     }
 
     /** Adds a static support: {@code mesh} placed by {@code pose}; returns its id (0, 1, …). */
@@ -182,10 +185,11 @@ public final class BodyScene {
         return this;
     }
 
-    /** Sets the contact margin δ (m) and the deepest penetration D (m) the proximity query reports; returns this. */
+    /** Sets the contact margin δ (m) and the deepest penetration D (m) the proximity query reports (the tunnelling watch starts again with δ); returns this. */
     public BodyScene margin(double marginM, double depthM) {
         this.margin = marginM;
         this.depth = depthM;
+        stepper.watchTunnelling(marginM, reach);
         return this;
     }
 
@@ -278,6 +282,9 @@ public final class BodyScene {
 
     /** @return the contacts of the last step, with their impulses */
     public BodyContacts contacts() { return contacts; }
+
+    /** @return the steps in which a point of the object moved more than the contact margin */
+    public Tunnelling tunnelling() { return stepper.tunnelling(); }
 
     /** @return the stepper (its solver's counters) */
     public BodyStepper stepper() { return stepper; }

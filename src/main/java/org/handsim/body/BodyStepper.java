@@ -49,6 +49,8 @@ public final class BodyStepper {
     private boolean[] fWorm = new boolean[4];
     private double[] fWormImpulse = new double[4];
     private final double[] t1 = new double[3], t2 = new double[3], rel = new double[3];
+    private double time;
+    private Tunnelling tunnelling;
 
     /** Steps {@code body}. */
     public BodyStepper(FreeBody body) {
@@ -63,6 +65,25 @@ public final class BodyStepper {
 
     /** @return the solver of the last step */
     public ContactSolver solver() { return solver; }
+
+    /**
+     * Watches every step from now on for tunnelling: a point of the object moving more than
+     * {@code marginM} (the contact margin) in one step ({@link Tunnelling}).
+     *
+     * @param reachM the object's reach from its centre of mass ({@link Tunnelling#reach})
+     */
+    public void watchTunnelling(double marginM, double reachM) {
+        tunnelling = new Tunnelling(marginM, reachM);
+    }
+
+    /** @return what {@link #watchTunnelling} has seen so far, or null if it was not called */
+    public Tunnelling tunnelling() { return tunnelling; }
+
+    /** Sets the clock (s): the time the next step starts at; each step advances it by its h. */
+    public void setTime(double timeS) { time = timeS; }
+
+    /** @return the clock, s: the end of the last step */
+    public double time() { return time; }
 
     /** Forgets the followers (call before adding this step's). */
     public void clearFollowers() { followers = 0; }
@@ -137,6 +158,7 @@ public final class BodyStepper {
         int nc = contacts.n;
         if (nc == 0 && followers == 0) {
             body.endStep(h, free, force, torque);
+            watch(h, free);
             return ContactSolver.Outcome.CONVERGED;
         }
         int nv = 6 + followers;
@@ -200,7 +222,14 @@ public final class BodyStepper {
             }
         }
         body.endStep(h, twist, force, torque);
+        watch(h, twist);
         return out;
+    }
+
+    /** Advances the clock by h and shows the step's twist to the tunnelling watch. */
+    private void watch(double h, double[] tw) {
+        time += h;
+        if (tunnelling != null) tunnelling.observe(time, h, tw[0], tw[1], tw[2], tw[3], tw[4], tw[5]);
     }
 
     /** Row (dᵀ, (r × d)ᵀ) into jac[o..o+5]. */

@@ -13,7 +13,9 @@
  *       exact cones) and its Newton solver; {@link org.handsim.body.PolyhedralContactSolver}, the
  *       same problem on pyramids through ojAlgo, the reference it is measured against;</li>
  *   <li>{@link org.handsim.body.BodyContacts}, {@link org.handsim.body.BodyStepper}: one step's
- *       contact points, and the step with them (finger links that press as followers);</li>
+ *       contact points, and the step with them (finger links that press as followers);
+ *       {@link org.handsim.body.Tunnelling}, the steps in which a point of the object moved
+ *       more than the contact margin;</li>
  *   <li>{@link org.handsim.body.ProximityContacts}, {@link org.handsim.body.MeshTopology}: contact
  *       points from proximity within a margin, at most 9 spanning each patch;</li>
  *   <li>{@link org.handsim.body.BodyScene}: the object among static supports;

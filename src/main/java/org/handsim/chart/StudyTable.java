@@ -30,6 +30,7 @@ public final class StudyTable {
     private final List<Row> rows = new ArrayList<>();
     private final Map<String, String> notes = new LinkedHashMap<>();
     private boolean labelEveryPoint = true;
+    private boolean front = true;
 
     /**
      * @param id      file base name, e.g. {@code 1-dt}
@@ -79,6 +80,18 @@ public final class StudyTable {
     }
 
     public boolean labelsEveryPoint() { return labelEveryPoint; }
+
+    /**
+     * Whether the chart draws each series' Pareto front (default: x is a cost, y an error) or,
+     * when x is a setting rather than a cost (the time step against an error), a thin line
+     * through each series' points in the order of x instead.
+     */
+    public StudyTable paretoFront(boolean on) {
+        front = on;
+        return this;
+    }
+
+    public boolean drawsParetoFront() { return front; }
     public String id() { return id; }
     public String title() { return title; }
     public String xLabel() { return xLabel; }

@@ -22,7 +22,8 @@ import org.jfree.data.xy.XYSeriesCollection;
 /**
  * A speed-against-accuracy chart from a {@link StudyTable}: x and y on log axes, one colour per
  * series, each point labelled with its setting, each series' Pareto front drawn as a dashed
- * line through its non-dominated points, the default setting ringed and labelled in bold
+ * line through its non-dominated points (or, where x is a setting and not a cost,
+ * {@link StudyTable#paretoFront}, a thin line through the points in the order of x), the default setting ringed and labelled in bold
  * "(default)". Values that are 0 (an exact answer) cannot sit on a log axis: they are drawn at
  * the floor of the axis (a tenth of the smallest positive value) and the subtitle says so; the
  * CSV keeps the 0.
@@ -82,8 +83,14 @@ public final class TradeoffChart {
                     : t.labelsEveryPoint() || row.isDefault() || onFront.contains(i) ? row.setting() : null);
                 if (row.isDefault()) r.markDefault(data.getSeriesCount(), points.getItemCount() - 1);
             }
-            XYSeries front = new XYSeries(name + " (Pareto front)", false, true);
-            for (int i : onFront) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
+            XYSeries front = new XYSeries(name + " (Pareto front)", !t.drawsParetoFront(), true);
+            if (t.drawsParetoFront()) {
+                for (int i : onFront) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
+            } else {
+                for (int i = 0; i < x.length; i++) {
+                    if (Double.isFinite(x[i]) && Double.isFinite(y[i])) front.add(x[i] > 0 ? x[i] : fx, y[i] > 0 ? y[i] : fy);
+                }
+            }
             Color c = PALETTE[s % PALETTE.length];
             int pi = data.getSeriesCount();
             // a series drawn exactly over an earlier one (the cube's centre and normal errors,
@@ -105,7 +112,8 @@ public final class TradeoffChart {
             r.setSeriesPaint(pi + 1, c);
             r.setSeriesLinesVisible(pi + 1, true);
             r.setSeriesShapesVisible(pi + 1, false);
-            r.setSeriesStroke(pi + 1, new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1f, new float[] {6f, 4f}, 0f));
+            r.setSeriesStroke(pi + 1, t.drawsParetoFront()
+                ? new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1f, new float[] {6f, 4f}, 0f) : new BasicStroke(0.8f));
             r.setSeriesVisibleInLegend(pi + 1, s == 0);
             s++;
         }
@@ -134,7 +142,7 @@ public final class TradeoffChart {
         }
         // y is an error in some studies and a count of work in others (the k-DOPs' triangle tests):
         // the front is what no other point beats on both axes
-        legend.add(PaperCharts.line(PARETO_LEGEND, Color.GRAY, DASHED));
+        if (t.drawsParetoFront()) legend.add(PaperCharts.line(PARETO_LEGEND, Color.GRAY, DASHED));
         if (settings != null) {
             for (int i = 0; i < settings.size(); i++) {
                 legend.add(new LegendItem(settings.get(i), null, null, null, SHAPES[i], Color.DARK_GRAY));

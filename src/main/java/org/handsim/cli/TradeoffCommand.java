@@ -37,7 +37,10 @@ import picocli.CommandLine.Model.CommandSpec;
         "Studies: 1-dt (time step, paper experiment), 2-tessellation (object",
         "resolution against analytic contacts), 3-kdop (k of the k-DOPs and brute",
         "force, the hand grasping each vrml/objects model), 4-integrators (energy",
-        "drift of a free finger). The full run takes about a minute (48 s on 2",
+        "drift of a free finger), 5-body-rest (the free object's time step against",
+        "the drift and penetration of a box resting on / dropped onto a table; x is",
+        "dt), 6-body-tumble (its time step against the errors of a torque-free",
+        "tumble). The full run takes about a minute (48 s on 2",
         "cores); --quick runs fewer settings (a smoke test). DIR holds one run's",
         "files: --only removes those of the studies it did not run."})
 public final class TradeoffCommand implements Callable<Integer> {

@@ -3,7 +3,7 @@ package org.handsim.tradeoff;
 import java.util.List;
 import java.util.function.Supplier;
 
-/** Every study of {@code handsim tradeoff}, in chart order (charts 1–4). */
+/** Every study of {@code handsim tradeoff}, in chart order (charts 1–6). */
 public final class Studies {
     private Studies() {}
 
@@ -12,6 +12,8 @@ public final class Studies {
         DtStudy::new,
         TessellationStudy::new,
         KdopStudy::new,
-        IntegratorStudy::new
+        IntegratorStudy::new,
+        BodyRestStudy::new,
+        BodyTumbleStudy::new
     );
 }

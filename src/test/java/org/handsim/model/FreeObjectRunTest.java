@@ -11,6 +11,7 @@ import org.handsim.scenario.Scenario;
 import org.handsim.text.Json;
 import org.handsim.text.JsonWriter;
 import org.handsim.trace.Recorder;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -77,6 +78,7 @@ class FreeObjectRunTest {
      * less than 1° relative to the palm, and rises with it.
      */
     @Test
+    @Tag("slow")
     void theLiftedMugStaysInTheHand() {
         HandModel m = Simulation.model(Scenario.load(LIFT), true);
         m.run(null);
