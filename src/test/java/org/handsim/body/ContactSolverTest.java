@@ -36,14 +36,17 @@ class ContactSolverTest {
         System.out.println("most Newton iterations: " + worstIterations);
     }
 
+    /** The most contacts of a problem with friction that the quick run hands to ojAlgo. */
+    private static final int QUICK_MOST_CONTACTS = 12;
+
     /**
      * ojAlgo's QP on the dual ({@link PolyhedralContactSolver}): where every contact is
      * frictionless the pyramid is the cone itself and the two solvers must agree (velocities to
      * 1e-7 of the contacts' change); with friction, ojAlgo's pyramid of m facets approaches the
      * circle as 1 − cos(π/m), and its answers approach ours: the summed difference at 192 facets
      * is at most a quarter of that at 24 (measured over the 80 cases 0.992 and 0.141, over the
-     * quick run's first 20 0.337 and 0.056: 6–7×, where the cones' own error falls 64×; what
-     * remains is ojAlgo's, whose pyramid at 192 facets has near-parallel active facets). The full
+     * quick run's first 20, those of at most 12 contacts, 0.237 and 0.043: 5–7×, where the cones'
+     * own error falls 64×; what remains is ojAlgo's, whose pyramid at 192 facets has near-parallel active facets). The full
      * run's cases 26, 39, 51 and 54 hold frictionless contacts on which ojAlgo, given their tangential
      * impulses as pairs of opposite inequalities, returns γ = 0
      * as OPTIMAL (see {@link PolyhedralContactSolver}).
@@ -62,6 +65,9 @@ class ContactSolverTest {
             double change = 0;
             for (int j = 0; j < p.nv; j++) change = Math.max(change, Math.abs(s.velocity(j) - p.vStar[j]) * Math.sqrt(p.a[j * p.nv + j]));
             if (change == 0) continue;
+            // ojAlgo's iterative solver takes seconds on a 192-facet pyramid of many contacts: the
+            // quick run compares both pyramids on the problems of at most 12 contacts only
+            if (!frictionless && !TestEffort.all() && p.nc > QUICK_MOST_CONTACTS) continue;
             for (int m : frictionless ? new int[] {24} : new int[] {24, 192}) {
                 PolyhedralContactSolver q = new PolyhedralContactSolver(m);
                 assertTrue(q.solve(p), "case " + n + " m " + m + ": " + q.state());

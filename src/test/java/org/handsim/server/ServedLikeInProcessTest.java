@@ -77,7 +77,7 @@ class ServedLikeInProcessTest {
             new String[] {"mesh", root + "/vrml/objects/no-such.wrl"},
             new String[] {"fk", "--finger", "7", "--joints", "0,0,0"},
             new String[] {"ik", "--help"});
-        String[] props = {"handsim.server.dir", "handsim.server.warmup"};
+        String[] props = {"handsim.server.dir", "handsim.server.warmup", "handsim.server.answerMs"};
         String[] before = new String[props.length];
         for (int i = 0; i < props.length; i++) before[i] = System.getProperty(props[i]);
         Thread serving = null;
@@ -86,6 +86,9 @@ class ServedLikeInProcessTest {
             System.setProperty("handsim.server.dir", dir.resolve("srv").toString());
             Path srv = Client.effective(dir.resolve("srv"));   // a short stand-in in a deep checkout
             System.setProperty("handsim.server.warmup", "0");
+            // a loaded machine (or the other test JVM beside this one) may take more than 2 s to
+            // answer: this test does not time answers (ServerTest's tests of the watchdog do)
+            System.setProperty("handsim.server.answerMs", "20000");
             assertEquals(null, Client.unsafe(srv, true));
             String identity = Client.identity();
             String key = Client.key(identity);
