@@ -9,6 +9,7 @@ import org.handsim.body.FreeBody;
 import org.handsim.body.MassProperties;
 import org.handsim.body.MeshTopology;
 import org.handsim.body.ProximityContacts;
+import org.handsim.body.Tunnelling;
 import org.handsim.collision.KdopTree;
 import org.handsim.math.RigidTransform;
 import org.handsim.mesh.TriangleMesh;
@@ -46,6 +47,7 @@ final class FreeObjectScene {
     private final List<Disturbance> disturbances;
     private final double friction, margin = ProximityContacts.DEFAULT_MARGIN, depth = 5 * ProximityContacts.DEFAULT_MARGIN;
     private final double[] releaseV, releaseW;
+    private final double reach;
 
     /**
      * @param scenario a scenario with a free object
@@ -89,6 +91,7 @@ final class FreeObjectScene {
         friction = scenario.friction();
         releaseV = scenario.freeObject().velocityMS().clone();
         releaseW = scenario.freeObject().angularVelocityRadS().clone();
+        reach = Tunnelling.reach(om, props);
     }
 
     /** The body id of finger k's link j. */
@@ -96,10 +99,19 @@ final class FreeObjectScene {
         return 3 * (finger - 1) + link;
     }
 
-    /** Gives the object its velocity at release (the scenario's, world frame). */
-    void release() {
+    /**
+     * Gives the object its velocity at release (the scenario's, world frame) at time {@code t},
+     * and from then on watches each step for tunnelling ({@link Tunnelling}: a point of the object
+     * moving more than the contact margin in one step).
+     */
+    void release(double t) {
         body.setVelocity(releaseV, releaseW);
+        stepper.watchTunnelling(margin, reach);
+        stepper.setTime(t);
     }
+
+    /** What the tunnelling watch saw since the release, or null before it. */
+    Tunnelling tunnelling() { return stepper.tunnelling(); }
 
     /** Starts a step: no contacts, no followers. */
     void begin() {

@@ -330,6 +330,8 @@ public final class HandModel {
             }
             System.arraycopy(palmPose, 0, startPalm, 0, 12);
         }
+        // released at the start of the step whose start is release_s or later: the fingers' update then takes its forces from the object's step
+        if (free != null && !released && t - dt >= releaseS - 1e-12) released = true;
         if (path != null) placeBase(t);
         moveSpread(t);
         for (int k = 1; k <= 3; k++) {
@@ -394,13 +396,12 @@ public final class HandModel {
     private void stepObject() {
         double h = dt;
         if (!released) {
-            if (t - h < releaseS - 1e-12) {
-                objectState.held(t, palmPose, free);
-                return;
-            }
-            released = true;
-            objectState.releasedAt = t - h;
-            free.release();
+            objectState.held(t, palmPose, free);
+            return;
+        }
+        if (Double.isNaN(objectState.releasedAt)) {
+            objectState.releasedAt = clock.at(step - 1);
+            free.release(objectState.releasedAt);
             org.handsim.dynamics.HandDynamics hd = org.handsim.dynamics.HandDynamics.barrettHand();
             for (int k = 1; k <= 3; k++) {
                 org.handsim.dynamics.ChainDynamics chain = hd.finger(k);
@@ -671,7 +672,8 @@ public final class HandModel {
     private void watch(int i) {
         double r = residual[i];
         maxResidual[i] = Math.max(maxResidual[i], r);
-        residualStretches.watch(i, r, t);
+        // a released object's residual is the torque that moved a pressing joint (dynamics), not a missing static equilibrium
+        residualStretches.watch(i, released ? 0 : r, t);
         if (clutch[i].innerHeld()) {
             double w = Math.abs(carried[i][1]);
             if (!(w <= maxWormReaction[i])) maxWormReaction[i] = w;
@@ -1363,12 +1365,16 @@ public final class HandModel {
      * torques by more than {@link #RESIDUAL_WARN_NM} (one warning per stretch, naming the finger,
      * its start and end time and its largest residual), then each stretch in which a contact force
      * or a joint's fingertip-equivalent force exceeded Barrett's rating ({@link RatingWatch}); each
-     * kind in the order the stretches ended, those still going on ending now, last.
+     * kind in the order the stretches ended, those still going on ending now, last; then, for a
+     * free object, the steps in which it moved more than the contact margin (tunnelling: the
+     * first and the fastest, with their times and speeds).
      */
     public java.util.List<String> warnings() {
         java.util.List<String> w = startWarnings();
         w.addAll(residualStretches.warnings());
         w.addAll(ratings.warnings());
+        String tunnel = free == null || free.tunnelling() == null ? null : free.tunnelling().warning();
+        if (tunnel != null) w.add(tunnel.replaceFirst("^warning: ", ""));
         return w;
     }
     /** Motor count of finger k's (first) breakaway, NaN if none. */
@@ -1422,6 +1428,13 @@ public final class HandModel {
 
     /** When the free object first moved more than 5 mm relative to the palm, s; NaN if never. */
     public double objectSlippedAt() { return free == null ? Double.NaN : objectState.slippedAt; }
+
+    /**
+     * What the free object's tunnelling watch saw since its release ({@link
+     * org.handsim.body.Tunnelling}: steps in which a point of it moved more than the contact
+     * margin), or null for a fixed object or before the release.
+     */
+    public org.handsim.body.Tunnelling objectTunnelling() { return free == null ? null : free.tunnelling(); }
 
     /** When the free object was released (the start of its first free step), s; NaN before. */
     public double objectReleasedAt() { return free == null ? Double.NaN : objectState.releasedAt; }

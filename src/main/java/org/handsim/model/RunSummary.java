@@ -18,8 +18,10 @@ import java.util.Map;
  * (DESIGN.md decision 7) adds, after {@code fingers}: {@code released_at_s} (null if it was
  * never released), {@code max_displacement_m} and {@code max_rotation_deg} (its largest
  * displacement and rotation relative to the palm), {@code slipped_at_s} (when it first moved
- * more than 5 mm relative to the palm, or null) and {@code dropped_at_s} (when it lost every
- * contact with the hand and moved away, or null).
+ * more than 5 mm relative to the palm, or null), {@code dropped_at_s} (when it lost every
+ * contact with the hand and moved away, or null) and its tunnelling ({@code tunnelling_steps},
+ * {@code tunnelling_at_s} and {@code tunnelling_speed_m_s}: how many steps moved a point of it
+ * more than the contact margin, the first one's end time and speed bound, or null).
  */
 public final class RunSummary {
     private RunSummary() {}
@@ -64,6 +66,10 @@ public final class RunSummary {
             s.put("max_rotation_deg", m.objectMaxRotation());
             s.put("slipped_at_s", orNull(m.objectSlippedAt()));
             s.put("dropped_at_s", orNull(m.objectDroppedAt()));
+            org.handsim.body.Tunnelling tu = m.objectTunnelling();
+            s.put("tunnelling_steps", tu == null ? 0 : tu.steps());
+            s.put("tunnelling_at_s", tu == null ? null : orNull(tu.firstTimeS()));
+            s.put("tunnelling_speed_m_s", tu == null ? null : orNull(tu.firstSpeedMS()));
         }
         Map<String, Object> c = new LinkedHashMap<>();
         for (HandModel.Counter counter : HandModel.Counter.values()) c.put(counter.name().toLowerCase(), m.counter(counter));

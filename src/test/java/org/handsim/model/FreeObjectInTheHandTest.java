@@ -136,10 +136,17 @@ class FreeObjectInTheHandTest {
             if (share < 1) {
                 assertTrue(Math.abs(dx) < 1e-4, "held: moved " + dx + " m");
                 assertTrue(Double.isNaN(m.objectSlippedAt()) && Double.isNaN(m.objectDroppedAt()));
+                assertTrue(!m.objectTunnelling().any());
             } else {
                 assertEquals(predicted, x01, 0.03 * Math.abs(predicted), "slides with a = g - 2 mu N / m");
                 assertTrue(m.objectSlippedAt() > release && m.objectSlippedAt() < release + 0.2, "slipped at " + m.objectSlippedAt());
                 assertTrue(m.objectDroppedAt() > m.objectSlippedAt(), "dropped at " + m.objectDroppedAt());
+                // falling, it first moves more than the 1 mm margin in a 1 ms step once its speed passes 1 m/s
+                org.handsim.body.Tunnelling tu = m.objectTunnelling();
+                System.out.println("  " + tu.warning());
+                assertTrue(tu.any() && tu.firstSpeedMS() > 1 && tu.firstSpeedMS() < 1.1, tu.warning());
+                assertTrue(m.warnings().stream().anyMatch(w -> w.startsWith("the object moved more than the contact margin (1.00 mm)")));
+                assertEquals(tu.firstTimeS(), RunSummary.of(m, 1).get("tunnelling_at_s"));
             }
         }
     }

@@ -93,4 +93,28 @@ class FreeObjectRunTest {
         assertEquals(0.1, o[Recorder.OBJ_Z] - r.object(Recorder.OBJ_Z, 0), 1e-4);
         assertTrue(o[Recorder.OBJ_CONTACTS] >= 3, "contact points " + o[Recorder.OBJ_CONTACTS]);
     }
+
+    /**
+     * scenarios/mug-table-lift.json: the mug lying on a table, free from the start: it rests on
+     * the table (two contact points: a cylinder on a plane touches along a line) while the fingers
+     * close on it, and the lift takes it 0.1 m up, off the table, without it moving in the hand.
+     */
+    @Test
+    @Tag("slow")
+    void theMugOnATableIsPickedUp() {
+        HandModel m = Simulation.model(Scenario.load(TestPaths.root().resolve("scenarios/mug-table-lift.json")), true);
+        m.run(null);
+        Recorder r = m.recorder();
+        assertEquals(0, m.objectReleasedAt());
+        int before = (int) Math.round(1.0 / 0.001);   // resting on the table, the fingers still open
+        assertEquals(2, (int) r.object(Recorder.OBJ_CONTACTS, before));
+        assertEquals(0, r.contacts(1, before) + r.contacts(2, before) + r.contacts(3, before));
+        assertEquals(0, r.object(Recorder.OBJ_Z, before) - r.object(Recorder.OBJ_Z, 0), 1e-6, "at rest on the table");
+        int last = r.rows() - 1;
+        assertEquals(0.1, r.object(Recorder.OBJ_Z, last) - r.object(Recorder.OBJ_Z, 0), 1e-4, "lifted with the palm");
+        int hand = r.contacts(1, last) + r.contacts(2, last) + r.contacts(3, last);
+        assertEquals(hand, (int) r.object(Recorder.OBJ_CONTACTS, last), "off the table: every contact is the hand's");
+        assertTrue(m.objectMaxDisplacement() < 0.005, "moved " + m.objectMaxDisplacement() + " m in the hand");
+        assertTrue(Double.isNaN(m.objectDroppedAt()));
+    }
 }
