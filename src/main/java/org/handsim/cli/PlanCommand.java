@@ -50,8 +50,9 @@ import picocli.CommandLine.Model.CommandSpec;
         "  standoff_m,contacts,force_closure,epsilon,volume,hold_min_N,final_state1,",
         "  final_state2,final_state3,sim_time_s,wall_s,error",
         "--hold-test also runs handsim hold-test's six pushes on every trial's grasp",
-        "(F from --hold-force, else 10 m/s2 x the object's mass: --hold-mass, else its",
-        "closed mesh at 1000 kg/m3; 2 s each at 1 ms, 5 cm, 15 deg) and adds the columns",
+        "(F from --hold-force, else 10 m/s2 x the object's mass: --hold-mass, else a free",
+        "object's mass fields, else its closed mesh at 1000 kg/m3; 2 s each at 1 ms,",
+        "5 cm, 15 deg) and adds the columns",
         "  hold_-x,hold_+x,hold_-y,hold_+y,hold_-z,hold_+z,hold_margin",
         "(the six verdicts and the smallest margin); --rank-by hold-margin ranks the",
         "best grasps by that margin, then epsilon."})

@@ -7,6 +7,7 @@ import java.util.Map;
 import org.handsim.body.MassProperties;
 import org.handsim.body.ProximityContacts;
 import org.handsim.clutch.ClutchState;
+import org.handsim.model.FreeObjectMass;
 import org.handsim.model.HandModel;
 import org.handsim.model.SceneGeometry;
 import org.handsim.scenario.Scenario;
@@ -23,8 +24,10 @@ import org.handsim.text.Decimal;
  * @param scenario    the scenario's name
  * @param closeS      the simulated time the closing took, s
  * @param states      each finger's clutch state when the closing ended
- * @param massSource  where the mass came from: {@code given}, {@code density}, {@code mesh at 1000 kg/m3},
- *                    or {@code shell} (an open mesh: a thin shell of the given mass)
+ * @param massSource  where the mass came from: {@code given}, {@code density}, {@code scenario} (its free
+ *                    object's {@code mass_kg} or {@code density_kg_m3}, and {@code inertia_kg_m2}, {@code com_m}
+ *                    when given), {@code mesh at 1000 kg/m3}, or {@code shell} (an open mesh: a thin shell of
+ *                    the given mass)
  * @param mass        the object's mass properties (mesh frame)
  * @param comWorld    its centre of mass at release, world, m
  * @param releaseContacts the contacts with the hand at release
@@ -42,7 +45,8 @@ public record HoldReport(String scenario, double closeS, ClutchState[] states, S
     /**
      * Closes, locks and tests.
      *
-     * @param massKg    the object's mass, kg, or NaN (the scenario's, else its mesh's)
+     * @param massKg    the object's mass, kg, or NaN (with densityKg NaN: a free object's from the
+     *                  scenario's fields, else the mesh's at {@link ObjectMass#DEFAULT_DENSITY_KG_M3})
      * @param densityKg its density, kg/m³, or NaN
      * @throws IllegalArgumentException when the object's mass cannot be known, or the scenario has no object
      * @throws org.handsim.model.SimulationException when the closing fails
@@ -50,9 +54,12 @@ public record HoldReport(String scenario, double closeS, ClutchState[] states, S
     public static HoldReport of(Scenario scenario, double massKg, double densityKg, HoldSettings settings, boolean ramp) {
         if (scenario.object() == null) throw new IllegalArgumentException(scenario.name() + ": the scenario has no object to push");
         SceneGeometry geometry = new SceneGeometry(scenario.object(), SceneGeometry.DEFAULT_K);
-        MassProperties props = ObjectMass.of(geometry.objectMesh(), massKg, densityKg);   // refused before the closing runs
-        String source = !Double.isNaN(massKg) ? (Double.isNaN(props.volume()) ? "shell" : "given") : !Double.isNaN(densityKg) ? "density"
-            : "mesh at " + (int) ObjectMass.DEFAULT_DENSITY_KG_M3 + " kg/m3";
+        boolean fromScenario = Double.isNaN(massKg) && Double.isNaN(densityKg) && scenario.freeObject() != null;
+        // refused before the closing runs
+        MassProperties props = fromScenario ? FreeObjectMass.of(scenario, geometry.objectMesh())
+            : ObjectMass.of(geometry.objectMesh(), massKg, densityKg);
+        String source = fromScenario ? "scenario" : !Double.isNaN(massKg) ? (Double.isNaN(props.volume()) ? "shell" : "given")
+            : !Double.isNaN(densityKg) ? "density" : "mesh at " + (int) ObjectMass.DEFAULT_DENSITY_KG_M3 + " kg/m3";
         HandModel model = org.handsim.model.Simulation.model(scenario, geometry);
         close(model);
         return test(model, geometry, props, source, settings, ramp);

@@ -24,17 +24,18 @@ import org.handsim.model.SceneGeometry;
  * ({@link BodyScene}: one convex contact problem per step, exact Coulomb cones, contact points
  * by proximity) among the hand's ten bodies where the closing left them ({@link LockedGrasp}).
  *
- * <p><b>The locked hand</b> (DESIGN.md decision 8). Every finger joint is held by its worm: the
- * links do not move, and no load opens them. The closing leaves the contacts squeezed — the
- * forces the simulation gave them, which a rigid link held by a worm keeps as an elastic
- * preload — so each flexion joint k2, k3 presses on the object with the torque those forces
- * make about it (a {@link BodyScene#addJoint} follower, at rest each step, closing only), and
- * the preload is let go as the joint would turn closing: linearly over the angle
- * τ/(k·r²) (k = {@link #CONTACT_STIFFNESS_N_M}, r its farthest contact's distance from the
- * axis), the travel over which contacts of that stiffness unload. Without it a rigid grasp
- * has no squeeze: friction needs normal force, and a pinch whose fingers only touch holds
- * nothing across. Without the letting go, a press that never ends would push a released
- * object on for ever.
+ * <p><b>The locked hand</b> (DESIGN.md decision 8). Every finger joint is held by its worm: no
+ * load opens it. The closing leaves the contacts squeezed — the forces the simulation gave
+ * them, which a rigid link held by a worm keeps as an elastic preload — so each flexion joint
+ * k2, k3 presses on the object with the torque those forces make about it (a
+ * {@link BodyScene#addJoint} follower, at rest each step, closing only), and the preload is let
+ * go as the joint turns closing: linearly over the angle τ/(k·r²) (k =
+ * {@link #CONTACT_STIFFNESS_N_M}, r its farthest contact's distance from the axis), the travel
+ * over which contacts of that stiffness unload. The links it carries turn with it (by
+ * micro-radians to milliradians), so a link that closed into a gap stays there. Without the
+ * press a rigid grasp has no squeeze: friction needs normal force, and a pinch whose fingers
+ * only touch holds nothing across. Without the letting go, a press that never ends would push a
+ * released object on for ever.
  *
  * <p><b>Settling.</b> The forces a closing on a fixed object leaves need not balance (the fixed
  * object took the rest), so the freed object first moves: it is stepped with no push until it
@@ -57,8 +58,8 @@ import org.handsim.model.SceneGeometry;
  *       less than v·t + (v/W)·t² (0.74 mm over 1.9 s) and turns less than ω·t + (ω/W)·t² (4.2°);
  *       when that cannot carry it past a threshold the push stops there, passed, and says so
  *       ({@link DirectionResult#settledS}, the bounds). A held object creeps at a few µm/s and
- *       tenths of a mrad/s here (the contact solver's regularised friction), so this is where
- *       most held pushes end, some 0.1 s in.</li>
+ *       hundredths of a mrad/s here (the contact solver's regularised friction), so this is
+ *       where most held pushes end, some 0.1 s in.</li>
  *   <li><i>Verdict only</i> ({@link #push(int, boolean)} with {@code verdictOnly}): a failed
  *       direction stops at the step that crosses a threshold (the planner's rows need only the
  *       verdict and the margin, which do not depend on what comes after).</li>

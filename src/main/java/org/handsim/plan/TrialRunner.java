@@ -80,7 +80,9 @@ public final class TrialRunner {
         this.sampler = new TrialSampler(spec.trials(), spec.seed(), shape);
         this.standoffs = new StandoffRule(shape, new FingertipPath(HandDescription.barrettHand()));
         PlanHold h = spec.hold();
-        this.holdMass = h == null ? null : ObjectMass.of(scene.objectMesh(), h.massKg(), h.densityKgM3());
+        // the hold test's mass: the option's, else a free object's from the template's fields, else the mesh's
+        this.holdMass = h == null ? null : Double.isNaN(h.massKg()) && Double.isNaN(h.densityKgM3()) && t.freeObject() != null
+            ? org.handsim.model.FreeObjectMass.of(t, scene.objectMesh()) : ObjectMass.of(scene.objectMesh(), h.massKg(), h.densityKgM3());
         for (int k = 0; k < 3; k++) startCounts[k] = t.startCounts(k);
         this.fault = fault;
     }
