@@ -74,6 +74,34 @@ class FreeObjectInTheHandTest {
         assertTrue(Double.isNaN(m.objectDroppedAt()));
     }
 
+    /**
+     * The same box on the palm with the hand tilted by a about the palm's x axis (gravity −z of the
+     * world): with μ = 0.5 it stays at a = 20° (tan a &lt; μ) and slides down the palm at 35° with
+     * a = g(sin a − μ cos a), ½at² after 0.1 s within 2 % (at 0.14 s it meets finger 2's link).
+     */
+    @Test
+    void aBoxOnATiltedPalmStaysBelowTheFrictionAngleAndSlidesAboveIt() throws Exception {
+        Path obj = box("tilt", 0.03, 0.02, 0.02);
+        double g = 9.81, mu = 0.5, time = 0.1, h = PALM_TOP_M + 0.01;
+        for (double deg : new double[] {20, 35}) {
+            double a = Math.toRadians(deg), th = -a;   // turned by −a about x: the box slides along the palm's y
+            double py = -Math.sin(th) * h, pz = Math.cos(th) * h;
+            String json = "{\"name\": \"box-on-tilted-palm\", \"gravity_m_s2\": [0, 0, -" + g + "],"
+                + " \"hand\": {\"position_m\": [0, 0, 0], \"rotation_rad\": [" + th + ", 0, 0]},"
+                + " \"object\": {\"file\": \"" + obj + "\", \"units\": \"m\", \"position_m\": [0.03, " + py + ", " + pz + "],"
+                + " \"rotation_rad\": [" + th + ", 0, 0], \"friction\": " + mu + ", \"free\": true, \"mass_kg\": 0.1},"
+                + " \"dt_s\": 0.001, \"duration_s\": " + time + "}";
+            HandModel m = Simulation.model(Scenario.parse(dir.resolve("tilt.json"), json), true);
+            m.run(null);
+            double predicted = Math.max(0, 0.5 * g * (Math.sin(a) - mu * Math.cos(a)) * time * time);
+            System.out.printf("box on the palm tilted %.0f deg: moved %.6g m in %.2f s relative to the palm (predicted %.6g m), turned %.3g deg%n",
+                deg, m.objectMaxDisplacement(), time, predicted, m.objectMaxRotation());
+            if (predicted == 0) assertTrue(m.objectMaxDisplacement() < 1e-5, "stays: moved " + m.objectMaxDisplacement() + " m");
+            else assertEquals(predicted, m.objectMaxDisplacement(), 0.02 * predicted, "slides with g(sin a - mu cos a)");
+            assertTrue(m.objectMaxRotation() < 0.1);
+        }
+    }
+
     /** The pinch: a 90 × 74 × 40 mm box whose top edges the three inner links meet (fingers 1 and 2 on one side, 3 on the other). */
     static String pinch(Path obj, String free, double gravityX, double duration) {
         String m = "[{\"type\": \"trapezoid\", \"to\": 12000, \"v_max\": 5000, \"a_max\": 25000}, {\"type\": \"hold\", \"duration_s\": 0.2}]";
