@@ -78,6 +78,11 @@ public final class ServerAdmin {
 
     /** As {@link #servers()}, in the folder {@code dir} (or its short stand-in, {@link Client#effective}). */
     public static List<Status> servers(Path dir) throws IOException {
+        return servers(dir, null);
+    }
+
+    /** As {@link #servers(Path)}, without asking the server of socket {@code except} (a server about to serve, asking about the others). */
+    private static List<Status> servers(Path dir, Path except) throws IOException {
         dir = Client.effective(dir);
         List<Status> found = new ArrayList<>();
         if (dir == null || !Files.isDirectory(dir) || Client.unsafe(dir, false) != null) return found;
@@ -88,6 +93,7 @@ public final class ServerAdmin {
         }
         sockets.sort(null);
         for (Path socket : sockets) {
+            if (except != null && socket.getFileName().equals(except.getFileName())) continue;   // the same folder
             String text = ask(socket, Client.STATUS);
             if (text == null) continue;
             Map<String, String> fields = new LinkedHashMap<>();
@@ -112,11 +118,12 @@ public final class ServerAdmin {
     static void keepAtMost(Path dir, int max, Path self) {
         List<Status> all;
         try {
-            all = servers(dir);
+            // not asking itself: it answers only once it accepts, after this, so its own status
+            // request would wait out the whole answer time, and so would its first client
+            all = servers(dir, self);
         } catch (IOException e) {
             return;
         }
-        all.removeIf(s -> s.socket().equals(self));
         all.sort(java.util.Comparator.comparingLong(Status::used));
         for (int i = 0; i < all.size() - (max - 1); i++) stop(all.get(i).socket());
     }
