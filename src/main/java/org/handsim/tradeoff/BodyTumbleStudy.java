@@ -7,8 +7,7 @@ import org.handsim.body.BoxMesh;
 import org.handsim.body.FreeBody;
 import org.handsim.body.MassProperties;
 import org.handsim.chart.StudyTable;
-import org.handsim.dynamics.DormandPrince54;
-import org.handsim.dynamics.Ode;
+import org.handsim.dynamics.TorqueFreeRotation;
 import org.handsim.math.Quaternion;
 import org.handsim.math.RigidTransform;
 
@@ -72,37 +71,11 @@ public final class BodyTumbleStudy implements Study {
         return new Measure(Math.abs(b.kineticEnergy() - e0) / e0, dl, worst, err, wall);
     }
 
-    /** The orientation after {@code t} by Euler's equations and the quaternion rates, Dormand–Prince 5(4) at 1e-13. */
+    /** The orientation after {@code t} by Euler's equations, integrated apart from the free body's own step. */
     static double[] reference(double t) {
-        double[] in = BOX.inertia(), inv = BOX.inverseInertia();
-        Ode euler = new Ode() {
-            @Override
-            public int dimension() { return 7; }
-
-            @Override
-            public boolean derivative(double time, double[] y, double[] d) {
-                double wx = y[0], wy = y[1], wz = y[2];
-                double lx = in[0] * wx + in[1] * wy + in[2] * wz, ly = in[3] * wx + in[4] * wy + in[5] * wz,
-                    lz = in[6] * wx + in[7] * wy + in[8] * wz;
-                double cx = -(wy * lz - wz * ly), cy = -(wz * lx - wx * lz), cz = -(wx * ly - wy * lx);
-                d[0] = inv[0] * cx + inv[1] * cy + inv[2] * cz;
-                d[1] = inv[3] * cx + inv[4] * cy + inv[5] * cz;
-                d[2] = inv[6] * cx + inv[7] * cy + inv[8] * cz;
-                double qw = y[3], qx = y[4], qy = y[5], qz = y[6];
-                d[3] = 0.5 * (-qx * wx - qy * wy - qz * wz);
-                d[4] = 0.5 * (qw * wx + qy * wz - qz * wy);
-                d[5] = 0.5 * (qw * wy - qx * wz + qz * wx);
-                d[6] = 0.5 * (qw * wz + qx * wy - qy * wx);
-                return true;
-            }
-        };
         double[] q0 = new double[4];
         Quaternion.fromRotationVector(TURN0[0], TURN0[1], TURN0[2], q0, 0);
-        double[] y = {W0_BODY[0], W0_BODY[1], W0_BODY[2], q0[0], q0[1], q0[2], q0[3]};
-        if (!new DormandPrince54(7, 1e-14, 1e-13).step(euler, 0, y, t)) throw new IllegalStateException("the reference integration failed");
-        double[] q = {y[3], y[4], y[5], y[6]};
-        Quaternion.normalize(q, 0);
-        return q;
+        return TorqueFreeRotation.orientationAfter(BOX.inertia(), BOX.inverseInertia(), W0_BODY, q0, t);
     }
 
     private static double sq(double a) { return a * a; }

@@ -4,8 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.handsim.collision.TestMeshes;
-import org.handsim.dynamics.DormandPrince54;
-import org.handsim.dynamics.Ode;
+import org.handsim.dynamics.TorqueFreeRotation;
 import org.handsim.math.Quaternion;
 import org.handsim.math.RigidTransform;
 import org.junit.jupiter.api.Test;
@@ -110,37 +109,9 @@ class FreeBodyTest {
         return b;
     }
 
-    /** Euler's equations I ω̇ = −ω × Iω in the body frame with q̇ = ½ q ⊗ (0, ω), by Dormand–Prince 5(4) at 1e-13. */
+    /** The independent reference: Euler's equations by Dormand–Prince 5(4) at 1e-13. */
     private static double[] reference(double[] w0Body, double t) {
-        double[] in = BOX.inertia(), inv = BOX.inverseInertia();
-        Ode euler = new Ode() {
-            @Override
-            public int dimension() { return 7; }
-
-            @Override
-            public boolean derivative(double time, double[] y, double[] d) {
-                double wx = y[0], wy = y[1], wz = y[2];
-                double lx = in[0] * wx + in[1] * wy + in[2] * wz, ly = in[3] * wx + in[4] * wy + in[5] * wz,
-                    lz = in[6] * wx + in[7] * wy + in[8] * wz;
-                double cx = -(wy * lz - wz * ly), cy = -(wz * lx - wx * lz), cz = -(wx * ly - wy * lx);
-                d[0] = inv[0] * cx + inv[1] * cy + inv[2] * cz;
-                d[1] = inv[3] * cx + inv[4] * cy + inv[5] * cz;
-                d[2] = inv[6] * cx + inv[7] * cy + inv[8] * cz;
-                double qw = y[3], qx = y[4], qy = y[5], qz = y[6];
-                d[3] = 0.5 * (-qx * wx - qy * wy - qz * wz);
-                d[4] = 0.5 * (qw * wx + qy * wz - qz * wy);
-                d[5] = 0.5 * (qw * wy - qx * wz + qz * wx);
-                d[6] = 0.5 * (qw * wz + qx * wy - qy * wx);
-                return true;
-            }
-        };
-        double[] q0 = start();
-        double[] y = {w0Body[0], w0Body[1], w0Body[2], q0[0], q0[1], q0[2], q0[3]};
-        DormandPrince54 dp = new DormandPrince54(7, 1e-14, 1e-13);
-        assertTrue(dp.step(euler, 0, y, t));
-        double[] q = {y[3], y[4], y[5], y[6]};
-        Quaternion.normalize(q, 0);
-        return q;
+        return TorqueFreeRotation.orientationAfter(BOX.inertia(), BOX.inverseInertia(), w0Body, start(), t);
     }
 
     private static double sq(double a) { return a * a; }

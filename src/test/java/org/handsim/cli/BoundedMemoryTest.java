@@ -71,15 +71,9 @@ class BoundedMemoryTest {
     void aMillionStepFreeObjectRunFitsIn256MegabytesOfHeap() throws Exception {
         Path dir = Files.createTempDirectory("handsim-long-free-run");
         try {
-            Path lift = TestPaths.root().resolve("scenarios/mug-lift.json");
-            Map<String, Object> s = (Map<String, Object>) Json.parse(lift.toString(), Files.readString(lift));
-            s.put("name", "long-free");
-            s.put("duration_s", 1000.0);
-            Map<String, Object> o = (Map<String, Object>) s.get("object");
-            o.put("file", TestPaths.root().resolve("vrml/objects/mug.wrl").toString());
-            o.put("release_s", 990.0);
+            Map<String, Object> s = MugLiftVariant.read("long-free", 1000.0, 990.0);
             ((Map<String, Object>) ((java.util.List<Object>) ((Map<String, Object>) s.get("hand")).get("moves")).get(0)).put("duration_s", 990.0);
-            Path scenario = Files.writeString(dir.resolve("long-free.json"), JsonWriter.pretty(s));
+            Path scenario = MugLiftVariant.write(dir, "long-free.json", s);
             Path out = dir.resolve("out");
             long t0 = System.nanoTime();
             ChildJvm.Result r = ChildJvm.run(dir, "256m", 40, "run", scenario.toString(), "--out", out.toString());

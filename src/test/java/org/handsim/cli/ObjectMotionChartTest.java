@@ -6,10 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
-import org.handsim.TestPaths;
-import org.handsim.text.Json;
-import org.handsim.text.JsonWriter;
 import org.handsim.vrml.VrmlTesting;
 import org.junit.jupiter.api.Test;
 
@@ -29,18 +25,10 @@ class ObjectMotionChartTest {
      * release.
      */
     @Test
-    @SuppressWarnings("unchecked")
     void aFreeObjectsRunChartsItsMotionInTheHand() throws Exception {
         Path dir = Files.createTempDirectory("object-motion");
         try {
-            Path lift = TestPaths.root().resolve("scenarios/mug-lift.json");
-            Map<String, Object> s = (Map<String, Object>) Json.parse(lift.toString(), Files.readString(lift));
-            s.put("name", "falling-mug");
-            s.put("duration_s", 0.015);
-            Map<String, Object> o = (Map<String, Object>) s.get("object");
-            o.put("file", TestPaths.root().resolve("vrml/objects/mug.wrl").toString());
-            o.put("release_s", 0.0);
-            Path scenario = Files.writeString(dir.resolve("falling.json"), JsonWriter.pretty(s));
+            Path scenario = MugLiftVariant.write(dir, "falling.json", MugLiftVariant.read("falling-mug", 0.015, 0.0));
             Path out = dir.resolve("out");
             CliTesting.Run r = CliTesting.run("run", scenario.toString(), "--out", out.toString());
             assertEquals(0, r.code(), r.err());
