@@ -1,6 +1,5 @@
 package org.handsim.body;
 
-import java.util.Arrays;
 import org.handsim.math.Cholesky;
 
 /**
@@ -37,6 +36,7 @@ public final class ContactSolver {
     /** How a solve ended. */
     public enum Outcome { CONVERGED, MAX_ITERATIONS, NOT_POSITIVE_DEFINITE }
 
+    private double[] sqrtA = new double[0];
     private double[] v = new double[0], grad = new double[0], dir = new double[0], hess = new double[0], av = new double[0];
     private double[] vc = new double[0], jd = new double[0], gamma = new double[0], g = new double[0];
     private double[] col = new double[0];
@@ -226,6 +226,7 @@ public final class ContactSolver {
             for (int j = 0; j < nv; j++) w += p.jac[row + j] * col[j];
             p.reg[c] = p.epsilon * Math.max(w, 1e-300);
         }
+        for (int j = 0; j < nv; j++) sqrtA[j] = Math.sqrt(a[j * nv + j]);
         if (!warm) System.arraycopy(p.vStar, 0, v, 0, nv);
         if (!warm) iterations = 0;
         outcome = Outcome.MAX_ITERATIONS;
@@ -234,14 +235,14 @@ public final class ContactSolver {
             // convergence: |grad_j|/√A_jj against the momenta's size
             double gmax = 0, scale = 0;
             for (int j = 0; j < nv; j++) {
-                double s = 1 / Math.sqrt(a[j * nv + j]);
+                double s = 1 / sqrtA[j];
                 gmax = Math.max(gmax, Math.abs(grad[j]) * s);
                 scale = Math.max(scale, Math.abs(av[j]) * s);
             }
             for (int c = 0; c < nc; c++) {
                 for (int k = 0; k < 3; k++) {
                     for (int j = 0; j < nv; j++) {
-                        scale = Math.max(scale, Math.abs(p.jac[(3 * c + k) * nv + j] * gamma[3 * c + k]) / Math.sqrt(a[j * nv + j]));
+                        scale = Math.max(scale, Math.abs(p.jac[(3 * c + k) * nv + j] * gamma[3 * c + k]) / sqrtA[j]);
                     }
                 }
             }
@@ -258,7 +259,7 @@ public final class ContactSolver {
             // a step below the rounding of v itself: the gradient is at its floor of rounding
             double step = 0, size = 0;
             for (int j = 0; j < nv; j++) {
-                double s = Math.sqrt(a[j * nv + j]);
+                double s = sqrtA[j];
                 v[j] += alpha * dir[j];
                 step = Math.max(step, Math.abs(alpha * dir[j]) * s);
                 size = Math.max(size, Math.max(Math.abs(v[j]), Math.abs(p.vStar[j])) * s);
@@ -383,7 +384,7 @@ public final class ContactSolver {
     static void project(double yn, double y1, double y2, double mu, double radius, double[] out, int o, double[] dp, int po) {
         double t = Math.sqrt(y1 * y1 + y2 * y2);
         if (!Double.isNaN(radius)) {                          // {γ_n ≥ 0} × {|γ_t| ≤ radius}
-            if (dp != null) Arrays.fill(dp, po, po + 9, 0);
+            if (dp != null) zero9(dp, po);
             out[o] = Math.max(yn, 0);
             if (dp != null && yn > 0) dp[po] = 1;
             if (t <= radius) {
@@ -403,14 +404,14 @@ public final class ContactSolver {
         if (yn >= 0 && t <= mu * yn) {                       // inside
             out[o] = yn; out[o + 1] = y1; out[o + 2] = y2;
             if (dp != null) {
-                Arrays.fill(dp, po, po + 9, 0);
+                zero9(dp, po);
                 dp[po] = dp[po + 4] = dp[po + 8] = 1;
             }
             return;
         }
         if (mu * t <= -yn) {                                  // polar cone
             out[o] = out[o + 1] = out[o + 2] = 0;
-            if (dp != null) Arrays.fill(dp, po, po + 9, 0);
+            if (dp != null) zero9(dp, po);
             return;
         }
         double k = 1 / (1 + mu * mu);
@@ -419,7 +420,7 @@ public final class ContactSolver {
         if (t == 0) {                                         // μ = 0: onto the normal ray
             out[o + 1] = out[o + 2] = 0;
             if (dp != null) {
-                Arrays.fill(dp, po, po + 9, 0);
+                zero9(dp, po);
                 dp[po] = k;
             }
             return;
@@ -440,9 +441,15 @@ public final class ContactSolver {
         }
     }
 
+    /** dp[po..po+8] = 0 (unrolled: Arrays.fill's range checks cost more than the nine stores, in the line search's inner loop). */
+    private static void zero9(double[] dp, int po) {
+        dp[po] = 0; dp[po + 1] = 0; dp[po + 2] = 0; dp[po + 3] = 0; dp[po + 4] = 0;
+        dp[po + 5] = 0; dp[po + 6] = 0; dp[po + 7] = 0; dp[po + 8] = 0;
+    }
+
     private void grow(int nv, int nc) {
         if (v.length < nv) {
-            v = new double[nv]; grad = new double[nv]; dir = new double[nv]; av = new double[nv]; col = new double[nv];
+            v = new double[nv]; sqrtA = new double[nv]; grad = new double[nv]; dir = new double[nv]; av = new double[nv]; col = new double[nv];
             hess = new double[nv * nv];
         }
         if (hess.length < nv * nv) hess = new double[nv * nv];
