@@ -40,6 +40,11 @@ public final class ContactSolver {
     private double[] v = new double[0], grad = new double[0], dir = new double[0], hess = new double[0], av = new double[0];
     private double[] vc = new double[0], jd = new double[0], gamma = new double[0], g = new double[0];
     private double[] col = new double[0];
+    // per solve: √A_jj, and each constraint's nonzero Jacobian columns (a contact on a link touches the
+    // object's six and the joints that move the link; a worm, one): the loops skip the zeros, which
+    // add nothing, so the sums are the dense loops' sums term for term
+    private double[] rootA = new double[0];
+    private int[] cols = new int[0], colCount = new int[0];
     private final double[] gm = new double[3], second = new double[1];
     private double[] base = new double[0], shift = new double[0];
     private int fixedPoint;
@@ -118,16 +123,27 @@ public final class ContactSolver {
         int nv = p.nv, nc = p.nc;
         grow(nv, nc);
         double[] a = p.a;
-        // A⁻¹ columns, for the regularisation R_c = ε·(J_c A⁻¹ J_cᵀ)_nn
-        System.arraycopy(a, 0, hess, 0, nv * nv);
-        if (!Cholesky.decompose(hess, nv)) return outcome = Outcome.NOT_POSITIVE_DEFINITE;
-        for (int c = 0; c < nc; c++) {
-            int row = 3 * c * nv;
-            System.arraycopy(p.jac, row, col, 0, nv);
-            Cholesky.solve(hess, nv, col);
-            double w = 0;
-            for (int j = 0; j < nv; j++) w += p.jac[row + j] * col[j];
-            p.reg[c] = p.epsilon * Math.max(w, 1e-300);
+        // a warm solve (solveCoulomb's next) has the same A and J: the regularisation and the columns stand
+        if (!warm) {
+            // A⁻¹ columns, for the regularisation R_c = ε·(J_c A⁻¹ J_cᵀ)_nn
+            System.arraycopy(a, 0, hess, 0, nv * nv);
+            if (!Cholesky.decompose(hess, nv)) return outcome = Outcome.NOT_POSITIVE_DEFINITE;
+            for (int c = 0; c < nc; c++) {
+                int row = 3 * c * nv;
+                System.arraycopy(p.jac, row, col, 0, nv);
+                Cholesky.solve(hess, nv, col);
+                double w = 0;
+                for (int j = 0; j < nv; j++) w += p.jac[row + j] * col[j];
+                p.reg[c] = p.epsilon * Math.max(w, 1e-300);
+            }
+            for (int j = 0; j < nv; j++) rootA[j] = Math.sqrt(a[j * nv + j]);
+            for (int c = 0; c < nc; c++) {
+                int m = 0, row = 3 * c * nv;
+                for (int j = 0; j < nv; j++) {
+                    if (p.jac[row + j] != 0 || p.jac[row + nv + j] != 0 || p.jac[row + 2 * nv + j] != 0) cols[c * nv + m++] = j;
+                }
+                colCount[c] = m;
+            }
         }
         if (!warm) System.arraycopy(p.vStar, 0, v, 0, nv);
         if (!warm) iterations = 0;
@@ -137,14 +153,18 @@ public final class ContactSolver {
             // convergence: |grad_j|/√A_jj against the momenta's size
             double gmax = 0, scale = 0;
             for (int j = 0; j < nv; j++) {
-                double s = 1 / Math.sqrt(a[j * nv + j]);
+                double s = 1 / rootA[j];
                 gmax = Math.max(gmax, Math.abs(grad[j]) * s);
                 scale = Math.max(scale, Math.abs(av[j]) * s);
             }
             for (int c = 0; c < nc; c++) {
+                int cb = c * nv, m = colCount[c];
                 for (int k = 0; k < 3; k++) {
-                    for (int j = 0; j < nv; j++) {
-                        scale = Math.max(scale, Math.abs(p.jac[(3 * c + k) * nv + j] * gamma[3 * c + k]) / Math.sqrt(a[j * nv + j]));
+                    double gk = gamma[3 * c + k];
+                    int row = (3 * c + k) * nv;
+                    for (int x = 0; x < m; x++) {
+                        int j = cols[cb + x];
+                        scale = Math.max(scale, Math.abs(p.jac[row + j] * gk) / rootA[j]);
                     }
                 }
             }
@@ -161,7 +181,7 @@ public final class ContactSolver {
             // a step below the rounding of v itself: the gradient is at its floor of rounding
             double step = 0, size = 0;
             for (int j = 0; j < nv; j++) {
-                double s = Math.sqrt(a[j * nv + j]);
+                double s = rootA[j];
                 v[j] += alpha * dir[j];
                 step = Math.max(step, Math.abs(alpha * dir[j]) * s);
                 size = Math.max(size, Math.max(Math.abs(v[j]), Math.abs(p.vStar[j])) * s);
@@ -187,11 +207,11 @@ public final class ContactSolver {
         }
         if (hessian) System.arraycopy(a, 0, hess, 0, nv * nv);
         for (int c = 0; c < nc; c++) {
-            int o = 3 * c;
+            int o = 3 * c, cb = c * nv, m = colCount[c];
             for (int k = 0; k < 3; k++) {
                 double s = 0;
                 int row = (o + k) * nv;
-                for (int j = 0; j < nv; j++) s += jac[row + j] * v[j];
+                for (int x = 0; x < m; x++) s += jac[row + cols[cb + x]] * v[cols[cb + x]];
                 vc[o + k] = s;
             }
             double r = p.reg[c];
@@ -201,7 +221,7 @@ public final class ContactSolver {
                 double gk = gamma[o + k];
                 if (gk == 0) continue;
                 int row = (o + k) * nv;
-                for (int j = 0; j < nv; j++) grad[j] -= jac[row + j] * gk;
+                for (int x = 0; x < m; x++) grad[cols[cb + x]] -= jac[row + cols[cb + x]] * gk;
             }
             if (hessian) {
                 // H += J_cᵀ (dP/r) J_c
@@ -210,10 +230,14 @@ public final class ContactSolver {
                         double gkl = g[3 * k + l] / r;
                         if (gkl == 0) continue;
                         int rk = (o + k) * nv, rl = (o + l) * nv;
-                        for (int i = 0; i < nv; i++) {
+                        for (int x = 0; x < m; x++) {
+                            int i = cols[cb + x];
                             double ji = jac[rk + i] * gkl;
                             if (ji == 0) continue;
-                            for (int j = 0; j < nv; j++) hess[i * nv + j] += ji * jac[rl + j];
+                            for (int y = 0; y <= x; y++) {             // the lower triangle: all Cholesky reads
+                                int j = cols[cb + y];
+                                hess[i * nv + j] += ji * jac[rl + j];
+                            }
                         }
                     }
                 }
@@ -236,10 +260,11 @@ public final class ContactSolver {
             dAv += dir[i] * av[i];
         }
         for (int c = 0; c < nc; c++) {
+            int cb = c * nv, m = colCount[c];
             for (int k = 0; k < 3; k++) {
                 double s = 0;
                 int row = (3 * c + k) * nv;
-                for (int j = 0; j < nv; j++) s += jac[row + j] * dir[j];
+                for (int x = 0; x < m; x++) s += jac[row + cols[cb + x]] * dir[cols[cb + x]];
                 jd[3 * c + k] = s;
             }
         }
@@ -346,9 +371,14 @@ public final class ContactSolver {
     private void grow(int nv, int nc) {
         if (v.length < nv) {
             v = new double[nv]; grad = new double[nv]; dir = new double[nv]; av = new double[nv]; col = new double[nv];
-            hess = new double[nv * nv];
+            hess = new double[nv * nv]; rootA = new double[nv];
         }
         if (hess.length < nv * nv) hess = new double[nv * nv];
+        if (cols.length < nc * nv || colCount.length < nc) {
+            int cap = Math.max(8, 2 * nc);
+            cols = new int[cap * nv];
+            colCount = new int[cap];
+        }
         if (vc.length < 3 * nc) {
             int cap = 3 * Math.max(8, 2 * nc);
             vc = new double[cap]; jd = new double[cap]; gamma = new double[cap];

@@ -63,6 +63,15 @@ public final class ProximityContacts {
     private static final double SUPPORT_TOLERANCE = 1e-6;
     /** The walk's reach above the margin, as a fraction of it: how far the object may move before the walk is repeated. */
     static final double SLACK_FRACTION = 0.5;
+    // the manifold's eight directions, 45° apart: cos and sin of dir·π/4, once
+    private static final double[] SPAN_COS = new double[8], SPAN_SIN = new double[8];
+    static {
+        for (int dir = 0; dir < 8; dir++) {
+            double ang = dir * Math.PI / 4;
+            SPAN_COS[dir] = Math.cos(ang);
+            SPAN_SIN[dir] = Math.sin(ang);
+        }
+    }
 
     private final KdopTree other, object;
     private final MeshTopology otherTopo, objectTopo;
@@ -416,7 +425,7 @@ public final class ProximityContacts {
                 }
             }
             for (int dir = 0; dir < 8; dir++) {
-                double ang = dir * Math.PI / 4, c = Math.cos(ang), s = Math.sin(ang);
+                double c = SPAN_COS[dir], s = SPAN_SIN[dir];
                 double dx = c * t1[0] + s * t2[0], dy = c * t1[1] + s * t2[1], dz = c * t1[2] + s * t2[2];
                 int best = -1;
                 double bestVal = Double.NEGATIVE_INFINITY;
