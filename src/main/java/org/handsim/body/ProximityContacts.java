@@ -306,8 +306,6 @@ public final class ProximityContacts {
     private void edgeEdge(int a, int ea, int b, int eb, double[] va, int[] ta, int[] tb, double margin, double depth) {
         int p1 = 3 * ta[3 * a + ea], q1 = 3 * ta[3 * a + (ea + 1) % 3], r1 = 3 * ta[3 * a + (ea + 2) % 3];
         int p2 = 3 * tb[3 * b + eb], q2 = 3 * tb[3 * b + (eb + 1) % 3], r2 = 3 * tb[3 * b + (eb + 2) % 3];
-        int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
-        if (o2 >= 0) placeVertex(object.mesh().vertices(), o2);
         // (the caller passes convex edges only: a flat edge (a face's inside) is its face's, and
         // has no outside of its own; a concave edge has none either)
         double d2 = td.segments(va, p1, q1, placed, p2, q2);
@@ -330,6 +328,9 @@ public final class ProximityContacts {
             mx /= l; my /= l; mz /= l;
             d = 0;
         }
+        // the vertices across the edges, for the outside tests (placed only for the pairs that get here)
+        int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
+        if (o2 >= 0) placeVertex(object.mesh().vertices(), o2);
         double sign;
         if (outside(mx, my, mz, va, p1, r1, o1) && outside(-mx, -my, -mz, placed, p2, r2, o2)) {
             sign = 1;
