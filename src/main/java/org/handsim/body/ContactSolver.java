@@ -39,12 +39,13 @@ public final class ContactSolver {
 
     private double[] v = new double[0], grad = new double[0], dir = new double[0], hess = new double[0], av = new double[0];
     private double[] vc = new double[0], jd = new double[0], gamma = new double[0], g = new double[0];
-    private double[] col = new double[0];
+    private double[] col = new double[0], dps = new double[0];
     // per solve: √A_jj, and each constraint's nonzero Jacobian columns (a contact on a link touches the
     // object's six and the joints that move the link; a worm, one): the loops skip the zeros, which
     // add nothing, so the sums are the dense loops' sums term for term
     private double[] rootA = new double[0];
     private int[] cols = new int[0], colCount = new int[0];
+    private double[] packed = new double[0];    // J's rows with only those columns, in their order (row stride nv)
     private final double[] gm = new double[3], second = new double[1];
     private double[] base = new double[0], shift = new double[0];
     private int fixedPoint;
@@ -143,6 +144,9 @@ public final class ContactSolver {
                     if (p.jac[row + j] != 0 || p.jac[row + nv + j] != 0 || p.jac[row + 2 * nv + j] != 0) cols[c * nv + m++] = j;
                 }
                 colCount[c] = m;
+                for (int k = 0; k < 3; k++) {
+                    for (int x = 0; x < m; x++) packed[row + k * nv + x] = p.jac[row + k * nv + cols[c * nv + x]];
+                }
             }
         }
         if (!warm) System.arraycopy(p.vStar, 0, v, 0, nv);
@@ -162,10 +166,7 @@ public final class ContactSolver {
                 for (int k = 0; k < 3; k++) {
                     double gk = gamma[3 * c + k];
                     int row = (3 * c + k) * nv;
-                    for (int x = 0; x < m; x++) {
-                        int j = cols[cb + x];
-                        scale = Math.max(scale, Math.abs(p.jac[row + j] * gk) / rootA[j]);
-                    }
+                    for (int x = 0; x < m; x++) scale = Math.max(scale, Math.abs(packed[row + x] * gk) / rootA[cols[cb + x]]);
                 }
             }
             lastGradient = gmax;
@@ -174,6 +175,7 @@ public final class ContactSolver {
                 break;
             }
             iterations++;
+            hessian(p);
             if (!Cholesky.decompose(hess, nv)) return outcome = Outcome.NOT_POSITIVE_DEFINITE;
             for (int j = 0; j < nv; j++) dir[j] = -grad[j];
             Cholesky.solve(hess, nv, dir);
@@ -195,50 +197,57 @@ public final class ContactSolver {
         return outcome;
     }
 
-    /** γ_c, the gradient and (when {@code hessian}) the Hessian at v. */
+    /** γ_c and the gradient at v; with {@code hessian}, each projection's Jacobian too, for {@link #hessian}. */
     private void evaluate(ContactProblem p, boolean hessian) {
         int nv = p.nv, nc = p.nc;
-        double[] a = p.a, jac = p.jac;
+        double[] a = p.a;
         for (int i = 0; i < nv; i++) {
             double s = 0;
             for (int j = 0; j < nv; j++) s += a[i * nv + j] * (v[j] - p.vStar[j]);
             av[i] = s;
             grad[i] = s;
         }
-        if (hessian) System.arraycopy(a, 0, hess, 0, nv * nv);
         for (int c = 0; c < nc; c++) {
             int o = 3 * c, cb = c * nv, m = colCount[c];
             for (int k = 0; k < 3; k++) {
                 double s = 0;
                 int row = (o + k) * nv;
-                for (int x = 0; x < m; x++) s += jac[row + cols[cb + x]] * v[cols[cb + x]];
+                for (int x = 0; x < m; x++) s += packed[row + x] * v[cols[cb + x]];
                 vc[o + k] = s;
             }
             double r = p.reg[c];
             project(-(vc[o] - p.bias[o]) / r, -(vc[o + 1] - p.bias[o + 1]) / r, -(vc[o + 2] - p.bias[o + 2]) / r, p.mu[c],
-                p.radius[c], gamma, o, hessian ? g : null, 0);
+                p.radius[c], gamma, o, hessian ? dps : null, 9 * c);
             for (int k = 0; k < 3; k++) {
                 double gk = gamma[o + k];
                 if (gk == 0) continue;
                 int row = (o + k) * nv;
-                for (int x = 0; x < m; x++) grad[cols[cb + x]] -= jac[row + cols[cb + x]] * gk;
+                for (int x = 0; x < m; x++) grad[cols[cb + x]] -= packed[row + x] * gk;
             }
-            if (hessian) {
-                // H += J_cᵀ (dP/r) J_c
-                for (int k = 0; k < 3; k++) {
-                    for (int l = 0; l < 3; l++) {
-                        double gkl = g[3 * k + l] / r;
-                        if (gkl == 0) continue;
-                        int rk = (o + k) * nv, rl = (o + l) * nv;
-                        for (int x = 0; x < m; x++) {
-                            int i = cols[cb + x];
-                            double ji = jac[rk + i] * gkl;
-                            if (ji == 0) continue;
-                            for (int y = 0; y <= x; y++) {             // the lower triangle: all Cholesky reads
-                                int j = cols[cb + y];
-                                hess[i * nv + j] += ji * jac[rl + j];
-                            }
-                        }
+        }
+    }
+
+    /**
+     * The Hessian at the last {@link #evaluate}d v (with its projections' Jacobians): A + Σ J_cᵀ
+     * (dP/r) J_c, its lower triangle (all the Cholesky factorisation reads). Apart from the
+     * evaluation, since the evaluation that finds the solve converged does not need it.
+     */
+    private void hessian(ContactProblem p) {
+        int nv = p.nv, nc = p.nc;
+        System.arraycopy(p.a, 0, hess, 0, nv * nv);
+        for (int c = 0; c < nc; c++) {
+            int o = 3 * c, cb = c * nv, m = colCount[c];
+            double r = p.reg[c];
+            for (int k = 0; k < 3; k++) {
+                for (int l = 0; l < 3; l++) {
+                    double gkl = dps[9 * c + 3 * k + l] / r;
+                    if (gkl == 0) continue;
+                    int rk = (o + k) * nv, rl = (o + l) * nv;
+                    for (int x = 0; x < m; x++) {
+                        double ji = packed[rk + x] * gkl;
+                        if (ji == 0) continue;
+                        int hi = cols[cb + x] * nv;
+                        for (int y = 0; y <= x; y++) hess[hi + cols[cb + y]] += ji * packed[rl + y];
                     }
                 }
             }
@@ -251,7 +260,7 @@ public final class ContactSolver {
      */
     private double lineSearch(ContactProblem p) {
         int nv = p.nv, nc = p.nc;
-        double[] a = p.a, jac = p.jac;
+        double[] a = p.a;
         double dAd = 0, dAv = 0;
         for (int i = 0; i < nv; i++) {
             double s = 0;
@@ -264,7 +273,7 @@ public final class ContactSolver {
             for (int k = 0; k < 3; k++) {
                 double s = 0;
                 int row = (3 * c + k) * nv;
-                for (int x = 0; x < m; x++) s += jac[row + cols[cb + x]] * dir[cols[cb + x]];
+                for (int x = 0; x < m; x++) s += packed[row + x] * dir[cols[cb + x]];
                 jd[3 * c + k] = s;
             }
         }
@@ -378,10 +387,11 @@ public final class ContactSolver {
             int cap = Math.max(8, 2 * nc);
             cols = new int[cap * nv];
             colCount = new int[cap];
+            packed = new double[3 * cap * nv];
         }
         if (vc.length < 3 * nc) {
             int cap = 3 * Math.max(8, 2 * nc);
-            vc = new double[cap]; jd = new double[cap]; gamma = new double[cap];
+            vc = new double[cap]; jd = new double[cap]; gamma = new double[cap]; dps = new double[3 * cap];
         }
         if (g.length < 9) g = new double[9];
     }
