@@ -42,6 +42,13 @@ import org.handsim.model.Snapshot;
  * second ({@link LiveGrasp}), so during a run it may trail the view by up to ~0.1 s; paused or
  * finished, it is the grasp of the state shown.
  *
+ * <h2>A free object</h2>
+ * When the scenario's object is free (DESIGN.md decision 7) a <b>Free object</b> box under the
+ * table shows its state as {@code handsim run} writes it ({@link ObjectReadout}): position,
+ * orientation, displacement and rotation relative to the palm, speeds, contact points, largest
+ * penetration, the largest displacement and rotation so far, and whether it is held in place,
+ * free, slipped or dropped, with the times. With a fixed object the box is hidden.
+ *
  * <p>Script names: button {@code dyn.run} ("Run with dynamics"), {@code dyn.gravity} (the
  * list), {@code dyn.gx}, {@code dyn.gy}, {@code dyn.gz}, button {@code dyn.applyGravity}
  * ("Apply gravity"); labels {@code dyn.grasp.closure}, {@code dyn.grasp.epsilon},
@@ -67,6 +74,7 @@ public final class DynamicsPanel {
     private final HandSimWindow window;
     private final JPanel panel = Widgets.column();
     private final Table table = new Table();
+    private final ObjectReadout object = new ObjectReadout();
     private final JTextArea events = new JTextArea(8, 28);
     private final JComboBox<String> gravity = new JComboBox<>(GRAVITY);
     private final JTextField gx, gy, gz;
@@ -127,6 +135,7 @@ public final class DynamicsPanel {
         JPanel tp = Widgets.titled(new JPanel(new BorderLayout()), "Per finger (live): τ N·m, force N, breakaway s");
         tp.add(sp, BorderLayout.CENTER);
         panel.add(tp);
+        panel.add(object.component());
 
         JPanel gp = Widgets.titled(new JPanel(new GridBagLayout()), "Grasp (live): as handsim grasp reports it");
         String[] names = {"force closure", "ε (epsilon)", "volume", "min. hold"};
@@ -238,6 +247,7 @@ public final class DynamicsPanel {
             showGrasp();
         }
         table.set(s);
+        object.show(s.snapshot().object());
     }
 
     /**
@@ -334,6 +344,9 @@ public final class DynamicsPanel {
         }
         return out;
     }
+
+    /** The Free object box as text, one {@code KEY=VALUE} per line (the script's {@code log object}); empty for a fixed object. */
+    public List<String> objectLines() { return object.lines(); }
 
     /** The events list as shown. */
     public String eventsText() { return events.getText(); }

@@ -228,6 +228,11 @@ public class HandSimPanel extends JPanel {
                     objectModel = m;
                     Scenario.ObjectPlacement p = scenario.object();
                     view.setObject(m, p != null ? p.worldFromObject() : RigidTransform.IDENTITY, p != null ? p.meshScale() : 1);
+                    // a free object the model has moved already: where the model has it, not where it started
+                    SimulationRunner.State now = runner.latest();
+                    if (now.scenario() == scenario && now.snapshot() != null && now.snapshot().object() != null && preview == null) {
+                        view.show(Pose.of(now.snapshot()));
+                    }
                     messages.accept(file.getFileName() + ": " + m.mesh().triangleCount() + " triangles", false);
                     done.complete(m);
                 });
@@ -254,7 +259,7 @@ public class HandSimPanel extends JPanel {
         SimulationRunner.State s = runner.latest();
         if (s.publication() != shownPublication) {
             shownPublication = s.publication();
-            if (s.snapshot() != null && preview == null && s.scenario() != null) view.show(Pose.of(s.snapshot(), s.scenario().worldFromPalm()));
+            if (s.snapshot() != null && preview == null && s.scenario() != null) view.show(Pose.of(s.snapshot()));
             for (StepListener l : listeners) {
                 try {
                     l.stepped(s);

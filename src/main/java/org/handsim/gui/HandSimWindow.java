@@ -749,12 +749,13 @@ public final class HandSimWindow {
      * Whether every readout shows the newest state of the model: the view, panels, labels and
      * table were given the newest published state, and the Dynamics panel's Grasp box the
      * newest evaluation — which, for a model at rest, must be of the state shown (its
-     * generation and time; {@link LiveGrasp} evaluates a resting model's grasp at its time).
-     * Scripts wait for it before a screenshot or a log ({@link ScriptRunner#settle()}).
+     * generation and time; {@link LiveGrasp} evaluates a resting model's grasp at its time);
+     * and the scenario's object is in the 3D view (its mesh read). Scripts wait for it before a screenshot or a log ({@link ScriptRunner#settle()}).
      */
     boolean settled() {
         SimulationRunner.State s = sim.state();
         if (sim.shownPublication() != s.publication()) return false;
+        if (!sim.objectReady().isDone()) return false;   // the object's mesh still loading: not in the view yet
         LiveGrasp.Result g = sim.runner().grasp().latest();
         if (g != null && g.serial() != shownGraspSerial) return false;
         if (s.playing() || s.snapshot() == null) return true;

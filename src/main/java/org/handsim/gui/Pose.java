@@ -6,7 +6,7 @@ import org.handsim.model.Snapshot;
 
 /**
  * What the 3D view draws at one instant, immutable: where the palm and the nine links are,
- * the contacts, and optional markers (an inverse-kinematics target and the closest reachable
+ * where a free object is, the contacts, and optional markers (an inverse-kinematics target and the closest reachable
  * point). Built on the simulation thread from a {@link Snapshot} or on the event dispatch
  * thread from joint values (the Kinematics panel's preview); read by {@link SceneView}.
  *
@@ -18,15 +18,20 @@ import org.handsim.model.Snapshot;
  * @param contactFingers per contact, the finger 1..3 that touches
  * @param target         a marker in the world (m), or null
  * @param closest        a second marker (the closest reachable point), or null
+ * @param worldFromObject a free object's pose, world ← object, 12 row-major values; null: the
+ *                        object stays where the scenario places it (a fixed object, a preview)
  */
 public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] contactPoints, double[] contactNormals,
-                   double[] contactForces, int[] contactFingers, double[] target, double[] closest) {
+                   double[] contactForces, int[] contactFingers, double[] target, double[] closest, double[] worldFromObject) {
 
     private static final double[] NONE = new double[0];
     private static final int[] NO_FINGERS = new int[0];
 
-    /** The pose of a simulation snapshot (the arrays are shared with the immutable snapshot). */
-    public static Pose of(Snapshot s, RigidTransform worldFromPalm) {
+    /**
+     * The pose of a simulation snapshot (the arrays are shared with the immutable snapshot): the
+     * palm where the model has it (moved by {@code hand.moves}), a free object where it is.
+     */
+    public static Pose of(Snapshot s) {
         double[][] frames = new double[3][];
         int n = 0;
         for (Snapshot.FingerSnapshot f : s.fingers()) n += f.contactCount();
@@ -43,7 +48,7 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
             java.util.Arrays.fill(fingers, at, at + c, k + 1);
             at += c;
         }
-        return new Pose(worldFromPalm.toArray(), frames, p, nn, force, fingers, null, null);
+        return new Pose(s.worldFromPalm(), frames, p, nn, force, fingers, null, null, s.object() == null ? null : s.object().worldFromMesh());
     }
 
     /**
@@ -59,12 +64,12 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
             FingerKinematics.of(k).framesInPalm(joints[k - 1], inPalm);
             for (int j = 0; j < 4; j++) RigidTransform.multiply(wp, 0, inPalm, 12 * j, frames[k - 1], 12 * j);
         }
-        return new Pose(wp, frames, NONE, NONE, NONE, NO_FINGERS, null, null);
+        return new Pose(wp, frames, NONE, NONE, NONE, NO_FINGERS, null, null, null);
     }
 
     /** A copy with markers (world frame, m; either may be null). */
     public Pose withMarkers(double[] targetWorld, double[] closestWorld) {
-        return new Pose(worldFromPalm, framesWorld, contactPoints, contactNormals, contactForces, contactFingers, targetWorld, closestWorld);
+        return new Pose(worldFromPalm, framesWorld, contactPoints, contactNormals, contactForces, contactFingers, targetWorld, closestWorld, worldFromObject);
     }
 
     /**
@@ -81,7 +86,7 @@ public record Pose(double[] worldFromPalm, double[][] framesWorld, double[] cont
             System.arraycopy(c.point(i), 0, p, 3 * i, 3);
             System.arraycopy(c.normal(i), 0, nn, 3 * i, 3);
         }
-        return new Pose(worldFromPalm, framesWorld, p, nn, new double[n], fingers, target, closest);
+        return new Pose(worldFromPalm, framesWorld, p, nn, new double[n], fingers, target, closest, worldFromObject);
     }
 
     /** @return the number of contacts */

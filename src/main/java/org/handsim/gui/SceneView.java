@@ -54,7 +54,7 @@ import org.jogamp.vecmath.Vector3f;
  *          ├─ Switch hand
  *          │   ├─ TransformGroup palm        ← world ← palm          (palm mesh, floor grid)
  *          │   └─ TransformGroup link[k][j]  ← frame {kj} in the world (link j mesh)
- *          ├─ Switch object  └─ TransformGroup object ← world ← object · scale
+ *          ├─ Switch object  └─ TransformGroup object ← world ← object · scale (a free object: its pose each frame)
  *          ├─ Switch contacts (per-child mask)  spheres at the contact points, one LineArray
  *          │                                   of normals (outward, 35 mm), drawn over the scene
  *          ├─ Switch cones    one LineArray: each contact's linearised friction cone, in its
@@ -116,6 +116,7 @@ public final class SceneView {
     private final Vector3d scratchV = new Vector3d();
     private final double[] m16 = new double[16];
     private BranchGroup objectBranch;
+    private double objectScale = 1;
     private boolean showContacts = true, showNormals = true, showCones;
     private Pose lastPose;
     private final View view3d;
@@ -172,6 +173,7 @@ public final class SceneView {
         root.addChild(spin);
 
         // the hand
+        palmTg.setCapability(TransformGroup.ALLOW_TRANSFORM_READ);
         spinTg.addChild(handSwitch);
         handSwitch.addChild(palmTg);
         handSwitch.setWhichChild(Switch.CHILD_ALL);
@@ -192,6 +194,7 @@ public final class SceneView {
         }
 
         // the object
+        objectTg.setCapability(TransformGroup.ALLOW_TRANSFORM_READ);
         objectTg.setCapability(TransformGroup.ALLOW_CHILDREN_EXTEND);
         objectTg.setCapability(TransformGroup.ALLOW_CHILDREN_WRITE);
         objectSwitch.addChild(objectTg);
@@ -277,10 +280,14 @@ public final class SceneView {
     /** The home view in the palm frame, m: the eye, and the point it looks at. */
     private static final double[] HOME_EYE_IN_PALM = {0.42, 0.16, 0.22}, HOME_AT_IN_PALM = {0, 0.01, 0.10};
 
-    /** Shows a pose: palm, links, contacts and markers. Event dispatch thread only. */
+    /**
+     * Shows a pose: palm, links, a free object (when the pose has one: at its pose, with the
+     * scale it was given), contacts and markers. Event dispatch thread only.
+     */
     public void show(Pose p) {
         lastPose = p;
         set(palmTg, p.worldFromPalm(), 0, 1);
+        if (p.worldFromObject() != null) set(objectTg, p.worldFromObject(), 0, objectScale);
         for (int k = 0; k < 3; k++) {
             for (int j = 0; j < 3; j++) set(linkTg[k][j], p.framesWorld()[k], 12 * (j + 1), 1);
         }
@@ -401,7 +408,26 @@ public final class SceneView {
 
     /** Moves the object. Event dispatch thread only. */
     public void placeObject(RigidTransform worldFromObject, double scale) {
+        objectScale = scale;
         set(objectTg, worldFromObject.toArray(), 0, scale);
+    }
+
+    /**
+     * The object's transform as the scene graph holds it (its {@code TransformGroup}: world ←
+     * object, the rotation times the mesh's scale), 16 row-major values, for checks that the view
+     * shows where the model has the object. Event dispatch thread.
+     */
+    public double[] objectTransform() { return transform(objectTg); }
+
+    /** The palm's transform as the scene graph holds it (world ← palm), 16 row-major values. Event dispatch thread. */
+    public double[] palmTransform() { return transform(palmTg); }
+
+    private static double[] transform(TransformGroup tg) {
+        Transform3D t = new Transform3D();
+        tg.getTransform(t);
+        double[] m = new double[16];
+        t.get(m);
+        return m;
     }
 
     /** What {@link #setVisible} can hide. */

@@ -72,6 +72,13 @@ import org.handsim.text.SafeText;
  * log objects               print what the Objects panel shows: the file, the units used
  *                           ({@code objects: units used: mm (judged by the file's size)}) and
  *                           the placement's note
+ * log object                print the Dynamics panel's Free object box, one KEY=VALUE per line
+ *                           (trace.csv's and summary.json's names: {@code object: obj_disp_m=0.0000006734}),
+ *                           then where the 3D view draws the object and where the model has it
+ *                           ({@code object: view_world_from_object=...}, {@code object: model_world_from_object=...
+ *                           scale=...}: 12 row-major values each, the view's with the mesh's scale in its rotation),
+ *                           and the palm's alike ({@code view_world_from_palm}, {@code model_world_from_palm});
+ *                           {@code object: fixed} when the object is not free
  * measure-fps SECONDS       render continuously (the scene turning) and print frames/second
  * </pre>
  * While a script runs, the model moves only during {@code play} and {@code wait}: a button that
@@ -126,12 +133,13 @@ public final class Script {
         + "  assert-state FINGER STATE[|STATE]   e.g. assert-state 3 BROKEN|STALLED%n"
         + "  assert-status TEXT   fail unless the status bar contains TEXT%n"
         + "  assert-runstate TEXT | assert-time SECONDS | assert-contacts N%n"
-        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics|path|objects%n"
+        + "  log dynamics|state|events|ik|charts|grasp|contacts|kinematics|path|objects|object%n"
         + "                       print what a panel shows, once it shows the model's%n"
         + "                       state (kinematics, per finger: 'M3 9479 counts,%n"
         + "                       θ31 0.00°, θ32 47.72°, θ33 30.06°'; path: per motor%n"
         + "                       its start and segments, as the scenario file writes them;%n"
-        + "                       objects: the file, the units used, the placement)%n"
+        + "                       objects: the file, the units used, the placement;%n"
+        + "                       object: a free object's state, trace.csv's names)%n"
         + "  measure-fps SECONDS  render continuously and print frames per second%n"
         + "The model moves only while play or wait runs (a button that starts a run, e.g.%n"
         + "press path.run, leaves it at t = 0 until then): one script, one state.%n"
@@ -331,8 +339,9 @@ public final class Script {
                 return List.of(p[0], p[1]);
             }
             case LOG:
-                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics", "path", "objects").contains(rest.toLowerCase(Locale.ROOT))) {
-                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics, path or objects, got '" + q(rest) + "'");
+                if (!Arrays.asList("dynamics", "state", "events", "ik", "charts", "grasp", "contacts", "kinematics", "path", "objects", "object")
+                    .contains(rest.toLowerCase(Locale.ROOT))) {
+                    throw error(src, n, "log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics, path, objects or object, got '" + q(rest) + "'");
                 }
                 return List.of(rest.toLowerCase(Locale.ROOT));
             default:

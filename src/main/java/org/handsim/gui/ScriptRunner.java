@@ -562,6 +562,9 @@ public final class ScriptRunner {
             case "objects":
                 for (String l : edt(() -> window.objectsPanel().lines())) say("objects: " + l);
                 break;
+            case "object":
+                for (String l : edt(this::objectLines)) say("object: " + l);
+                break;
             case "contacts": {
                 List<String> lines = edt(this::contactLines);
                 say("contacts: " + lines.size());
@@ -586,6 +589,31 @@ public final class ScriptRunner {
                 say(sb.toString());
             }
         }
+    }
+
+    /**
+     * The Free object box's lines, then the object's transform in the 3D view's scene graph and
+     * the model's pose of it with the mesh's scale, and the palm's in both (each as 12 row-major
+     * values, each number as Java writes a double: exactly); "fixed" when the state shown has no
+     * free object.
+     */
+    private List<String> objectLines() {
+        SimulationRunner.State s = window.runner().latest();
+        if (s.snapshot() == null || s.snapshot().object() == null) return List.of("fixed");
+        List<String> out = new ArrayList<>(window.dynamics().objectLines());
+        double[] v = window.view().objectTransform();
+        out.add("view_world_from_object=" + numbers(v, 12));
+        double scale = s.scenario().object().meshScale();
+        out.add("model_world_from_object=" + numbers(s.snapshot().object().worldFromMesh(), 12) + " scale=" + scale);
+        out.add("view_world_from_palm=" + numbers(window.view().palmTransform(), 12));
+        out.add("model_world_from_palm=" + numbers(s.snapshot().worldFromPalm(), 12));
+        return out;
+    }
+
+    private static String numbers(double[] v, int n) {
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < n; i++) sb.append(i > 0 ? "," : "").append(v[i]);
+        return sb.toString();
     }
 
     /**

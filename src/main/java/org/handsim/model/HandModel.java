@@ -1417,6 +1417,16 @@ public final class HandModel {
         return new double[] {o.x[0], o.x[1], o.x[2], o.q[0], o.q[1], o.q[2], o.q[3], o.speed, o.spin, o.contacts, o.penetration, o.disp, o.rot};
     }
 
+    /**
+     * Where the free object's mesh is now: world ← object, 12 row-major values (the pose its
+     * collision geometry is placed at; the scenario's placement until the release), a new array;
+     * null for a fixed object.
+     */
+    public double[] objectPose() { return free == null ? null : geometry.worldFromObject(); }
+
+    /** The palm's pose now, world ← palm, 12 row-major values (it follows {@code hand.moves}; a new array). */
+    public double[] worldFromPalm() { return palmPose.clone(); }
+
     /** The free object's largest displacement relative to the palm so far, m (NaN for a fixed object). */
     public double objectMaxDisplacement() { return free == null ? Double.NaN : objectState.maxDisp; }
 

@@ -10,8 +10,29 @@ import org.handsim.clutch.ClutchState;
  * @param step          step index
  * @param fingers       per finger 1..3 (index 0..2)
  * @param spreadCounts  spread motor position, counts
+ * @param worldFromPalm the palm's pose, world ← palm, 12 row-major values (it follows {@code hand.moves})
+ * @param object        the free object's state, or null when the object is fixed (or there is none)
  */
-public record Snapshot(double time, long step, FingerSnapshot[] fingers, double spreadCounts) {
+public record Snapshot(double time, long step, FingerSnapshot[] fingers, double spreadCounts, double[] worldFromPalm, ObjectSnapshot object) {
+    /**
+     * The free object at this step (DESIGN.md decision 7), what {@code handsim run} writes of it.
+     *
+     * @param worldFromMesh    world ← object (its mesh's frame), 12 row-major values ({@link HandModel#objectPose})
+     * @param now              trace.csv's object columns at this step, in the order of
+     *                         {@link org.handsim.trace.Recorder#OBJECT_COLUMNS} ({@link HandModel#objectNow})
+     * @param released         whether it is free yet (before {@code release_s} it is held in place)
+     * @param releasedAtS      summary.json's {@code released_at_s} so far, s (NaN: not yet)
+     * @param slippedAtS       summary.json's {@code slipped_at_s} so far, s (NaN: not yet)
+     * @param droppedAtS       summary.json's {@code dropped_at_s} as it stands now, s (NaN: not dropped)
+     * @param maxDisplacementM summary.json's {@code max_displacement_m} so far, m
+     * @param maxRotationDeg   summary.json's {@code max_rotation_deg} so far, degrees
+     */
+    public record ObjectSnapshot(double[] worldFromMesh, double[] now, boolean released, double releasedAtS, double slippedAtS,
+                                 double droppedAtS, double maxDisplacementM, double maxRotationDeg) {
+        /** trace.csv's value of the column {@code c} ({@link org.handsim.trace.Recorder#OBJ_X} … {@link org.handsim.trace.Recorder#OBJ_ROT}). */
+        public double column(int c) { return now[c]; }
+    }
+
     /**
      * One finger.
      *
@@ -58,6 +79,8 @@ public record Snapshot(double time, long step, FingerSnapshot[] fingers, double 
             f[k - 1] = new FingerSnapshot(m.state(k), m.motorCounts(k), m.joints(k), m.velocities(k), m.accelerations(k),
                 m.torques(k), m.framesWorld(k), p, nn, force, links);
         }
-        return new Snapshot(m.time(), m.stepIndex(), f, m.spreadCounts());
+        ObjectSnapshot o = !m.objectFree() ? null : new ObjectSnapshot(m.objectPose(), m.objectNow(), m.objectReleased(),
+            m.objectReleasedAt(), m.objectSlippedAt(), m.objectDroppedAt(), m.objectMaxDisplacement(), m.objectMaxRotation());
+        return new Snapshot(m.time(), m.stepIndex(), f, m.spreadCounts(), m.worldFromPalm(), o);
     }
 }

@@ -2,7 +2,6 @@ package org.handsim.trace;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.io.Writer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -30,7 +29,8 @@ import org.handsim.text.Decimal;
  * largest penetration (m), and its displacement (m) and rotation (degrees) relative to the palm
  * since the start; a fixed run's header is unchanged. Numbers are written by
  * {@link Decimal}; every column but {@code t_s} is a physical value, cleaned of rounding noise
- * ({@link Decimal#clean}).
+ * ({@link Decimal#clean}); the clutch states by their names, the contact counts as integers.
+ * {@link TraceLine} writes each line.
  *
  * <p>Two kinds (bounded memory):
  * <ul>
@@ -228,31 +228,6 @@ public final class Recorder implements AutoCloseable {
     static final int WIDTH = 1 + 3 * (NF + 3) + 1 + 6 + CARRIED + SPREAD_TAU;
 
     /**
-     * One trace.csv line from a row of {@link #WIDTH} numbers, or {@link #WIDTH} + the object's
-     * when {@code object} (the one place the format is written).
-     */
-    static void format(double[] row, boolean object, StringBuilder sb) {
-        sb.setLength(0);
-        int i = 0;
-        Decimal.append(sb, row[i++]);
-        for (int k = 0; k < 3; k++) {
-            for (int c = 0; c < NF; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-            sb.append(',').append(STATES[(int) row[i++]].name());
-            sb.append(',').append((long) row[i++]);
-            Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-        }
-        Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-        for (int c = 0; c < 6 + CARRIED + SPREAD_TAU; c++) Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-        if (object) {
-            for (int c = 0; c < NO; c++) {
-                if (c == OBJ_CONTACTS) sb.append(',').append((long) row[i++]);
-                else Decimal.append(sb.append(','), Decimal.clean(row[i++]));
-            }
-        }
-        sb.append('\n');
-    }
-
-    /**
      * Formats and writes rows on its own thread (the run goes on on the other core). The
      * stepping thread copies each finished row into a chunk of {@value #CHUNK} rows taken from
      * a fixed pool and hands full chunks over (one hand-over per {@value #CHUNK} rows, so the
@@ -330,6 +305,7 @@ public final class Recorder implements AutoCloseable {
             double[] row = new double[width];
             try {
                 AsciiOut w = new AsciiOut(file.stream());
+                TraceLine line = new TraceLine(object);
                 long t0 = System.nanoTime();
                 sb.append(header).append('\n');
                 w.append(sb);
@@ -341,8 +317,7 @@ public final class Recorder implements AutoCloseable {
                     t0 = System.nanoTime();
                     for (int i = 0; i < n; i++) {
                         System.arraycopy(chunk, i * width, row, 0, width);
-                        format(row, object, sb);
-                        w.append(sb);
+                        w.write(line.bytes(), line.encode(row));   // the line's text: TraceLine
                     }
                     nanos += System.nanoTime() - t0;
                     free.add(chunk);
@@ -405,6 +380,14 @@ public final class Recorder implements AutoCloseable {
                 if (c >= 0x80) throw new IOException("a trace line that is not ASCII");
                 buf[n++] = (byte) c;
             }
+        }
+
+        /** Appends the first {@code len} bytes of {@code b} (ASCII already). */
+        void write(byte[] b, int len) throws IOException {
+            if (n + len > buf.length) flushBuffer();
+            if (len > buf.length) throw new IOException("a trace line longer than " + buf.length + " characters");
+            System.arraycopy(b, 0, buf, n, len);
+            n += len;
         }
 
         private void flushBuffer() throws IOException {
@@ -523,16 +506,15 @@ public final class Recorder implements AutoCloseable {
     /** Writes all rows in memory as trace.csv atomically (nothing appears under the name unless complete). */
     public void writeCsv(Path target) throws IOException {
         try (AtomicFile f = new AtomicFile(target)) {
-            Writer w = f.writer();
-            w.write(headerLine());
-            w.write('\n');
+            AsciiOut w = new AsciiOut(f.stream());
+            w.append(headerLine() + "\n");
             double[] row = new double[width];
-            StringBuilder sb = new StringBuilder(512);
+            TraceLine line = new TraceLine(object);
             for (int r = 0; r < rows; r++) {
                 copyRow(r, row, 0);
-                format(row, object, sb);
-                w.append(sb);
+                w.write(line.bytes(), line.encode(row));
             }
+            w.flush();
             f.commit();
         }
     }

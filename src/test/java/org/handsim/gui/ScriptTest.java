@@ -48,7 +48,7 @@ class ScriptTest {
             {"assert-state 3 SLIPPING", "t.txt:1: unknown clutch state 'SLIPPING'"},
             {"show palm off", "t.txt:1: show needs hand|object|contacts"},
             {"wait 1.5", "t.txt:1: wait needs whole milliseconds"},
-            {"log everything", "t.txt:1: log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics, path or objects"},
+            {"log everything", "t.txt:1: log needs dynamics, state, events, ik, charts, grasp, contacts, kinematics, path, objects or object"},
             {"camera sideways", "t.txt:1: camera needs home, fit, front, top or side"},
             {"key ESCAPE", "t.txt:1: key needs one of SPACE, RIGHT, R, H, F, 1, 2, 3"},
             {"save-charts c.jpg", "t.txt:1: save-charts needs a .png or .svg file"},

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import org.handsim.TestPaths;
 import org.handsim.scenario.Scenario;
@@ -92,6 +93,44 @@ class FreeObjectRunTest {
         // the centre of mass rose with the palm by the lift's 0.1 m
         assertEquals(0.1, o[Recorder.OBJ_Z] - r.object(Recorder.OBJ_Z, 0), 1e-4);
         assertTrue(o[Recorder.OBJ_CONTACTS] >= 3, "contact points " + o[Recorder.OBJ_CONTACTS]);
+    }
+
+    /**
+     * The mug lift turned so that it runs along the mug's axis (gravity along -x, the palm rising
+     * 0.1 m along +x), where only friction holds it: the grasp squeezes the mug with some 250 N,
+     * so μ = 0.1 (25 N of friction against its 3.43 N weight) holds it, as MuJoCo's rig holds it
+     * at μ = 0.1 and 0.01 with the weight pushed along every direction
+     * (tools/lift-friction-vs-mujoco); μ = 0.001 cannot, and the summary says when it slipped (as
+     * 34 ms after its release) and when it left the hand.
+     */
+    @Test
+    @Tag("slow")
+    void aLiftAlongTheMugsAxisSlipsOnlyWhenFrictionCannotCarryItsWeight() {
+        HandModel held = Simulation.model(alongTheAxis(0.1), true);
+        held.run(null);
+        assertTrue(held.objectMaxDisplacement() < 0.005, "mu 0.1 moved " + held.objectMaxDisplacement() + " m");
+        assertTrue(Double.isNaN(held.objectSlippedAt()) && Double.isNaN(held.objectDroppedAt()));
+        HandModel slips = Simulation.model(alongTheAxis(0.001), true);
+        slips.run(null);
+        double slipped = slips.objectSlippedAt(), dropped = slips.objectDroppedAt();
+        // no sooner than a free fall of 5 mm (31.9 ms), and soon after: 0.001 x 250 N is 7 % of its weight
+        assertTrue(slipped >= 4.7 + Math.sqrt(2 * 0.005 / 9.81) && slipped < 4.75, "slipped at " + slipped);
+        assertTrue(dropped > slipped && dropped < 5.0, "dropped at " + dropped);
+        Map<String, Object> s = RunSummary.of(slips, 1);
+        assertEquals(slipped, (Double) s.get("slipped_at_s"), 1e-9);
+        assertEquals(dropped, (Double) s.get("dropped_at_s"), 1e-9);
+    }
+
+    @SuppressWarnings("unchecked")
+    static Scenario alongTheAxis(double mu) {
+        Map<String, Object> j = (Map<String, Object>) Json.parse("scenario", Scenario.readText(LIFT));
+        j.put("gravity_m_s2", List.of(-9.81, 0.0, 0.0));
+        for (Object m : (List<Object>) ((Map<String, Object>) j.get("hand")).get("moves")) {
+            Map<String, Object> move = (Map<String, Object>) m;
+            if ("line".equals(move.get("type"))) move.put("by_m", List.of(0.1, 0.0, 0.0));
+        }
+        ((Map<String, Object>) j.get("object")).put("friction", mu);
+        return Scenario.parse(LIFT, JsonWriter.write(j));
     }
 
     /**

@@ -25,8 +25,7 @@ class PlanHoldEnginesTest {
     @Test
     @Tag("slow")   // three trials' hold tests on three engines and a Spark context: about a minute
     void holdTestTablesAreTheSameOnEveryEngine() throws Exception {
-        PlanSpec s = SparkEngineTest.spec(3).withHold(new PlanHold(
-            new HoldSettings(Double.NaN, 0.3, 0.001, false, 0.05, 15, 0.005, 5, 10, 58.84), Double.NaN, Double.NaN, false));
+        PlanSpec s = spec();
         List<String> one = new ArrayList<>(), two = new ArrayList<>(), spark = new ArrayList<>();
         new LocalEngine().run(new PlanJob(s), s.trials(), new TrialEngine.Settings(1, null, "t"), r -> one.add(r.csvRow(true)));
         new LocalEngine().run(new PlanJob(s), s.trials(), new TrialEngine.Settings(2, null, "t"), r -> two.add(r.csvRow(true)));
@@ -40,6 +39,19 @@ class PlanHoldEnginesTest {
         one.replaceAll(r -> SparkEngineTest.withoutTiming(List.of(r)).get(0));
         assertEquals(one, SparkEngineTest.withoutTiming(two), "two threads");
         assertEquals(one, SparkEngineTest.withoutTiming(spark), "Spark local[2]");
+    }
+
+    /** Three mug trials with 0.3 s pushes (short enough for a slow test). */
+    static PlanSpec spec() {
+        return SparkEngineTest.spec(3).withHold(new PlanHold(
+            new HoldSettings(Double.NaN, 0.3, 0.001, false, 0.05, 15, 0.005, 5, 10, 58.84), Double.NaN, Double.NaN, false));
+    }
+
+    /** {@code s}'s table, with its hold columns, on one local thread, timing aside. */
+    static List<String> oneThread(PlanSpec s) throws Exception {
+        List<String> rows = new ArrayList<>();
+        new LocalEngine().run(new PlanJob(s), s.trials(), new TrialEngine.Settings(1, null, "t"), r -> rows.add(r.csvRow(true)));
+        return SparkEngineTest.withoutTiming(rows);
     }
 
 }

@@ -131,7 +131,10 @@ class SparkEngineTest {
         return new SparkEngine.Chunk<>(part, part * size, r);
     }
 
-    /** tools/spark-cluster start: a standalone master and worker (separate JVMs); the plan on it gives the local table. */
+    /**
+     * tools/spark-cluster start: a standalone master and worker (separate JVMs); the plan on it
+     * gives the local table, and so does {@code plan --hold-test}'s (PlanHoldEnginesTest's three trials).
+     */
     @Test
     @Tag("slow")   // a master and a worker in child JVMs: ./test --all (CI)
     void standaloneClusterGivesTheLocalTable() throws Exception {
@@ -144,6 +147,10 @@ class SparkEngineTest {
             new SparkEngine().run(new PlanJob(s), 8, new TrialEngine.Settings(2, url, "cluster test"), r -> rows.add(r.csvRow()));
             assertEquals(local(s), withoutTiming(rows));
             assertTrue(Files.list(state.resolve("work")).count() > 0, "the worker launched an executor process");
+            PlanSpec hold = PlanHoldEnginesTest.spec();
+            List<String> holdRows = new ArrayList<>();
+            new SparkEngine().run(new PlanJob(hold), hold.trials(), new TrialEngine.Settings(2, url, "cluster hold test"), r -> holdRows.add(r.csvRow(true)));
+            assertEquals(PlanHoldEnginesTest.oneThread(hold), withoutTiming(holdRows), "plan --hold-test on the standalone cluster");
         } finally {
             tool("stop", "--state", state.toString());
             assertTrue(!Files.exists(state.resolve("master.pid")) && !Files.exists(state.resolve("worker.pid")));
