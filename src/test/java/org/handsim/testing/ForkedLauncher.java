@@ -66,6 +66,8 @@ public final class ForkedLauncher {
             if (!o.startsWith("-Dhandsim.testTimes=") && !o.startsWith("-Dhandsim.testForks=")) jvm.add(o);
         }
         List<Process> running = new ArrayList<>();
+        long start = System.nanoTime();
+        List<java.util.concurrent.CompletableFuture<Long>> ended = new ArrayList<>();
         for (int k = 0; k < shares.size(); k++) {
             List<String> cmd = new ArrayList<>();
             cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
@@ -84,7 +86,9 @@ public final class ForkedLauncher {
                 cmd.add("--select-class");
                 cmd.add(c);
             }
-            running.add(new ProcessBuilder(cmd).inheritIO().start());
+            Process p = new ProcessBuilder(cmd).inheritIO().start();
+            running.add(p);
+            ended.add(p.onExit().thenApply(x -> System.nanoTime()));
         }
         int status = 0;
         for (Process p : running) {
@@ -92,7 +96,27 @@ public final class ForkedLauncher {
             if (status == 0) status = code;
         }
         if (times != null) joinTimes(Path.of(times), shares.size());
+        // the balance of the shares and what they cost: an idle JVM while the other runs on is wall time lost
+        StringBuilder walls = new StringBuilder();
+        for (java.util.concurrent.CompletableFuture<Long> e : ended) {
+            walls.append(walls.length() == 0 ? "" : " and ").append(String.format(java.util.Locale.ROOT, "%.0f", (e.get() - start) / 1e9));
+        }
+        double cpu = childrenCpuSeconds();
+        System.out.println("test JVMs: " + shares.size() + " side by side, " + walls + " s wall"
+            + (Double.isNaN(cpu) ? "" : String.format(java.util.Locale.ROOT, ", %.0f s CPU (their child processes included)", cpu)));
         System.exit(status);
+    }
+
+    /** The processor seconds of this JVM's reaped child processes (user + system), or NaN off Linux. */
+    static double childrenCpuSeconds() {
+        try {
+            String stat = Files.readString(Path.of("/proc/self/stat"));
+            // the command name (field 2) may hold spaces: count fields after its closing ')'; cutime and cstime are fields 16 and 17
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).trim().split("\\s+");
+            return (Long.parseLong(f[13]) + Long.parseLong(f[14])) / 100.0;   // USER_HZ, as TestTimes reads it
+        } catch (IOException | RuntimeException e) {
+            return Double.NaN;
+        }
     }
 
     /** The classes (not nested ones) under the scanned folders whose names one of the include patterns matches. */
