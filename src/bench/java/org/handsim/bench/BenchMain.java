@@ -30,6 +30,7 @@ public final class BenchMain {
         SUITES.put("body-solver", new BodyBench(false));
         SUITES.put("body-proximity", new BodyBench(true));
         SUITES.put("body-step", new BodyStepBench());
+        SUITES.put("mug-lift-step", BodyStepBench::mugLift);
     }
 
     public static void main(String[] args) throws Exception {

@@ -32,7 +32,8 @@ import org.handsim.scenario.Scenario;
  * {@code HandModel.step()} from the mug's release to the end of the scenario timed on its own
  * (the hand's motors and moves, the link poses, the free object's contacts with the palm and
  * the nine links, its convex problem with the pressing joints, the clutches), the median over
- * the run, after two untimed runs of the whole scenario (the JIT).
+ * the run, after two untimed runs of the whole scenario (the JIT), with the thread's CPU time and
+ * the bytes it allocated per step over those steps. Suite "mug-lift-step" runs that part alone.
  */
 final class BodyStepBench implements BenchMain.Suite {
     static final double DT = 0.001, SETTLE_S = 1, RUN_S = 5, MASS_KG = 0.1;
@@ -46,6 +47,8 @@ final class BodyStepBench implements BenchMain.Suite {
         long[] ns = new long[n];
         int[] contacts = new int[n];
         int unconverged = 0;
+        com.sun.management.ThreadMXBean tb = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long b0 = tb.getCurrentThreadAllocatedBytes();
         for (int i = 0; i < n; i++) {
             long a = System.nanoTime();
             ContactSolver.Outcome o = scene.step(DT);
@@ -53,6 +56,7 @@ final class BodyStepBench implements BenchMain.Suite {
             contacts[i] = scene.contacts().size();
             if (o != ContactSolver.Outcome.CONVERGED) unconverged++;
         }
+        long bytes = tb.getCurrentThreadAllocatedBytes() - b0;
         double[] x1 = scene.body().position(new double[3]);
         Arrays.sort(ns);
         Arrays.sort(contacts);
@@ -64,30 +68,47 @@ final class BodyStepBench implements BenchMain.Suite {
         System.out.printf(Locale.ROOT, "  thread CPU per step: median of 11 batches %s%n", Bench.human(1e3 * cpu));
         System.out.printf(Locale.ROOT, "  contacts per step: median %d (%d-%d); solves not converged: %d; the mug moved %.3g mm over the run%n",
             contacts[n / 2], contacts[0], contacts[n - 1], unconverged, 1e3 * moved);
+        System.out.printf(Locale.ROOT, "  allocated over the run: %.1f bytes/step%n", bytes / (double) n);
         mugLift();
     }
 
-    /** Each HandModel step of mug-lift.json after the release, timed on its own; the third run of three. */
+    /**
+     * Each HandModel step of mug-lift.json after the release, timed on its own; the third run of
+     * three. With it, over the same steps of that run, the thread's CPU time and the bytes it
+     * allocated ({@code ThreadMXBean}), per step: the hot loop should allocate nothing.
+     */
     static void mugLift() {
         Scenario s = Scenario.load(Home.scenarios().resolve("mug-lift.json"));
+        com.sun.management.ThreadMXBean tb = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
         long[] ns = null;
         int n = 0;
+        long cpu = 0, bytes = 0;
         for (int round = 0; round < 3; round++) {
             HandModel m = Simulation.model(s, false);
             ns = new long[(int) Math.round(s.duration() / s.dt()) + 2];
             n = 0;
+            while (m.running() && Double.isNaN(m.objectReleasedAt())) m.step();
+            long c0 = tb.getCurrentThreadCpuTime(), b0 = tb.getCurrentThreadAllocatedBytes();
             while (m.running()) {
-                boolean free = !Double.isNaN(m.objectReleasedAt());
                 long a = System.nanoTime();
-                m.step();
+                freeStep(m);
                 long b = System.nanoTime() - a;
-                if (free && n < ns.length) ns[n++] = b;
+                if (n < ns.length) ns[n++] = b;
             }
+            cpu = tb.getCurrentThreadCpuTime() - c0;
+            bytes = tb.getCurrentThreadAllocatedBytes() - b0;
         }
         long[] t = Arrays.copyOf(ns, n);
         Arrays.sort(t);
         System.out.printf(Locale.ROOT, "mug-lift.json, HandModel.step() after the release, %d steps: median %s (quartiles %s, %s; 95th %s)%n", n,
             Bench.human(t[n / 2]), Bench.human(t[n / 4]), Bench.human(t[3 * n / 4]), Bench.human(t[(int) (0.95 * n)]));
+        System.out.printf(Locale.ROOT, "  thread CPU per step (mean over the run) %s; allocated %.1f bytes/step%n", Bench.human(cpu / (double) n),
+            bytes / (double) n);
+    }
+
+    /** A step after the release: its own frame, so a profile of the bench tells it from the closing's steps. */
+    private static void freeStep(HandModel m) {
+        m.step();
     }
 
     /** The mug grasp closed and locked, the mug free under gravity: the hold test's scene without a push. */

@@ -39,7 +39,13 @@ public final class ContactSolver {
 
     private double[] v = new double[0], grad = new double[0], dir = new double[0], hess = new double[0], av = new double[0];
     private double[] vc = new double[0], jd = new double[0], gamma = new double[0], g = new double[0];
-    private double[] col = new double[0];
+    private double[] col = new double[0], dps = new double[0];
+    // per solve: √A_jj, and each constraint's nonzero Jacobian columns (a contact on a link touches the
+    // object's six and the joints that move the link; a worm, one): the loops skip the zeros, which
+    // add nothing, so the sums are the dense loops' sums term for term
+    private double[] rootA = new double[0];
+    private int[] cols = new int[0], colCount = new int[0];
+    private double[] packed = new double[0];    // J's rows with only those columns, in their order (row stride nv)
     private final double[] gm = new double[3], second = new double[1];
     private double[] base = new double[0];
     private int fixedPoint;
@@ -215,16 +221,30 @@ public final class ContactSolver {
         int nv = p.nv, nc = p.nc;
         grow(nv, nc);
         double[] a = p.a;
-        // A⁻¹ columns, for the regularisation R_c = ε·(J_c A⁻¹ J_cᵀ)_nn
-        System.arraycopy(a, 0, hess, 0, nv * nv);
-        if (regularise && !Cholesky.decompose(hess, nv)) return outcome = Outcome.NOT_POSITIVE_DEFINITE;
-        for (int c = 0; regularise && c < nc; c++) {
-            int row = 3 * c * nv;
-            System.arraycopy(p.jac, row, col, 0, nv);
-            Cholesky.solve(hess, nv, col);
-            double w = 0;
-            for (int j = 0; j < nv; j++) w += p.jac[row + j] * col[j];
-            p.reg[c] = p.epsilon * Math.max(w, 1e-300);
+        // a solve of the same A and J as the last (solveCoulomb's next): the regularisation and the columns stand
+        if (regularise) {
+            // A⁻¹ columns, for the regularisation R_c = ε·(J_c A⁻¹ J_cᵀ)_nn
+            System.arraycopy(a, 0, hess, 0, nv * nv);
+            if (!Cholesky.decompose(hess, nv)) return outcome = Outcome.NOT_POSITIVE_DEFINITE;
+            for (int c = 0; c < nc; c++) {
+                int row = 3 * c * nv;
+                System.arraycopy(p.jac, row, col, 0, nv);
+                Cholesky.solve(hess, nv, col);
+                double w = 0;
+                for (int j = 0; j < nv; j++) w += p.jac[row + j] * col[j];
+                p.reg[c] = p.epsilon * Math.max(w, 1e-300);
+            }
+            for (int j = 0; j < nv; j++) rootA[j] = Math.sqrt(a[j * nv + j]);
+            for (int c = 0; c < nc; c++) {
+                int m = 0, row = 3 * c * nv;
+                for (int j = 0; j < nv; j++) {
+                    if (p.jac[row + j] != 0 || p.jac[row + nv + j] != 0 || p.jac[row + 2 * nv + j] != 0) cols[c * nv + m++] = j;
+                }
+                colCount[c] = m;
+                for (int k = 0; k < 3; k++) {
+                    for (int x = 0; x < m; x++) packed[row + k * nv + x] = p.jac[row + k * nv + cols[c * nv + x]];
+                }
+            }
         }
         if (!warm) System.arraycopy(p.vStar, 0, v, 0, nv);
         if (!warm) iterations = 0;
@@ -234,15 +254,16 @@ public final class ContactSolver {
             // convergence: |grad_j|/√A_jj against the momenta's size
             double gmax = 0, scale = 0;
             for (int j = 0; j < nv; j++) {
-                double s = 1 / Math.sqrt(a[j * nv + j]);
+                double s = 1 / rootA[j];
                 gmax = Math.max(gmax, Math.abs(grad[j]) * s);
                 scale = Math.max(scale, Math.abs(av[j]) * s);
             }
             for (int c = 0; c < nc; c++) {
+                int cb = c * nv, m = colCount[c];
                 for (int k = 0; k < 3; k++) {
-                    for (int j = 0; j < nv; j++) {
-                        scale = Math.max(scale, Math.abs(p.jac[(3 * c + k) * nv + j] * gamma[3 * c + k]) / Math.sqrt(a[j * nv + j]));
-                    }
+                    double gk = gamma[3 * c + k];
+                    int row = (3 * c + k) * nv;
+                    for (int x = 0; x < m; x++) scale = Math.max(scale, Math.abs(packed[row + x] * gk) / rootA[cols[cb + x]]);
                 }
             }
             lastGradient = gmax;
@@ -251,6 +272,7 @@ public final class ContactSolver {
                 break;
             }
             iterations++;
+            hessian(p);
             if (!Cholesky.decompose(hess, nv)) return outcome = Outcome.NOT_POSITIVE_DEFINITE;
             for (int j = 0; j < nv; j++) dir[j] = -grad[j];
             Cholesky.solve(hess, nv, dir);
@@ -258,7 +280,7 @@ public final class ContactSolver {
             // a step below the rounding of v itself: the gradient is at its floor of rounding
             double step = 0, size = 0;
             for (int j = 0; j < nv; j++) {
-                double s = Math.sqrt(a[j * nv + j]);
+                double s = rootA[j];
                 v[j] += alpha * dir[j];
                 step = Math.max(step, Math.abs(alpha * dir[j]) * s);
                 size = Math.max(size, Math.max(Math.abs(v[j]), Math.abs(p.vStar[j])) * s);
@@ -272,46 +294,57 @@ public final class ContactSolver {
         return outcome;
     }
 
-    /** γ_c, the gradient and (when {@code hessian}) the Hessian at v. */
+    /** γ_c and the gradient at v; with {@code hessian}, each projection's Jacobian too, for {@link #hessian}. */
     private void evaluate(ContactProblem p, boolean hessian) {
         int nv = p.nv, nc = p.nc;
-        double[] a = p.a, jac = p.jac;
+        double[] a = p.a;
         for (int i = 0; i < nv; i++) {
             double s = 0;
             for (int j = 0; j < nv; j++) s += a[i * nv + j] * (v[j] - p.vStar[j]);
             av[i] = s;
             grad[i] = s;
         }
-        if (hessian) System.arraycopy(a, 0, hess, 0, nv * nv);
         for (int c = 0; c < nc; c++) {
-            int o = 3 * c;
+            int o = 3 * c, cb = c * nv, m = colCount[c];
             for (int k = 0; k < 3; k++) {
                 double s = 0;
                 int row = (o + k) * nv;
-                for (int j = 0; j < nv; j++) s += jac[row + j] * v[j];
+                for (int x = 0; x < m; x++) s += packed[row + x] * v[cols[cb + x]];
                 vc[o + k] = s;
             }
             double r = p.reg[c];
             project(-(vc[o] - p.bias[o]) / r, -(vc[o + 1] - p.bias[o + 1]) / r, -(vc[o + 2] - p.bias[o + 2]) / r, p.mu[c],
-                p.radius[c], gamma, o, hessian ? g : null, 0);
+                p.radius[c], gamma, o, hessian ? dps : null, 9 * c);
             for (int k = 0; k < 3; k++) {
                 double gk = gamma[o + k];
                 if (gk == 0) continue;
                 int row = (o + k) * nv;
-                for (int j = 0; j < nv; j++) grad[j] -= jac[row + j] * gk;
+                for (int x = 0; x < m; x++) grad[cols[cb + x]] -= packed[row + x] * gk;
             }
-            if (hessian) {
-                // H += J_cᵀ (dP/r) J_c
-                for (int k = 0; k < 3; k++) {
-                    for (int l = 0; l < 3; l++) {
-                        double gkl = g[3 * k + l] / r;
-                        if (gkl == 0) continue;
-                        int rk = (o + k) * nv, rl = (o + l) * nv;
-                        for (int i = 0; i < nv; i++) {
-                            double ji = jac[rk + i] * gkl;
-                            if (ji == 0) continue;
-                            for (int j = 0; j < nv; j++) hess[i * nv + j] += ji * jac[rl + j];
-                        }
+        }
+    }
+
+    /**
+     * The Hessian at the last {@link #evaluate}d v (with its projections' Jacobians): A + Σ J_cᵀ
+     * (dP/r) J_c, its lower triangle (all the Cholesky factorisation reads). Apart from the
+     * evaluation, since the evaluation that finds the solve converged does not need it.
+     */
+    private void hessian(ContactProblem p) {
+        int nv = p.nv, nc = p.nc;
+        System.arraycopy(p.a, 0, hess, 0, nv * nv);
+        for (int c = 0; c < nc; c++) {
+            int o = 3 * c, cb = c * nv, m = colCount[c];
+            double r = p.reg[c];
+            for (int k = 0; k < 3; k++) {
+                for (int l = 0; l < 3; l++) {
+                    double gkl = dps[9 * c + 3 * k + l] / r;
+                    if (gkl == 0) continue;
+                    int rk = (o + k) * nv, rl = (o + l) * nv;
+                    for (int x = 0; x < m; x++) {
+                        double ji = packed[rk + x] * gkl;
+                        if (ji == 0) continue;
+                        int hi = cols[cb + x] * nv;
+                        for (int y = 0; y <= x; y++) hess[hi + cols[cb + y]] += ji * packed[rl + y];
                     }
                 }
             }
@@ -324,7 +357,7 @@ public final class ContactSolver {
      */
     private double lineSearch(ContactProblem p) {
         int nv = p.nv, nc = p.nc;
-        double[] a = p.a, jac = p.jac;
+        double[] a = p.a;
         double dAd = 0, dAv = 0;
         for (int i = 0; i < nv; i++) {
             double s = 0;
@@ -333,10 +366,11 @@ public final class ContactSolver {
             dAv += dir[i] * av[i];
         }
         for (int c = 0; c < nc; c++) {
+            int cb = c * nv, m = colCount[c];
             for (int k = 0; k < 3; k++) {
                 double s = 0;
                 int row = (3 * c + k) * nv;
-                for (int j = 0; j < nv; j++) s += jac[row + j] * dir[j];
+                for (int x = 0; x < m; x++) s += packed[row + x] * dir[cols[cb + x]];
                 jd[3 * c + k] = s;
             }
         }
@@ -443,12 +477,18 @@ public final class ContactSolver {
     private void grow(int nv, int nc) {
         if (v.length < nv) {
             v = new double[nv]; grad = new double[nv]; dir = new double[nv]; av = new double[nv]; col = new double[nv];
-            hess = new double[nv * nv];
+            hess = new double[nv * nv]; rootA = new double[nv];
         }
         if (hess.length < nv * nv) hess = new double[nv * nv];
+        if (cols.length < nc * nv || colCount.length < nc) {
+            int cap = Math.max(8, 2 * nc);
+            cols = new int[cap * nv];
+            colCount = new int[cap];
+            packed = new double[3 * cap * nv];
+        }
         if (vc.length < 3 * nc) {
             int cap = 3 * Math.max(8, 2 * nc);
-            vc = new double[cap]; jd = new double[cap]; gamma = new double[cap];
+            vc = new double[cap]; jd = new double[cap]; gamma = new double[cap]; dps = new double[3 * cap];
         }
         if (g.length < 9) g = new double[9];
     }

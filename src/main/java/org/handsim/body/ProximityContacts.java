@@ -63,6 +63,15 @@ public final class ProximityContacts {
     private static final double SUPPORT_TOLERANCE = 1e-6;
     /** The walk's reach above the margin, as a fraction of it: how far the object may move before the walk is repeated. */
     static final double SLACK_FRACTION = 0.5;
+    // the manifold's eight directions, 45° apart: cos and sin of dir·π/4, once
+    private static final double[] SPAN_COS = new double[8], SPAN_SIN = new double[8];
+    static {
+        for (int dir = 0; dir < 8; dir++) {
+            double ang = dir * Math.PI / 4;
+            SPAN_COS[dir] = Math.cos(ang);
+            SPAN_SIN[dir] = Math.sin(ang);
+        }
+    }
 
     private final KdopTree other, object;
     private final MeshTopology otherTopo, objectTopo;
@@ -297,8 +306,6 @@ public final class ProximityContacts {
     private void edgeEdge(int a, int ea, int b, int eb, double[] va, int[] ta, int[] tb, double margin, double depth) {
         int p1 = 3 * ta[3 * a + ea], q1 = 3 * ta[3 * a + (ea + 1) % 3], r1 = 3 * ta[3 * a + (ea + 2) % 3];
         int p2 = 3 * tb[3 * b + eb], q2 = 3 * tb[3 * b + (eb + 1) % 3], r2 = 3 * tb[3 * b + (eb + 2) % 3];
-        int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
-        if (o2 >= 0) placeVertex(object.mesh().vertices(), o2);
         // (the caller passes convex edges only: a flat edge (a face's inside) is its face's, and
         // has no outside of its own; a concave edge has none either)
         double d2 = td.segments(va, p1, q1, placed, p2, q2);
@@ -321,6 +328,9 @@ public final class ProximityContacts {
             mx /= l; my /= l; mz /= l;
             d = 0;
         }
+        // the vertices across the edges, for the outside tests (placed only for the pairs that get here)
+        int o1 = otherTopo.across(a, ea), o2 = objectTopo.across(b, eb);
+        if (o2 >= 0) placeVertex(object.mesh().vertices(), o2);
         double sign;
         if (outside(mx, my, mz, va, p1, r1, o1) && outside(-mx, -my, -mz, placed, p2, r2, o2)) {
             sign = 1;
@@ -416,7 +426,7 @@ public final class ProximityContacts {
                 }
             }
             for (int dir = 0; dir < 8; dir++) {
-                double ang = dir * Math.PI / 4, c = Math.cos(ang), s = Math.sin(ang);
+                double c = SPAN_COS[dir], s = SPAN_SIN[dir];
                 double dx = c * t1[0] + s * t2[0], dy = c * t1[1] + s * t2[1], dz = c * t1[2] + s * t2[2];
                 int best = -1;
                 double bestVal = Double.NEGATIVE_INFINITY;

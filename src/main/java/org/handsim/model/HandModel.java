@@ -142,6 +142,7 @@ public final class HandModel {
     private final FreeObjectScene free;
     private final SceneGeometry geometry;
     private final HandPath path;                    // the hand base's motion, null when it stays
+    private final double[] gravity;                 // the scenario's, m/s² (world); Scenario.gravity() copies it
     private final boolean sceneMoves;               // the object or the base moves: no result is reused from an earlier step
     private final double releaseS;
     private final double[] objectStart;
@@ -235,7 +236,8 @@ public final class HandModel {
         this.recorder = recorder;
         this.reach2 = hand.a2() + hand.a3() + LINK_MARGIN_M;
         this.reach3 = hand.a3() + LINK_MARGIN_M;
-        double[] g = scenario.gravity();
+        this.gravity = scenario.gravity();
+        double[] g = gravity;
         for (int k = 1; k <= 3; k++) {
             fk[k - 1] = new FingerKinematics(hand.finger(k));
             clutch[k - 1] = new FingerClutch(tr, hand.kClutch(), hand.tauBreak(), hand.theta3Limits()[1]);
@@ -369,7 +371,7 @@ public final class HandModel {
      */
     private void placeBase(double time) {
         path.sample(time, palmPose, palmTwist);
-        double[] g = scenario.gravity();
+        double[] g = gravity;
         for (int i = 0; i < 3; i++) {
             RigidTransform.multiply(palmPose, 0, baseInPalm[i], 0, worldFromK0[i], 0);
             double[] w = worldFromK0[i];
@@ -647,7 +649,11 @@ public final class HandModel {
         }
         counters[Counter.FINGER_UPDATES.ordinal()]++;
         placeFinger(k);
-        collide(k);
+        if (released && !contactsConsulted(i)) {
+            counters[Counter.COLLISIONS_SKIPPED.ordinal()] += 3;
+        } else {
+            collide(k);
+        }
         if (events && (locateFirstTouch(k) || sweptTouch(k))) {
             placeFinger(k);
             collide(k);
@@ -662,6 +668,19 @@ public final class HandModel {
         clutchTorque[i] = clutch[i].clutchTorque(tauDyn[i][1]);
         guard(k);
         if (!released) watch(i);                      // released: after the object's step gives the forces
+    }
+
+    /**
+     * Whether finger i's update after the release reads its contacts with the object: a closing
+     * FREE or BROKEN finger looks for a first touch, a BLOCKED one may break away and lock its
+     * contacts' forces. Otherwise (held, stalled, or a motor that does not advance) the object's
+     * step replaces the contacts before anything reads them ({@link #objectForces}), so the
+     * intersection query would be work thrown away.
+     */
+    private boolean contactsConsulted(int i) {
+        ClutchState st = clutch[i].state();
+        if (st == ClutchState.BLOCKED) return true;
+        return (st == ClutchState.FREE || st == ClutchState.BROKEN) && clutch[i].motor() > motorPrev[i];
     }
 
     /**

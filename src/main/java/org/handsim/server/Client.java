@@ -86,17 +86,21 @@ public final class Client {
         String why = null;
         String identity = null;
         if (eligible(args)) {
+            Opener opener = new Opener();
+            opener.start();
             why = notServable(args);
             if (why != null) {
                 served = Outcome.HERE;
+                opener.discard();
             } else {
                 try {
                     identity = identity();   // before the command runs: it sets system properties of its own
-                    Connection c = connect(identity, args);
+                    Connection c = connect(identity, args, opener);
                     served = c.outcome;
                     why = c.reason;
                     if (served == Outcome.ACCEPTED) System.exit(c.stream());
                 } catch (IOException | RuntimeException e) {
+                    opener.discard();
                     served = Outcome.FAILED;
                     why = String.valueOf(e);
                 }
@@ -354,10 +358,18 @@ public final class Client {
 
     /** Connects to the server of this client's identity and asks it to run {@code args}. */
     static Connection connect(String identity, String[] args) throws IOException {
+        Opener opener = new Opener();
+        opener.start();
+        return connect(identity, args, opener);
+    }
+
+    /** {@link #connect(String, String[])} on the channel that {@code opener} opens (discarded when there is no server). */
+    static Connection connect(String identity, String[] args, Opener opener) throws IOException {
         Connection c = new Connection();
         Path dir = folder();
         String unsafe = dir == null ? "no cache folder" : unsafe(dir, true);
         if (unsafe != null) {
+            opener.discard();
             c.outcome = Outcome.REFUSED;
             c.reason = unsafe;
             return c;
@@ -365,10 +377,11 @@ public final class Client {
         String key = key(identity);
         Path socket = socketFile(dir, key);
         if (!Files.exists(socket, LinkOption.NOFOLLOW_LINKS)) {
+            opener.discard();
             c.outcome = Outcome.NO_SERVER;
             return c;
         }
-        SocketChannel ch = openChannel();
+        SocketChannel ch = opener.channel();
         Watchdog dog = new Watchdog(ch, answerMs());
         try {
             try {
@@ -417,6 +430,77 @@ public final class Client {
             return c;
         } finally {
             dog.disarm();
+        }
+    }
+
+    /**
+     * Opens the client's socket channel on a thread of its own while the main thread checks the
+     * arguments and works out the identity: the JDK's first Unix-domain channel sets up its
+     * selector provider, the security providers (for its random names) and its lambdas, some
+     * tens of milliseconds of interpreted code that need not wait for the rest. An inner class,
+     * not a lambda: the client's start-up spins no lambda classes of its own.
+     */
+    static final class Opener extends Thread {
+        private SocketChannel channel;
+        private IOException failure;
+        private boolean discarded;
+
+        Opener() {
+            super("handsim-client-open");
+            setDaemon(true);
+        }
+
+        @Override
+        public void run() {
+            SocketChannel ch = null;
+            IOException f = null;
+            try {
+                ch = openChannel();
+            } catch (IOException e) {
+                f = e;
+            } catch (RuntimeException e) {
+                f = new IOException(e);
+            }
+            synchronized (this) {
+                channel = ch;
+                failure = f;
+                if (!discarded) return;
+            }
+            close(ch);
+        }
+
+        /** The opened channel, once it is open. */
+        SocketChannel channel() throws IOException {
+            try {
+                join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while opening the socket", e);
+            }
+            synchronized (this) {
+                if (failure != null) throw failure;
+                return channel;
+            }
+        }
+
+        /** No channel is wanted: it is closed when open (this thread does not wait for it). */
+        void discard() {
+            SocketChannel ch;
+            synchronized (this) {
+                discarded = true;
+                ch = channel;
+                channel = null;
+            }
+            close(ch);
+        }
+
+        private static void close(SocketChannel ch) {
+            if (ch == null) return;
+            try {
+                ch.close();
+            } catch (IOException e) {
+                // nothing was sent on it
+            }
         }
     }
 
