@@ -25,11 +25,14 @@ import org.handsim.trace.Recorder;
  * dispatch thread only.
  */
 final class ObjectReadout {
-    /** The rows of the box: each a label and the keys of {@link #values} it shows, joined by " / ". */
+    /**
+     * The rows of the box under the status line: each a label and the keys of {@link #values} it
+     * shows, side by side (narrow enough for the panel at the window's smallest size).
+     */
     private static final String[][] ROWS = {
-        {"status", "status"},
         {"obj_x/y/z_m", "obj_x_m", "obj_y_m", "obj_z_m"},
-        {"obj_qw/qx/qy/qz", "obj_qw", "obj_qx", "obj_qy", "obj_qz"},
+        {"obj_qw/qx", "obj_qw", "obj_qx"},
+        {"obj_qy/qz", "obj_qy", "obj_qz"},
         {"obj_disp_m", "obj_disp_m"},
         {"obj_rot_deg", "obj_rot_deg"},
         {"obj_speed_m_s", "obj_speed_m_s"},
@@ -38,23 +41,32 @@ final class ObjectReadout {
         {"obj_penetration_m", "obj_penetration_m"},
         {"max_displacement_m", "max_displacement_m"},
         {"max_rotation_deg", "max_rotation_deg"},
-        {"released/slipped/dropped_at_s", "released_at_s", "slipped_at_s", "dropped_at_s"},
+        {"released_at_s", "released_at_s"},
+        {"slipped_at_s", "slipped_at_s"},
+        {"dropped_at_s", "dropped_at_s"},
     };
 
     private final JPanel box = Widgets.titled(new JPanel(new GridBagLayout()), "Free object (live): trace.csv / summary.json");
     private final JLabel[] values = new JLabel[ROWS.length];
+    private final JLabel status = new JLabel("–");
     private Map<String, String> shown = Map.of();
 
     ObjectReadout() {
         box.setName("dyn.object");
+        status.setName("dyn.object.status");
+        status.setFont(Widgets.small().deriveFont(java.awt.Font.BOLD));
+        box.add(status, Widgets.at(0, 0, 2));
         for (int r = 0; r < ROWS.length; r++) {
             JLabel l = new JLabel(ROWS[r][0]);
             l.setFont(Widgets.small());
-            box.add(l, Widgets.at(0, r));
+            java.awt.GridBagConstraints at = Widgets.at(0, r + 1);
+            at.weightx = 0;   // the labels as wide as the widest, the figures the rest
+            box.add(l, at);
             values[r] = new JLabel("–");
             values[r].setName("dyn.object." + ROWS[r][1]);
-            values[r].setFont(Widgets.small().deriveFont(java.awt.Font.BOLD));
-            box.add(values[r], Widgets.at(1, r));
+            // several figures in one row: plain, to fit; one: bold, as the Grasp box's
+            values[r].setFont(ROWS[r].length > 2 ? Widgets.small() : Widgets.small().deriveFont(java.awt.Font.BOLD));
+            box.add(values[r], Widgets.at(1, r + 1));
         }
         box.setVisible(false);
     }
@@ -70,10 +82,12 @@ final class ObjectReadout {
             return;
         }
         shown = values(o);
+        status.setText(shown.get("status"));
         for (int r = 0; r < ROWS.length; r++) {
             StringBuilder sb = new StringBuilder();
-            for (int i = 1; i < ROWS[r].length; i++) sb.append(i > 1 ? " / " : "").append(shown.get(ROWS[r][i]));
+            for (int i = 1; i < ROWS[r].length; i++) sb.append(i > 1 ? " " : "").append(shown.get(ROWS[r][i]));
             values[r].setText(sb.toString());
+            values[r].setToolTipText(sb.toString());
         }
     }
 

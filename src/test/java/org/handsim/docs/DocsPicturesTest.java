@@ -113,6 +113,45 @@ class DocsPicturesTest {
     }
 
     /**
+     * The lift in the window (docs/lift/mug-lift-window.png): the time shown and every figure of
+     * the Dynamics panel's Free object box against the mug lift replayed without a window to
+     * that time — trace.csv's object columns ({@link HandModel#objectNow}), the largest
+     * displacement and rotation and the release, slip and drop times, each at the precision shown.
+     */
+    @Test
+    @Tag("slow")   // 5 300 steps of the lift, 1 300 of them free: ./test --all
+    void theLiftPictureShowsTheMugsStateAtItsTime() throws Exception {
+        String picture = "docs/lift/mug-lift-window.png";
+        List<String> lines = committed(picture);
+        Matcher t = Pattern.compile("t = ([0-9.]+) s").matcher(only(lines, "state: "));
+        assertTrue(t.find(), lines.toString());
+        double time = Double.parseDouble(t.group(1));
+        HandModel m = Simulation.model(Scenario.load(TestPaths.root().resolve("scenarios/mug-lift.json")), false);
+        while (m.running() && m.time() < time - 1e-9) m.step();
+        assertShown(t.group(1), m.time(), picture + " time");
+        Map<String, Double> model = new LinkedHashMap<>();
+        double[] now = m.objectNow();
+        for (int c = 0; c < now.length; c++) model.put(org.handsim.trace.Recorder.OBJECT_COLUMNS[c], now[c]);
+        model.put("max_displacement_m", m.objectMaxDisplacement());
+        model.put("max_rotation_deg", m.objectMaxRotation());
+        model.put("released_at_s", m.objectReleasedAt());
+        model.put("slipped_at_s", m.objectSlippedAt());
+        model.put("dropped_at_s", m.objectDroppedAt());
+        int compared = 0;
+        for (String l : lines) {
+            if (!l.startsWith("object: ") || l.startsWith("object: status=")) continue;
+            String[] kv = l.substring("object: ".length()).split("=", 2);
+            Double v = model.get(kv[0]);
+            assertTrue(v != null, picture + ": " + l);
+            if (kv[1].equals("–")) assertTrue(Double.isNaN(v), picture + ": " + l + " but the model has " + v);
+            else assertShown(kv[1], v, picture + ": " + l);
+            compared++;
+        }
+        assertEquals(model.size(), compared, "every figure of the Free object box: " + lines);
+        assertTrue(m.objectReleased() && only(lines, "object: status=").contains("free since t = 4.7000 s"), lines.toString());
+    }
+
+    /**
      * The window's log lines of a screenshot (state, Dynamics table, live grasp) against the
      * same scene replayed without a window to the time shown.
      */
