@@ -24,7 +24,8 @@ import java.util.stream.Stream;
  * <p>The number of JVMs is {@code -Dhandsim.testForks} (build.gradle sets it for the quick
  * {@code ./test}, at most the number of cores); with 1 this is the console launcher itself. Classes
  * are dealt longest first to the least loaded JVM (LPT), by the wall times of the last run
- * ({@code handsim.testTimes}; a class it lacks counts as the median). Each JVM writes its XML
+ * ({@code handsim.testTimes}, or the copy the last run in several JVMs kept of it, which a run of
+ * a few classes does not overwrite; a class it lacks counts as the median). Each JVM writes its XML
  * report to {@code <reports-dir>/fork-K/} and its times to {@code <testTimes>.K}, which are then
  * joined into the one file {@code tools/test-profile} reads.
  */
@@ -95,7 +96,13 @@ public final class ForkedLauncher {
             int code = p.waitFor();
             if (status == 0) status = code;
         }
-        if (times != null) joinTimes(Path.of(times), shares.size());
+        if (times != null) {
+            joinTimes(Path.of(times), shares.size());
+            // the weights of the next quick run: a run of a few classes (-Ptests, one JVM) rewrites
+            // the times file, and would leave every other class at the median
+            Path all = Path.of(times);
+            if (Files.isRegularFile(all)) Files.copy(all, quickTimes(all), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
         // the balance of the shares and what they cost: an idle JVM while the other runs on is wall time lost
         StringBuilder walls = new StringBuilder();
         for (java.util.concurrent.CompletableFuture<Long> e : ended) {
@@ -136,13 +143,22 @@ public final class ForkedLauncher {
         return new ArrayList<>(out);
     }
 
-    /** Each class's wall time in the last run, from {@code handsim.testTimes}. */
+    /** Where a run in several JVMs keeps a copy of its times: {@code test-times.csv} -> {@code test-times.quick.csv}. */
+    static Path quickTimes(Path times) {
+        String name = times.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return times.resolveSibling(dot < 0 ? name + ".quick" : name.substring(0, dot) + ".quick" + name.substring(dot));
+    }
+
+    /** Each class's wall time in the last run in several JVMs, or else in the last run, from {@code handsim.testTimes}. */
     static Map<String, Double> lastTimes() {
         Map<String, Double> m = new HashMap<>();
         String times = System.getProperty("handsim.testTimes");
-        if (times == null || !Files.isRegularFile(Path.of(times))) return m;
+        if (times == null) return m;
+        Path file = Files.isRegularFile(quickTimes(Path.of(times))) ? quickTimes(Path.of(times)) : Path.of(times);
+        if (!Files.isRegularFile(file)) return m;
         try {
-            List<String> lines = Files.readAllLines(Path.of(times), StandardCharsets.UTF_8);
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
             for (String l : lines.subList(Math.min(1, lines.size()), lines.size())) {
                 String[] f = l.split(",");
                 if (f.length < 2) continue;
