@@ -21,7 +21,7 @@ import org.handsim.mesh.TriangleMesh;
  * ({@link NearPairs#clearance()}; the motion bounded by |ΔR·c + Δt| + ‖ΔR‖_F·ρ, c and ρ the
  * centre and radius of the object's vertices' bounding sphere): every pair now within δ was
  * then within the clearance, so it is in the list (temporal coherence: an object held in the
- * hand or resting on a table walks the trees once in many steps, which was 40 % of its step).
+ * hand or resting on a table walks the trees once in many steps: walking them every step costs 40 % of a step).
  * The features below are tested at the current pose.
  *
  * <p><b>Features</b> (the closest features of two disjoint convex pieces are a vertex and a face,

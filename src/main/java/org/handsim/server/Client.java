@@ -512,7 +512,7 @@ public final class Client {
     /**
      * A Unix-domain socket channel, its provider named first when nothing else names one. Without
      * a name the JDK looks for a provider as a service: it opens every jar of the class path and
-     * reads its directory (some 6 900 entries in ours), which was a sixth of a served command's
+     * reads its directory (some 6 900 entries in ours), a sixth of a served command's
      * client processor time (perf's task-clock over alternating runs: 134 → 108 ms). The name is
      * that of the provider the JDK uses on Linux anyway, set only if this JDK has it with a
      * public constructor; a JDK that still cannot make it fails here with an error, and the
