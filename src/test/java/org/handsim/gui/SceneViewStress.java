@@ -11,13 +11,14 @@ import org.handsim.math.RigidTransform;
 import org.jogamp.java3d.GeometryArray;
 
 /**
- * A child JVM's program for {@link SceneViewRaceTest}: opens a {@link SceneView} in a frame,
- * turns the friction cones on and shows poses with contacts as fast as the event dispatch
- * thread can, {@code args[0]} times, in batches with a short pause between them so that
- * Java3D's threads consume the scene graph's messages while the next batch is written. Prints
- * {@code stress: N poses shown, E exceptions on Java3D threads} and halts with exit code 0 when
- * no thread's exception reached the top, 1 otherwise (halts: a Java3D thread that died would
- * keep {@code SimpleUniverse.cleanup()} waiting for ever).
+ * A child JVM's program for {@link SceneViewLinesTest}: opens a {@link SceneView} in a frame,
+ * turns the friction cones on and shows {@code args[0]} poses with contacts, one per call on the
+ * event dispatch thread, each after a random pause of up to {@code args[1]} ns (seeded), so that
+ * Java3D's threads handle the scene graph's messages while the next pose is written. Prints
+ * {@code stress: N poses shown, E exceptions on Java3D threads, W of G geometry arrays written
+ * while live} (G: the view's geometry arrays, {@link #geometryArrays}; W: those a write reached
+ * while live, {@link Java3dMessages}) and halts with exit code 0 when E and W are 0, 1 otherwise
+ * (halts: a Java3D thread that died would keep {@code SimpleUniverse.cleanup()} waiting for ever).
  */
 final class SceneViewStress {
     private SceneViewStress() {}
