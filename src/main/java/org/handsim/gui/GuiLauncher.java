@@ -14,7 +14,8 @@ import org.handsim.scenario.Scenario;
  * Opens the window and, in scripted mode, drives it and closes it: the part of
  * {@code handsim gui} below the command line.
  *
- * <p>Interactive: the window stays until the user closes it (exit code 0). Scripted (a script,
+ * <p>Interactive: the window stays until the user closes it (exit code 0; 1 when it then does
+ * not close in time). Scripted (a script,
  * {@code --screenshot} or {@code --measure-fps}): waits for the first rendered frame, runs the
  * script, takes the screenshot, measures, closes the window and returns the exit code: 0 when
  * everything worked and no exception reached the event dispatch thread or any other thread's
@@ -25,7 +26,8 @@ import org.handsim.scenario.Scenario;
  * Leaving goes through {@link X11Exit}: no native abort when the X server goes away, no X11Util
  * lines at the JVM's exit. Leaving is bounded: a window that does not close within
  * {@link #CLOSE_TIMEOUT_MS} (Java3D's threads stuck) is left behind with a line on the error
- * stream, and the JVM ends with the run's exit code within {@link #EXIT_GRACE_MS} more.
+ * stream, the run fails (exit code 1 unless it had failed already), and the JVM ends with that
+ * code within {@link #EXIT_GRACE_MS} more.
  */
 public final class GuiLauncher {
     private GuiLauncher() {}
@@ -109,8 +111,8 @@ public final class GuiLauncher {
             if (!w.awaitClosed(CLOSE_TIMEOUT_MS)) {
                 err.println("handsim gui: " + notClosed(CLOSE_TIMEOUT_MS));
                 err.flush();
-                haltAfter(0, EXIT_GRACE_MS);
-                return 0;
+                haltAfter(1, EXIT_GRACE_MS);
+                return 1;
             }
             closeDisplays(err);
             return 0;
@@ -136,6 +138,9 @@ public final class GuiLauncher {
             err.println("handsim gui: the event dispatch thread did not answer within " + CLOSE_TIMEOUT_MS / 1000 + " s");
             if (code == 0) code = 1;
         }
+        // closed before the count: an exception while closing counts, and so does a window that does not close
+        boolean closed = close(w::dispose, CLOSE_TIMEOUT_MS, err);
+        if (!closed && code == 0) code = 1;
         List<String> uncaught = errors.entries();
         if (!uncaught.isEmpty()) {
             for (String e : uncaught) err.println("handsim gui: " + e);
@@ -143,7 +148,7 @@ public final class GuiLauncher {
         }
         out.println("gui: " + (code == 0 ? "done" : "failed (exit code " + code + ")") + ", " + uncaught.size() + " uncaught exceptions");
         out.flush();
-        if (close(w::dispose, CLOSE_TIMEOUT_MS, err)) {
+        if (closed) {
             closeDisplays(err);
         } else {
             haltAfter(code, EXIT_GRACE_MS);
@@ -178,7 +183,8 @@ public final class GuiLauncher {
     }
 
     private static String notClosed(long timeoutMs) {
-        return "the window did not close within " + timeoutMs / 1000.0 + " s (Java3D's threads no longer answer): leaving without it";
+        String s = java.math.BigDecimal.valueOf(timeoutMs, 3).stripTrailingZeros().toPlainString();
+        return "the window did not close within " + s + " s (Java3D's threads no longer answer): leaving without it";
     }
 
     /**
