@@ -2,14 +2,9 @@ package org.handsim.gui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.concurrent.TimeUnit;
 import org.handsim.TestPaths;
 import org.handsim.cli.ChildJvm;
 import org.junit.jupiter.api.Tag;
@@ -37,27 +32,14 @@ class DeadJava3dThreadTest {
         try {
             Path script = dir.resolve("script.txt");
             Files.writeString(script, String.join("\n", "press Dynamics", "speed max", "play end", "log grasp", ""));
-            List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xss16m", "-Xmx1g", "-Dhandsim.home=" + TestPaths.root(), "-cp", System.getProperty("java.class.path"),
+            GuiWindowTest.Child c = GuiWindowTest.runOnDisplay(dir, LIMIT_S, "handsim gui after a Java3D thread died",
                 Java3dThreadDeath.class.getName(), "J3D-MasterControl",
-                "gui", TestPaths.root().resolve("scenarios/mug-grasp.json").toString(), "--script", script.toString()));
-            ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).directory(dir.toFile());
-            pb.environment().put("DISPLAY", GuiWindowTest.display());
-            String xauth = GuiWindowTest.xauthority();
-            if (xauth != null) pb.environment().put("XAUTHORITY", xauth);
-            Path log = dir.resolve("gui.log");
-            pb.redirectOutput(log.toFile());
-            Process p = pb.start();
-            if (!p.waitFor(LIMIT_S, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-                fail("handsim gui did not end within " + LIMIT_S + " s after a Java3D thread died; log:\n" + Files.readString(log));
-            }
-            String out = Files.readString(log, StandardCharsets.UTF_8);
-            System.out.println(out);
+                "gui", TestPaths.root().resolve("scenarios/mug-grasp.json").toString(), "--script", script.toString());
+            String out = c.log();
             assertTrue(out.contains("death: stopped J3D-MasterControl"), out);
             assertTrue(out.contains("handsim gui: uncaught exception on thread J3D-MasterControl-1: java.lang.ThreadDeath"), out);
             assertTrue(out.contains("gui: failed (exit code 1), 1 uncaught exceptions"), out);
-            assertEquals(1, p.exitValue(), out);
+            assertEquals(1, c.code(), out);
         } finally {
             ChildJvm.deleteTree(dir);
         }

@@ -103,6 +103,17 @@ class GuiWindowTest {
     record Child(int code, String log) {}
 
     static Child runGui(Path dir, String... args) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of("org.handsim.cli.HandSim", "gui"));
+        cmd.addAll(List.of(args));
+        return runOnDisplay(dir, TIMEOUT_MIN * 60, "handsim gui", cmd.toArray(new String[0]));
+    }
+
+    /**
+     * Runs {@code java MAIN ARGS} (the tests' class path, {@code handsim.home} the checkout) in
+     * {@code dir} on the current display; fails, naming {@code what} and showing the output, when
+     * it has not ended within {@code limitSeconds}.
+     */
+    static Child runOnDisplay(Path dir, long limitSeconds, String what, String... mainAndArgs) throws Exception {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         cmd.add("-Xss16m");
@@ -110,9 +121,7 @@ class GuiWindowTest {
         cmd.add("-Dhandsim.home=" + TestPaths.root());
         cmd.add("-cp");
         cmd.add(System.getProperty("java.class.path"));
-        cmd.add("org.handsim.cli.HandSim");
-        cmd.add("gui");
-        cmd.addAll(List.of(args));
+        cmd.addAll(List.of(mainAndArgs));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).directory(dir.toFile());
         pb.environment().put("DISPLAY", display());
         String xauth = xauthority();
@@ -120,12 +129,13 @@ class GuiWindowTest {
         Path logFile = dir.resolve("gui.log");
         pb.redirectOutput(logFile.toFile());
         Process p = pb.start();
-        if (!p.waitFor(TIMEOUT_MIN, TimeUnit.MINUTES)) {
+        if (!p.waitFor(limitSeconds, TimeUnit.SECONDS)) {
             p.destroyForcibly();
-            fail("handsim gui did not finish within " + TIMEOUT_MIN + " minutes; log:\n" + Files.readString(logFile));
+            String limit = limitSeconds % 60 == 0 ? limitSeconds / 60 + " minutes" : limitSeconds + " s";
+            fail(what + " did not finish within " + limit + "; log:\n" + Files.readString(logFile));
         }
         String log = Files.readString(logFile, StandardCharsets.UTF_8);
-        System.out.println("---- handsim gui log ----\n" + log + "-------------------------");
+        System.out.println("---- " + what + " log ----\n" + log + "-------------------------");
         return new Child(p.exitValue(), log);
     }
 
