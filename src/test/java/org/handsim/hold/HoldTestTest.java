@@ -220,4 +220,37 @@ public class HoldTestTest {
             ChildJvm.deleteTree(dir);
         }
     }
+
+    /**
+     * A creeping grasp whose clutch lets go later still fails: seed 101's fourth-best mug grasp
+     * (every clutch engaged) pushed along +x with 0.9 × the hold LP's load creeps by
+     * micrometres for over a second — under 0.1 mm at 1 s, slower than the creep test's bound
+     * could ever carry past 5 cm — then a clutch slips and the mug turns past 15°. The creep
+     * test judges such a push held unless its guards (no clutch slipping, none whose torque is
+     * on its way to τ_break, the creep not speeding up) stop it; here they must, and the push
+     * is simulated to its crossing.
+     */
+    @Test
+    @Tag("slow")   // a planner grasp closed and pushed for 1.5 s: seconds of CPU
+    void aCreepingGraspWhoseClutchLetsGoLaterStillFails() throws Exception {
+        Path dir = Files.createTempDirectory("hold-creep");
+        try {
+            Scenario s = planGrasp("plan-mug-s101-best04.json", dir);
+            org.handsim.model.SceneGeometry g = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K);
+            org.handsim.model.HandModel m = org.handsim.model.Simulation.model(s, g);
+            HoldReport.close(m);
+            org.handsim.grasp.GraspAssessment ga = org.handsim.grasp.GraspAssessment.of(m.graspInput(), s.friction(), 8);
+            HoldTest t = new HoldTest(LockedGrasp.of(m, g, ObjectMass.of(g.objectMesh(), Double.NaN, Double.NaN)), HoldSettings.defaults(58.84));
+            double l = ga.holdN()[0];    // +x
+            assertTrue(l > 5 && l < 58.84, "the LP's load is below the cap: " + l);
+            DirectionResult d = t.push("+x", HoldTest.unit(1), 0.9 * l, false);
+            assertFalse(d.passed(), "+x at 0.9 L: moved " + d.displacementM() + " m, turned " + d.rotationDeg() + " deg");
+            assertTrue(Double.isNaN(d.settledS()), "not ended by a settle or creep test: " + d.settledS());
+            assertTrue(d.failedAtS() > 1.0, "crept for over a second first: failed at " + d.failedAtS());
+            double[] ts = d.times(), ds = d.displacements();
+            for (int i = 0; i < ts.length && ts[i] <= 1.0; i++) assertTrue(ds[i] < 1e-4, "creeping at " + ts[i] + " s: " + ds[i] + " m");
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
 }
