@@ -4,6 +4,8 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import org.handsim.scenario.Scenario;
@@ -21,13 +23,25 @@ import org.handsim.scenario.Scenario;
  * <p>Both modes print {@code gui: first frame after N ms} — the time from the JVM's start
  * (i.e. from typing {@code handsim gui}, launcher excluded) to the first frame Java3D swapped.
  * Leaving goes through {@link X11Exit}: no native abort when the X server goes away, no X11Util
- * lines at the JVM's exit.
+ * lines at the JVM's exit. Leaving is bounded: a window that does not close within
+ * {@link #CLOSE_TIMEOUT_MS} (Java3D's threads stuck) is left behind with a line on the error
+ * stream, and the JVM ends with the run's exit code within {@link #EXIT_GRACE_MS} more.
  */
 public final class GuiLauncher {
     private GuiLauncher() {}
 
     /** How long to wait for the first rendered frame. */
     static final long FIRST_FRAME_TIMEOUT_MS = 120_000;
+    /**
+     * How long closing the window may take (and the event dispatch thread may take to run what
+     * is queued before it), ms: a few hundred ms when all is well, seconds on a loaded machine.
+     */
+    static final long CLOSE_TIMEOUT_MS = 10_000;
+    /**
+     * How long the JVM may take to exit once the window could not be closed, ms, before it is
+     * halted with the same exit code ({@link #haltAfter}).
+     */
+    static final long EXIT_GRACE_MS = 10_000;
 
     /**
      * What to do.
@@ -74,7 +88,7 @@ public final class GuiLauncher {
         if (w.view().framesRendered() == 0) {
             err.println("handsim gui: no frame was rendered within " + FIRST_FRAME_TIMEOUT_MS / 1000 + " s (OpenGL not working?)");
             if (o.scripted()) {
-                dispose(w);
+                if (!close(w::dispose, CLOSE_TIMEOUT_MS, err)) haltAfter(1, EXIT_GRACE_MS);
                 return 1;
             }
         } else {
@@ -91,7 +105,13 @@ public final class GuiLauncher {
                     err.println("handsim gui: --object " + o.object() + ": " + ScriptRunner.message(e));
                 }
             }
-            w.awaitClosed();
+            w.awaitClosing();
+            if (!w.awaitClosed(CLOSE_TIMEOUT_MS)) {
+                err.println("handsim gui: " + notClosed(CLOSE_TIMEOUT_MS));
+                err.flush();
+                haltAfter(0, EXIT_GRACE_MS);
+                return 0;
+            }
             closeDisplays(err);
             return 0;
         }
@@ -112,10 +132,9 @@ public final class GuiLauncher {
             code = 1;
         }
         // let queued events run so that their exceptions are counted
-        try {
-            ScriptRunner.edt(() -> null);
-        } catch (Exception ignored) {
-            // nothing queued can fail here
+        if (!onEdtWithin(() -> { }, CLOSE_TIMEOUT_MS)) {
+            err.println("handsim gui: the event dispatch thread did not answer within " + CLOSE_TIMEOUT_MS / 1000 + " s");
+            if (code == 0) code = 1;
         }
         List<String> uncaught = errors.entries();
         if (!uncaught.isEmpty()) {
@@ -124,8 +143,11 @@ public final class GuiLauncher {
         }
         out.println("gui: " + (code == 0 ? "done" : "failed (exit code " + code + ")") + ", " + uncaught.size() + " uncaught exceptions");
         out.flush();
-        dispose(w);
-        closeDisplays(err);
+        if (close(w::dispose, CLOSE_TIMEOUT_MS, err)) {
+            closeDisplays(err);
+        } else {
+            haltAfter(code, EXIT_GRACE_MS);
+        }
         return code;
     }
 
@@ -134,11 +156,70 @@ public final class GuiLauncher {
         if (X11Exit.closeDisplays() < 0) err.println("handsim gui: " + X11Exit.lastProblem());
     }
 
-    private static void dispose(HandSimWindow w) {
-        try {
-            ScriptRunner.edt(() -> { w.dispose(); return null; });
-        } catch (Exception ignored) {
-            // closing anyway
+    /**
+     * Runs {@code dispose} (closing the window: Java3D's {@code SimpleUniverse.cleanup()} among
+     * it) on the event dispatch thread and waits for it at most {@code timeoutMs}. Returns false,
+     * having said so on {@code err}, when it did not finish in time: a Java3D thread that died
+     * leaves the others waiting for it for ever, and the cleanup with them (the event dispatch
+     * thread stays blocked; the caller leaves without it, {@link #haltAfter}). An exception from
+     * {@code dispose} is reported on {@code err}; the window counts as closed.
+     */
+    static boolean close(Runnable dispose, long timeoutMs, PrintWriter err) throws InterruptedException {
+        boolean done = onEdtWithin(() -> {
+            try {
+                dispose.run();
+            } catch (RuntimeException e) {
+                err.println("handsim gui: closing the window: " + e);
+            }
+        }, timeoutMs);
+        if (!done) err.println("handsim gui: " + notClosed(timeoutMs));
+        err.flush();
+        return done;
+    }
+
+    private static String notClosed(long timeoutMs) {
+        return "the window did not close within " + timeoutMs / 1000.0 + " s (Java3D's threads no longer answer): leaving without it";
+    }
+
+    /**
+     * Runs {@code r} on the event dispatch thread (at once when called on it) and waits at most
+     * {@code timeoutMs} for it to finish; true when it did. Unlike {@code invokeAndWait}, a
+     * blocked event dispatch thread never blocks the caller for longer.
+     */
+    static boolean onEdtWithin(Runnable r, long timeoutMs) throws InterruptedException {
+        if (SwingUtilities.isEventDispatchThread()) {
+            r.run();
+            return true;
         }
+        CountDownLatch done = new CountDownLatch(1);
+        SwingUtilities.invokeLater(() -> {
+            try {
+                r.run();
+            } finally {
+                done.countDown();
+            }
+        });
+        return done.await(timeoutMs, TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Halts the JVM with {@code code} after {@code ms} unless it has ended by then (a daemon
+     * thread): called when the window could not be closed, before returning the exit code to the
+     * command line, whose {@code System.exit} runs JOGL's shutdown hook, which can wait for a
+     * thread that Java3D left blocked. {@code handsim gui}'s exit code is kept either way.
+     */
+    static void haltAfter(int code, long ms) {
+        Thread t = new Thread(() -> {
+            try {
+                Thread.sleep(ms);
+            } catch (InterruptedException e) {
+                return;
+            }
+            System.out.flush();
+            System.err.flush();
+            Runtime.getRuntime().halt(code);
+        }, "handsim-gui-exit-guard");
+        t.setDaemon(true);
+        t.start();
     }
 }

@@ -29,6 +29,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
 import javax.swing.AbstractButton;
 import javax.swing.BorderFactory;
@@ -119,7 +120,8 @@ public final class HandSimWindow {
     private final PathPlanningPanel pathPlanning;
     private final DynamicsPanel dynamics;
     private final ObjectsPanel objects;
-    private final CountDownLatch closed = new CountDownLatch(1);
+    private final CountDownLatch closing = new CountDownLatch(1), closed = new CountDownLatch(1);
+    private boolean shuttingDown;
     private final Map<String, AbstractButton> menuItems = new LinkedHashMap<>();
     private final KeyEventDispatcher keys = this::plainKey;
     private int ticks;
@@ -153,6 +155,11 @@ public final class HandSimWindow {
         frame = new JFrame("HandSim — BarrettHand simulator");
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                closing.countDown();
+            }
+
             @Override
             public void windowClosed(WindowEvent e) {
                 shutdown();
@@ -529,14 +536,29 @@ public final class HandSimWindow {
     /** Blocks until the window is closed (any thread but the EDT). */
     public void awaitClosed() throws InterruptedException { closed.await(); }
 
+    /**
+     * Blocks until the window has begun to close: the user asked to close it, or
+     * {@link #dispose()} began (any thread but the EDT).
+     */
+    public void awaitClosing() throws InterruptedException { closing.await(); }
+
+    /**
+     * Waits at most {@code ms} for the window to be closed (its simulation and rendering threads
+     * stopped); true when it is (any thread but the EDT).
+     */
+    public boolean awaitClosed(long ms) throws InterruptedException { return closed.await(ms, TimeUnit.MILLISECONDS); }
+
     /** Closes the window and stops the simulation and rendering threads. */
     public void dispose() {
+        closing.countDown();
         frame.dispose();
         shutdown();
     }
 
     private void shutdown() {
-        if (closed.getCount() == 0) return;
+        if (shuttingDown) return;   // a second call while the first is still under way (windowClosed during dispose)
+        shuttingDown = true;
+        closing.countDown();
         KeyboardFocusManager.getCurrentKeyboardFocusManager().removeKeyEventDispatcher(keys);
         sim.dispose();
         charts.close();

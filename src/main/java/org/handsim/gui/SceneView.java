@@ -55,9 +55,9 @@ import org.jogamp.vecmath.Vector3f;
  *          │   ├─ TransformGroup palm        ← world ← palm          (palm mesh, floor grid)
  *          │   └─ TransformGroup link[k][j]  ← frame {kj} in the world (link j mesh)
  *          ├─ Switch object  └─ TransformGroup object ← world ← object · scale (a free object: its pose each frame)
- *          ├─ Switch contacts (per-child mask)  spheres at the contact points, one LineArray
+ *          ├─ Switch contacts (per-child mask)  spheres at the contact points, one set of lines
  *          │                                   of normals (outward, 35 mm), drawn over the scene
- *          ├─ Switch cones    one LineArray: each contact's linearised friction cone, in its
+ *          ├─ Switch cones    one set of lines: each contact's linearised friction cone, in its
  *          │                  finger's colour, drawn over the scene (View ▸ Friction cones)
  *          └─ Switch markers  the inverse-kinematics target and its closest reachable point
  * </pre>
@@ -68,9 +68,11 @@ import org.jogamp.vecmath.Vector3f;
  *
  * <h2>Threads</h2>
  * Only the event dispatch thread changes the scene graph ({@link #show}, {@link #setObject},
- * {@link #setVisible}); Java3D renders on its own threads. {@link #measureFps} blocks and must
- * not be called on the event dispatch thread. The frame counters are updated by the renderer
- * ({@link Canvas3D#postSwap()}) and read from any thread.
+ * {@link #setVisible}); Java3D renders on its own threads. The lines that change with every
+ * pose (normals, cones) are written only into geometry that is not live and then swapped in
+ * ({@link DoubleBufferedLines} says why: Java3D's threads can die on writes to live geometry).
+ * {@link #measureFps} blocks and must not be called on the event dispatch thread. The frame
+ * counters are updated by the renderer ({@link Canvas3D#postSwap()}) and read from any thread.
  */
 public final class SceneView {
     /**
@@ -100,14 +102,14 @@ public final class SceneView {
     private final TransformGroup objectTg = writable(new TransformGroup());
     private final Switch handSwitch = switchNode(), objectSwitch = switchNode(), contactSwitch = switchNode(), markerSwitch = switchNode();
     private final Switch coneSwitch = switchNode();
-    private final LineArray cones = new LineArray(4 * MAX_CONE_EDGES * MAX_CONTACTS, GeometryArray.COORDINATES | GeometryArray.COLOR_3);
+    private final DoubleBufferedLines cones;
     private final float[] coneCoords = new float[12 * MAX_CONE_EDGES * MAX_CONTACTS];
     private final float[] coneColours = new float[12 * MAX_CONE_EDGES * MAX_CONTACTS];
     private final double[] coneEdges = new double[3 * MAX_CONE_EDGES];
     private double coneMu = FrictionCone.DEFAULT_MU;
     private int coneEdgeCount = FrictionCone.DEFAULT_EDGES;
     private final TransformGroup[] contactTg = new TransformGroup[MAX_CONTACTS];
-    private final LineArray normals = new LineArray(2 * MAX_CONTACTS, GeometryArray.COORDINATES);
+    private final DoubleBufferedLines normals;
     private final float[] normalCoords = new float[6 * MAX_CONTACTS];
     private final TransformGroup targetTg = writable(new TransformGroup()), closestTg = writable(new TransformGroup());
     private final SpinBehavior spin = new SpinBehavior();
@@ -212,27 +214,22 @@ public final class SceneView {
             contactTg[i].addChild(new Sphere(0.0045f, Sphere.GENERATE_NORMALS, 12, dot));
             contactSwitch.addChild(contactTg[i]);
         }
-        normals.setCapability(GeometryArray.ALLOW_COORDINATE_WRITE);
-        normals.setCapability(GeometryArray.ALLOW_COUNT_WRITE);
-        normals.setValidVertexCount(2);
         Appearance lineLook = new Appearance();
         lineLook.setColoringAttributes(new ColoringAttributes(new Color3f(0.2f, 1f, 0.4f), ColoringAttributes.FASTEST));
         lineLook.setLineAttributes(new LineAttributes(3f, LineAttributes.PATTERN_SOLID, true));
         onTop(lineLook);
-        contactSwitch.addChild(new Shape3D(normals, lineLook));
+        normals = new DoubleBufferedLines(2 * MAX_CONTACTS, GeometryArray.COORDINATES, lineLook);
+        contactSwitch.addChild(normals.shape());
         contactSwitch.setWhichChild(Switch.CHILD_MASK);
         contactSwitch.setChildMask(new BitSet());
         spinTg.addChild(contactSwitch);
 
         // friction cones: per-vertex colours (the finger's), over the scene like the normals
-        cones.setCapability(GeometryArray.ALLOW_COORDINATE_WRITE);
-        cones.setCapability(GeometryArray.ALLOW_COLOR_WRITE);
-        cones.setCapability(GeometryArray.ALLOW_COUNT_WRITE);
-        cones.setValidVertexCount(2);
         Appearance coneLook = new Appearance();
         coneLook.setLineAttributes(new LineAttributes(2f, LineAttributes.PATTERN_SOLID, true));
         onTop(coneLook);
-        coneSwitch.addChild(new Shape3D(cones, coneLook));
+        cones = new DoubleBufferedLines(4 * MAX_CONE_EDGES * MAX_CONTACTS, GeometryArray.COORDINATES | GeometryArray.COLOR_3, coneLook);
+        coneSwitch.addChild(cones.shape());
         coneSwitch.setWhichChild(Switch.CHILD_NONE);
         spinTg.addChild(coneSwitch);
 
@@ -303,8 +300,10 @@ public final class SceneView {
             }
         }
         if (n > 0) {
-            normals.setCoordinates(0, normalCoords, 0, 2 * n);
-            normals.setValidVertexCount(2 * n);
+            LineArray g = normals.spare();
+            g.setCoordinates(0, normalCoords, 0, 2 * n);
+            g.setValidVertexCount(2 * n);
+            normals.swap();
             if (showNormals) mask.set(MAX_CONTACTS);
         }
         contactSwitch.setChildMask(showContacts ? mask : new BitSet());
@@ -354,9 +353,11 @@ public final class SceneView {
             }
         }
         if (v == 0) return 0;
-        cones.setCoordinates(0, coneCoords, 0, v);
-        cones.setColors(0, coneColours, 0, v);
-        cones.setValidVertexCount(v);
+        LineArray g = cones.spare();
+        g.setCoordinates(0, coneCoords, 0, v);
+        g.setColors(0, coneColours, 0, v);
+        g.setValidVertexCount(v);
+        cones.swap();
         return v / 2;
     }
 
