@@ -60,6 +60,15 @@ import org.handsim.model.SceneGeometry;
  *       ({@link DirectionResult#settledS}, the bounds). A held object creeps at a few µm/s and
  *       hundredths of a mrad/s here (the contact solver's regularised friction), so this is
  *       where most held pushes end, some 0.1 s in.</li>
+ *   <li><i>Creeping</i>: a held push whose object never gets that still — it creeps at
+ *       1–2 × 10⁻⁵ m/s for the whole 2 s, a link's contact sliding under its press — is judged
+ *       from {@link #CREEP_AFTER_S} on, window by window, with the same bound taken at the
+ *       window's own largest speed and spin, but only while nothing says the creep will grow:
+ *       neither is above the last window's, no clutch slipped in the window, and every engaged
+ *       clutch's torque, its rise over the window carried on to the push's end, stays within
+ *       τ_break. A clutch that lets go is how a creeping grasp fails after all (two of the
+ *       LP-consistency pushes creep by micrometres for a second, then a clutch slips and they
+ *       turn 15°); without those guards the rule called them held.</li>
  *   <li><i>Verdict only</i> ({@link #push(int, boolean)} with {@code verdictOnly}): a failed
  *       direction stops at the step that crosses a threshold (the planner's rows need only the
  *       verdict and the margin, which do not depend on what comes after).</li>
@@ -78,6 +87,10 @@ public final class HoldTest {
     public static final double REST_SPIN_RAD_S = 1e-3;
     /** How long the rest test waits, s. */
     public static final double REST_WINDOW_S = 0.05;
+    /** When the creep test starts to judge a push that has not come to rest, s into it. */
+    public static final double CREEP_AFTER_S = 0.5;
+    /** The creep test's largest ratio of a window's speed or spin to the last window's: 1, not speeding up at all. */
+    public static final double CREEP_GROWTH = 1;
     /** Interval of the samples kept for the chart and the CSV, s. */
     public static final double SAMPLE_S = 0.01;
 
@@ -254,6 +267,12 @@ public final class HoldTest {
         double boundD, boundR, forceAtCrossing = Double.NaN, forceAtRest, simulated;
         boolean free, settling, slow;
         final double[] x0 = new double[3], q0 = new double[4];
+        // the creep test's current window: largest speed, spin and clutch torques, the clutch torques at its start
+        double winV, winW, lastWinV = -1, lastWinW = -1;
+        boolean winSlip;
+        final double[] winTau = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,
+            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        final double[] winStartTau = {Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN}, lastTau = new double[6];
 
         Run(double[] u, double f, double rate, double dispThr, double rotThr, boolean stopAtCrossing) {
             this.u = u;
@@ -361,16 +380,71 @@ public final class HoldTest {
                         // constant acceleration at most twice the window's speed limit over the window
                         double bd = restV * left + restV / REST_WINDOW_S * left * left, br = restW * left + restW / REST_WINDOW_S * left * left;
                         if (maxD + bd < dispThr && maxR + br < rotThr) {
-                            settledAt = t;
-                            boundD = bd;
-                            boundR = br;
-                            for (long j = i + 1; j <= n; j++) if (j % every == 0 || j == n) sample(time(j));
+                            settle(i, n, t, bd, br);
                             break;
                         }
                     }
+                    if (!settling && creeping(i, n, t)) break;
                 }
             }
             simulated = time(i);
+        }
+
+        /** Ends the push at step i of n (time t) as held, what is left bounded by bd (m) and br (rad). */
+        private void settle(long i, long n, double t, double bd, double br) {
+            settledAt = t;
+            boundD = bd;
+            boundR = br;
+            for (long j = i + 1; j <= n; j++) if (j % every == 0 || j == n) sample(time(j));
+        }
+
+        /**
+         * The creep test, from {@link #CREEP_AFTER_S} into a push that the rest test has not
+         * ended, window by window ({@link #REST_WINDOW_S}, back to back): the window's own largest
+         * speed v and spin ω bound what is left as the rest test's bound does (v·t + (v/W)·t²),
+         * provided the object is not speeding up (neither is above {@link #CREEP_GROWTH}× the
+         * last window's), no clutch is slipping, and every engaged clutch's torque, its largest in
+         * the window raised by its rise over the window for every window left, stays below
+         * τ_break: a clutch that lets go later is what makes a creeping grasp fail after all. True
+         * when the push ends here, held.
+         */
+        private boolean creeping(long i, long n, double t) {
+            double speed = norm(v), spin = norm(w);
+            winV = Math.max(winV, speed);
+            winW = Math.max(winW, spin);
+            for (int j = 0; j < 6; j++) {
+                if (!jointSlips[j]) continue;
+                if (slipping[j]) winSlip = true;
+                double carried = pressNow[j] + scene.jointWormTorque(j, h);
+                if (winStartTau[j] != winStartTau[j]) winStartTau[j] = carried;
+                winTau[j] = Math.max(winTau[j], carried);
+                lastTau[j] = carried;
+            }
+            long windowSteps = Math.max(1, Math.round(REST_WINDOW_S / h));
+            if (i % windowSteps != 0) return false;
+            boolean ended = false;
+            if (t >= CREEP_AFTER_S - 1e-12 && i < n && Double.isNaN(crossedAt) && !winSlip && lastWinV >= 0
+                && winV <= CREEP_GROWTH * lastWinV && winW <= CREEP_GROWTH * lastWinW) {
+                double left = (n - i) * h, windows = left / REST_WINDOW_S;
+                boolean torqueOk = true;
+                for (int j = 0; j < 6; j++) {
+                    if (!jointSlips[j] || winStartTau[j] != winStartTau[j]) continue;
+                    double rise = Math.max(0, lastTau[j] - winStartTau[j]);
+                    if (!(winTau[j] + rise * windows <= grasp.tauBreak())) torqueOk = false;
+                }
+                double bd = winV * left + winV / REST_WINDOW_S * left * left, br = winW * left + winW / REST_WINDOW_S * left * left;
+                if (torqueOk && maxD + bd < dispThr && maxR + br < rotThr) {
+                    settle(i, n, t, bd, br);
+                    ended = true;
+                }
+            }
+            lastWinV = winV;
+            lastWinW = winW;
+            winV = winW = 0;
+            winSlip = false;
+            Arrays.fill(winTau, Double.NEGATIVE_INFINITY);
+            Arrays.fill(winStartTau, Double.NaN);
+            return ended;
         }
 
         /** Step i's time, s, to the nanosecond (i·h without its rounding noise in the outputs). */

@@ -200,17 +200,13 @@ public class HoldTestTest {
     void theRampGivesWayNearTheHoldLpsLoadWhereAnEngagedClutchIsTheLimit() throws Exception {
         Path dir = Files.createTempDirectory("hold-lp");
         try {
-            Scenario s = planGrasp("plan-mug-s101-best01.json", dir);
-            org.handsim.model.SceneGeometry g = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K);
-            org.handsim.model.HandModel m = org.handsim.model.Simulation.model(s, g);
-            HoldReport.close(m);
-            assertTrue(m.clutchEngaged(1) && m.clutchEngaged(2), "fingers 1 and 2 stalled with their clutches engaged");
-            org.handsim.grasp.GraspAssessment ga = org.handsim.grasp.GraspAssessment.of(m.graspInput(), s.friction(), 8);
-            HoldTest t = new HoldTest(LockedGrasp.of(m, g, ObjectMass.of(g.objectMesh(), Double.NaN, Double.NaN)), HoldSettings.defaults(58.84));
+            Closed c = Closed.of(planGrasp("plan-mug-s101-best01.json", dir));
+            assertTrue(c.model().clutchEngaged(1) && c.model().clutchEngaged(2), "fingers 1 and 2 stalled with their clutches engaged");
+            HoldTest t = c.test();
             int[] dirs = {1, 2};   // +x, −y in DIRECTIONS' order
             int[] lp = {0, 3};     // holdN's order: +x, −x, +y, −y, +z, −z
             for (int i = 0; i < 2; i++) {
-                double l = ga.holdN()[lp[i]];
+                double l = c.holdN()[lp[i]];
                 assertTrue(l > 5 && l < 58.84, "the LP's load is below the cap: " + l);
                 RampResult r = t.ramp(HoldTest.DIRECTIONS.get(dirs[i]), HoldTest.unit(dirs[i]));
                 assertFalse(r.heldAtMax(), HoldTest.DIRECTIONS.get(dirs[i]));
@@ -218,6 +214,51 @@ public class HoldTestTest {
             }
         } finally {
             ChildJvm.deleteTree(dir);
+        }
+    }
+
+    /**
+     * A creeping grasp whose clutch lets go later still fails: seed 101's fourth-best mug grasp
+     * (every clutch engaged) pushed along +x with 0.9 × the hold LP's load creeps by
+     * micrometres for over a second — under 0.1 mm at 1 s, slower than the creep test's bound
+     * could ever carry past 5 cm — then a clutch slips and the mug turns past 15°. The creep
+     * test judges such a push held unless its guards (no clutch slipping, none whose torque is
+     * on its way to τ_break, the creep not speeding up) stop it; here they must, and the push
+     * is simulated to its crossing.
+     */
+    @Test
+    @Tag("slow")   // a planner grasp closed and pushed for 1.5 s: seconds of CPU
+    void aCreepingGraspWhoseClutchLetsGoLaterStillFails() throws Exception {
+        Path dir = Files.createTempDirectory("hold-creep");
+        try {
+            Closed c = Closed.of(planGrasp("plan-mug-s101-best04.json", dir));
+            HoldTest t = c.test();
+            double l = c.holdN()[0];    // +x
+            assertTrue(l > 5 && l < 58.84, "the LP's load is below the cap: " + l);
+            DirectionResult d = t.push("+x", HoldTest.unit(1), 0.9 * l, false);
+            assertFalse(d.passed(), "+x at 0.9 L: moved " + d.displacementM() + " m, turned " + d.rotationDeg() + " deg");
+            assertTrue(Double.isNaN(d.settledS()), "not ended by a settle or creep test: " + d.settledS());
+            assertTrue(d.failedAtS() > 1.0, "crept for over a second first: failed at " + d.failedAtS());
+            double[] ts = d.times(), ds = d.displacements();
+            for (int i = 0; i < ts.length && ts[i] <= 1.0; i++) assertTrue(ds[i] < 1e-4, "creeping at " + ts[i] + " s: " + ds[i] + " m");
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
+    /**
+     * A planner grasp closed on its fixed object, its hold LP's loads (8-edge cones, the
+     * scenario's μ; order +x, −x, +y, −y, +z, −z) and the hold test on it (the mesh's mass at
+     * 1000 kg/m³, the default push settings, the hand's rating as the ramp's cap).
+     */
+    record Closed(org.handsim.model.HandModel model, double[] holdN, HoldTest test) {
+        static Closed of(Scenario s) {
+            org.handsim.model.SceneGeometry g = new org.handsim.model.SceneGeometry(s.object(), org.handsim.model.SceneGeometry.DEFAULT_K);
+            org.handsim.model.HandModel m = org.handsim.model.Simulation.model(s, g);
+            HoldReport.close(m);
+            double[] l = org.handsim.grasp.GraspAssessment.of(m.graspInput(), s.friction(), 8).holdN();
+            return new Closed(m, l, new HoldTest(LockedGrasp.of(m, g, ObjectMass.of(g.objectMesh(), Double.NaN, Double.NaN)),
+                HoldSettings.defaults(58.84)));
         }
     }
 }
