@@ -9,8 +9,9 @@ import org.handsim.cli.HandSim;
  * first frame} on standard output), the thread whose name starts with {@code args[0]} is
  * stopped ({@code Thread.stop}: a {@code ThreadDeath} thrown where it is, as the
  * NullPointerException that can end Java3D's rendering-attributes thread is thrown in its work)
- * at a moment it is running, not waiting. Prints {@code death: stopped NAME} and exits with
- * {@code handsim gui}'s exit code.
+ * at a moment it is running, not waiting. Prints {@code death: stopped NAME} (or, on a JDK
+ * whose {@code Thread.stop} only throws, 20 and later, {@code death: this JDK cannot stop a
+ * thread}) and exits with {@code handsim gui}'s exit code.
  */
 final class Java3dThreadDeath {
     private Java3dThreadDeath() {}
@@ -39,7 +40,13 @@ final class Java3dThreadDeath {
                 firstFrame.await();
                 Thread target = find(name);
                 while (target.getState() != Thread.State.RUNNABLE) Thread.onSpinWait();
-                target.stop();
+                try {
+                    target.stop();
+                } catch (UnsupportedOperationException e) {
+                    System.out.println("death: this JDK cannot stop a thread (Thread.stop: " + e + ")");
+                    System.out.flush();
+                    return;
+                }
                 System.out.println("death: stopped " + name);
                 System.out.flush();
             } catch (InterruptedException e) {
