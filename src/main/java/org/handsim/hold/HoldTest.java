@@ -68,7 +68,7 @@ import org.handsim.model.SceneGeometry;
  *       clutch's torque, its rise over the window carried on to the push's end, stays within
  *       τ_break. A clutch that lets go is how a creeping grasp fails after all (two of the
  *       LP-consistency pushes creep by micrometres for a second, then a clutch slips and they
- *       turn 15°); without those guards the rule called them held.</li>
+ *       turn 15°); a rule without those guards would call them held.</li>
  *   <li><i>Verdict only</i> ({@link #push(int, boolean)} with {@code verdictOnly}): a failed
  *       direction stops at the step that crosses a threshold (the planner's rows need only the
  *       verdict and the margin, which do not depend on what comes after).</li>
