@@ -66,9 +66,11 @@ import org.handsim.model.SceneGeometry;
  *       window's own largest speed and spin, but only while nothing says the creep will grow:
  *       neither is above the last window's, no clutch slipped in the window, and every engaged
  *       clutch's torque, its rise over the window carried on to the push's end, stays within
- *       τ_break. A clutch that lets go is how a creeping grasp fails after all (two of the
- *       LP-consistency pushes creep by micrometres for a second, then a clutch slips and they
- *       turn 15°); a rule without those guards would call them held.</li>
+ *       τ_break. A clutch that lets go is how a creeping grasp fails after all: two of the
+ *       LP-consistency pushes creep by micrometres for a second while a clutch slips, then
+ *       turn 15°, and without the slip guard the test would call them held (the other two
+ *       guards bound no push measured; they cover a creep that speeds up, or a clutch on its
+ *       way to τ_break, before either shows).</li>
  *   <li><i>Verdict only</i> ({@link #push(int, boolean)} with {@code verdictOnly}): a failed
  *       direction stops at the step that crosses a threshold (the planner's rows need only the
  *       verdict and the margin, which do not depend on what comes after).</li>
@@ -89,8 +91,6 @@ public final class HoldTest {
     public static final double REST_WINDOW_S = 0.05;
     /** When the creep test starts to judge a push that has not come to rest, s into it. */
     public static final double CREEP_AFTER_S = 0.5;
-    /** The creep test's largest ratio of a window's speed or spin to the last window's: 1, not speeding up at all. */
-    public static final double CREEP_GROWTH = 1;
     /** Interval of the samples kept for the chart and the CSV, s. */
     public static final double SAMPLE_S = 0.01;
 
@@ -261,6 +261,7 @@ public final class HoldTest {
         final boolean stopAtCrossing;
         final double h = settings.dtS();
         final int every = Math.max(1, (int) Math.round(SAMPLE_S / h));
+        final long windowSteps = Math.max(1, Math.round(REST_WINDOW_S / h));
         double[] ts, ds, rs;
         int ns;
         double maxD, maxR, disp, rot, ratio, crossedAt = Double.NaN, lostAt = Double.NaN, settledAt = Double.NaN;
@@ -302,7 +303,7 @@ public final class HoldTest {
             ns = 1;
             double[] g = settings.gravity() ? grasp.gravity() : zero;
             double m = grasp.mass().mass();
-            double windowSteps = Math.max(1, Math.round(REST_WINDOW_S / h)), restV = REST_SPEED_M_S, restW = REST_SPIN_RAD_S;
+            double restV = REST_SPEED_M_S, restW = REST_SPIN_RAD_S;
             long still = 0;
             int lastContacts = -1;
             long i = 0;
@@ -376,9 +377,7 @@ public final class HoldTest {
                     lastContacts = contacts;
                     if (settling && still >= windowSteps) break;
                     if (still >= windowSteps && i < n && Double.isNaN(crossedAt)) {
-                        double left = (n - i) * h;
-                        // constant acceleration at most twice the window's speed limit over the window
-                        double bd = restV * left + restV / REST_WINDOW_S * left * left, br = restW * left + restW / REST_WINDOW_S * left * left;
+                        double left = (n - i) * h, bd = bound(restV, left), br = bound(restW, left);
                         if (maxD + bd < dispThr && maxR + br < rotThr) {
                             settle(i, n, t, bd, br);
                             break;
@@ -401,9 +400,8 @@ public final class HoldTest {
         /**
          * The creep test, from {@link #CREEP_AFTER_S} into a push that the rest test has not
          * ended, window by window ({@link #REST_WINDOW_S}, back to back): the window's own largest
-         * speed v and spin ω bound what is left as the rest test's bound does (v·t + (v/W)·t²),
-         * provided the object is not speeding up (neither is above {@link #CREEP_GROWTH}× the
-         * last window's), no clutch is slipping, and every engaged clutch's torque, its largest in
+         * speed v and spin ω bound what is left as the rest test's bound does ({@link #bound}),
+         * provided the object is not speeding up (neither is above the last window's), no clutch is slipping, and every engaged clutch's torque, its largest in
          * the window raised by its rise over the window for every window left, stays below
          * τ_break: a clutch that lets go later is what makes a creeping grasp fail after all. True
          * when the push ends here, held.
@@ -416,23 +414,22 @@ public final class HoldTest {
                 if (!jointSlips[j]) continue;
                 if (slipping[j]) winSlip = true;
                 double carried = pressNow[j] + scene.jointWormTorque(j, h);
-                if (winStartTau[j] != winStartTau[j]) winStartTau[j] = carried;
+                if (Double.isNaN(winStartTau[j])) winStartTau[j] = carried;
                 winTau[j] = Math.max(winTau[j], carried);
                 lastTau[j] = carried;
             }
-            long windowSteps = Math.max(1, Math.round(REST_WINDOW_S / h));
             if (i % windowSteps != 0) return false;
             boolean ended = false;
             if (t >= CREEP_AFTER_S - 1e-12 && i < n && Double.isNaN(crossedAt) && !winSlip && lastWinV >= 0
-                && winV <= CREEP_GROWTH * lastWinV && winW <= CREEP_GROWTH * lastWinW) {
+                && winV <= lastWinV && winW <= lastWinW) {
                 double left = (n - i) * h, windows = left / REST_WINDOW_S;
                 boolean torqueOk = true;
                 for (int j = 0; j < 6; j++) {
-                    if (!jointSlips[j] || winStartTau[j] != winStartTau[j]) continue;
+                    if (!jointSlips[j] || Double.isNaN(winStartTau[j])) continue;
                     double rise = Math.max(0, lastTau[j] - winStartTau[j]);
                     if (!(winTau[j] + rise * windows <= grasp.tauBreak())) torqueOk = false;
                 }
-                double bd = winV * left + winV / REST_WINDOW_S * left * left, br = winW * left + winW / REST_WINDOW_S * left * left;
+                double bd = bound(winV, left), br = bound(winW, left);
                 if (torqueOk && maxD + bd < dispThr && maxR + br < rotThr) {
                     settle(i, n, t, bd, br);
                     ended = true;
@@ -500,6 +497,15 @@ public final class HoldTest {
             if (dx * accel[0] + dy * accel[1] + dz * accel[2] < 0) return false;
         }
         return true;
+    }
+
+    /**
+     * How far a speed (or spin) below {@code rate} over a whole rest window can carry the object
+     * in the {@code left} seconds that remain, its acceleration taken constant and so below
+     * 2·rate/W: rate·t + (rate/W)·t².
+     */
+    private static double bound(double rate, double left) {
+        return rate * left + rate / REST_WINDOW_S * left * left;
     }
 
     private static double sq(double a) { return a * a; }

@@ -221,10 +221,9 @@ public class HoldTestTest {
      * A creeping grasp whose clutch lets go later still fails: seed 101's fourth-best mug grasp
      * (every clutch engaged) pushed along +x with 0.9 × the hold LP's load creeps by
      * micrometres for over a second — under 0.1 mm at 1 s, slower than the creep test's bound
-     * could ever carry past 5 cm — then a clutch slips and the mug turns past 15°. The creep
-     * test judges such a push held unless its guards (no clutch slipping, none whose torque is
-     * on its way to τ_break, the creep not speeding up) stop it; here they must, and the push
-     * is simulated to its crossing.
+     * could ever carry past 5 cm — while one clutch slips slowly, then the mug turns past 15°.
+     * The creep test would call it held at 0.55 s but for its guard "no clutch slipped in the
+     * window"; with it the push is simulated to its crossing.
      */
     @Test
     @Tag("slow")   // a planner grasp closed and pushed for 1.5 s: seconds of CPU
