@@ -116,14 +116,8 @@ public final class ForkedLauncher {
 
     /** The processor seconds of this JVM's reaped child processes (user + system), or NaN off Linux. */
     static double childrenCpuSeconds() {
-        try {
-            String stat = Files.readString(Path.of("/proc/self/stat"));
-            // the command name (field 2) may hold spaces: count fields after its closing ')'; cutime and cstime are fields 16 and 17
-            String[] f = stat.substring(stat.lastIndexOf(')') + 2).trim().split("\\s+");
-            return (Long.parseLong(f[13]) + Long.parseLong(f[14])) / 100.0;   // USER_HZ, as TestTimes reads it
-        } catch (IOException | RuntimeException e) {
-            return Double.NaN;
-        }
+        long[] ticks = TestTimes.cpuTicks();
+        return ticks == null ? Double.NaN : ticks[1] / TestTimes.TICKS_PER_S;
     }
 
     /** The classes (not nested ones) under the scanned folders whose names one of the include patterns matches. */

@@ -30,7 +30,7 @@ import org.junit.platform.launcher.TestPlan;
  */
 public final class TestTimes implements TestExecutionListener {
     /** Clock ticks per second of /proc's CPU times (USER_HZ: 100 on every Linux we run on). */
-    private static final double TICKS_PER_S = 100.0;
+    static final double TICKS_PER_S = 100.0;
 
     private record Mark(long wallNanos, long[] cpuTicks) {}
 
@@ -82,7 +82,7 @@ public final class TestTimes implements TestExecutionListener {
     }
 
     /** {self user+system, reaped children's user+system} in clock ticks, or null off Linux. */
-    private static long[] cpuTicks() {
+    static long[] cpuTicks() {
         try {
             String stat = Files.readString(Path.of("/proc/self/stat"));
             // the command name (field 2) may hold spaces: count fields after its closing ')'
