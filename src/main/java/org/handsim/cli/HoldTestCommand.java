@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.handsim.body.ContactSolver;
 import org.handsim.chart.ChartSet;
 import org.handsim.chart.HoldTestChart;
 import org.handsim.files.AtomicFile;
@@ -164,6 +165,8 @@ public final class HoldTestCommand implements Callable<Integer> {
             set.publish();
         }
         for (String line : verdicts(report)) stdout.println(line);
+        String unsettled = unconverged(report);
+        if (unsettled != null) err.println(unsettled);
         if (timing) {
             stdout.println(String.format(Locale.ROOT, "timing: one six-direction test %.4f s (median of %s, warm, in-process)",
                 ((Map<?, ?>) json.get("timing")).get("six_directions_s_median"), ((Map<?, ?>) json.get("timing")).get("samples")));
@@ -194,6 +197,21 @@ public final class HoldTestCommand implements Callable<Integer> {
         }
         out.add(String.format(Locale.ROOT, "%d of 6 directions held (smallest margin %.3f)", r.passedCount(), r.smallestMargin()));
         return out;
+    }
+
+    /**
+     * A note for stderr when some steps did not settle Coulomb's fixed point (each step's solves
+     * are exact; the step then used the last), or null: the results stand, the reader should know.
+     */
+    static String unconverged(HoldReport r) {
+        long n = (long) r.test().settling()[4], steps = Math.round(r.test().settling()[2] / r.test().settings().dtS());
+        for (DirectionResult d : r.directions()) {
+            n += d.unconvergedSteps();
+            steps += Math.round(d.simulatedS() / r.test().settings().dtS());
+        }
+        if (n == 0) return null;
+        return String.format(Locale.ROOT, "handsim hold-test: note: %d of %d steps did not settle Coulomb's fixed point within %d solves"
+            + " and used the last (unconverged_steps in hold-test.json)", n, steps, ContactSolver.MAX_FIXED_POINT);
     }
 
     /** The warm in-process median of one six-direction test of the report's locked grasp. */

@@ -27,6 +27,10 @@ import java.util.List;
  * @param settledBoundDeg how far it could still have turned then, at most, degrees
  * @param contacts       the contacts at the end (the last step simulated)
  * @param simulatedS     how much of the push was simulated step by step, s
+ * @param unconvergedSteps the steps whose contact solve ended without settling Coulomb's fixed
+ *                       point ({@code ContactSolver.MAX_FIXED_POINT} solves: the normal impulses
+ *                       kept changing, by 1e-6 to 0.13 of the largest on the planner's grasps,
+ *                       between contact states that take turns); the step used the last solve
  * @param times          sample times, s (for the chart and the CSV; a sample every
  *                       {@link HoldTest#SAMPLE_S})
  * @param displacements  displacement at each sample, m
@@ -36,7 +40,7 @@ public record DirectionResult(String direction, double[] unit, double forceN, bo
                               double rotationDeg, double finalDisplacementM, double finalRotationDeg, double margin,
                               double failedAtS, double contactLostS, double settledS, double settledBoundM,
                               double settledBoundDeg, List<Contact> contacts,
-                              double simulatedS, double[] times, double[] displacements, double[] rotations) {
+                              double simulatedS, long unconvergedSteps, double[] times, double[] displacements, double[] rotations) {
     /**
      * A contact at the end of the push, world frame.
      *

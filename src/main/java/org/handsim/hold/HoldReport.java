@@ -143,6 +143,7 @@ public record HoldReport(String scenario, double closeS, ClutchState[] states, S
         settle.put("rotation_deg", settled[1]);
         settle.put("time_s", settled[2]);
         settle.put("dropped", settled[3] != 0);
+        settle.put("unconverged_steps", (long) settled[4]);
         m.put("settling", settle);
         List<Object> ds = new ArrayList<>();
         for (DirectionResult d : directions) ds.add(direction(d));
@@ -190,6 +191,7 @@ public record HoldReport(String scenario, double closeS, ClutchState[] states, S
         o.put("settled_bound_m", d.settledBoundM());
         o.put("settled_bound_deg", d.settledBoundDeg());
         o.put("simulated_s", d.simulatedS());
+        o.put("unconverged_steps", d.unconvergedSteps());
         List<Object> cs = new ArrayList<>();
         for (DirectionResult.Contact c : d.contacts()) {
             Map<String, Object> x = new LinkedHashMap<>();

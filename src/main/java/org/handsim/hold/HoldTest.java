@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import org.handsim.body.BodyContacts;
 import org.handsim.body.BodyScene;
+import org.handsim.body.ContactSolver;
 import org.handsim.body.FreeBody;
 import org.handsim.body.MeshTopology;
 import org.handsim.body.ProximityContacts;
@@ -175,10 +176,11 @@ public final class HoldTest {
     /**
      * How the object settled after its release, before any push: the displacement and rotation
      * (m, degrees) of the settling from the pose at release, how long it took (s), and whether it
-     * dropped instead (it crossed a threshold or flew off: then no push can hold it).
+     * dropped instead (it crossed a threshold or flew off: then no push can hold it), and how
+     * many of its steps did not settle Coulomb's fixed point ({@link DirectionResult#unconvergedSteps}).
      */
     public double[] settling() {
-        return new double[] {settle.maxD, Math.toDegrees(settle.maxR), settle.simulated, dropped ? 1 : 0};
+        return new double[] {settle.maxD, Math.toDegrees(settle.maxR), settle.simulated, dropped ? 1 : 0, settle.unconverged};
     }
 
     /** The object left the hand while it settled: every direction fails. */
@@ -223,14 +225,14 @@ public final class HoldTest {
     public DirectionResult push(String name, double[] u, double f, boolean verdictOnly) {
         if (dropped) {
             return new DirectionResult(name, u.clone(), f, false, settle.maxD, Math.toDegrees(settle.maxR), settle.disp,
-                Math.toDegrees(settle.rot), 1 - settle.ratio, 0, settle.lostAt, Double.NaN, 0, 0, List.of(), 0,
+                Math.toDegrees(settle.rot), 1 - settle.ratio, 0, settle.lostAt, Double.NaN, 0, 0, List.of(), 0, 0,
                 settle.times(), settle.displacements(), settle.rotations());
         }
         Run r = new Run(u, f, Double.NaN, settings.maxDisplacementM(), Math.toRadians(settings.maxRotationDeg()), verdictOnly);
         r.go(Math.round(settings.durationS() / settings.dtS()));
         return new DirectionResult(name, u.clone(), f, r.passed(), r.maxD, Math.toDegrees(r.maxR), r.disp, Math.toDegrees(r.rot),
             1 - r.ratio, r.crossedAt, r.lostAt, r.settledAt, r.boundD, Math.toDegrees(r.boundR), r.endContacts(), r.simulated,
-            r.times(), r.displacements(), r.rotations());
+            r.unconverged, r.times(), r.displacements(), r.rotations());
     }
 
     /**
@@ -266,6 +268,7 @@ public final class HoldTest {
         int ns;
         double maxD, maxR, disp, rot, ratio, crossedAt = Double.NaN, lostAt = Double.NaN, settledAt = Double.NaN;
         double boundD, boundR, forceAtCrossing = Double.NaN, forceAtRest, simulated;
+        long unconverged;
         boolean free, settling, slow;
         final double[] x0 = new double[3], q0 = new double[4];
         // the creep test's current window: largest speed, spin and clutch torques, the clutch torques at its start
@@ -323,10 +326,13 @@ public final class HoldTest {
                     contacts = 0;
                 } else {
                     scene.disturbance(force, zero);
-                    if (scene.step(h) == org.handsim.body.ContactSolver.Outcome.NOT_POSITIVE_DEFINITE) {
+                    ContactSolver.Outcome outcome = scene.step(h);
+                    if (outcome == ContactSolver.Outcome.NOT_POSITIVE_DEFINITE) {
                         // its impulses are not a solution: an answer from them would be made up
                         throw new IllegalStateException("hold test: the contact problem at t = " + t + " s is not positive definite");
                     }
+                    // each of Coulomb's solves is exact; only their fixed point may not settle: counted, said in the outputs
+                    if (outcome == ContactSolver.Outcome.MAX_ITERATIONS) unconverged++;
                     contacts = scene.contacts().size();
                     // an engaged clutch slips once the torque it carries (its press and what held it
                     // against opening) passes τ_break, transmits τ_break while it slips, and grips

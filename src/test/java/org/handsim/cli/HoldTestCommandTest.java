@@ -1,6 +1,7 @@
 package org.handsim.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -25,7 +26,8 @@ class HoldTestCommandTest {
         "directions", "passed", "held", "smallest_margin");
     static final List<String> DIRECTION_KEYS = List.of("direction", "unit", "passed", "displacement_m", "rotation_deg",
         "final_displacement_m", "final_rotation_deg", "margin", "failed_at_s", "contact_lost_s", "settled_s", "settled_bound_m",
-        "settled_bound_deg", "simulated_s", "contacts");
+        "settled_bound_deg", "simulated_s", "unconverged_steps", "contacts");
+    static final List<String> SETTLING_KEYS = List.of("displacement_m", "rotation_deg", "time_s", "dropped", "unconverged_steps");
 
     @Test
     @SuppressWarnings("unchecked")
@@ -50,6 +52,8 @@ class HoldTestCommandTest {
             }
             Map<String, Object> j = (Map<String, Object>) Json.parse("hold-test.json", Files.readString(out.resolve("hold-test.json")));
             assertEquals(KEYS, new ArrayList<>(j.keySet()));
+            assertEquals(SETTLING_KEYS, new ArrayList<>(((Map<String, Object>) j.get("settling")).keySet()));
+            assertFalse(r.err().contains("Coulomb's fixed point"), "no contact, no unsettled step to note: " + r.err());
             List<Object> ds = (List<Object>) j.get("directions");
             assertEquals(6, ds.size());
             for (Object o : ds) assertEquals(DIRECTION_KEYS, new ArrayList<>(((Map<String, Object>) o).keySet()));

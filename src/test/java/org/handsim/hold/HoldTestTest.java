@@ -245,6 +245,23 @@ public class HoldTestTest {
         }
     }
 
+    @Test
+    @Tag("slow")   // a planner grasp closed and pushed for 2 s and 0.07 s: seconds of CPU
+    void stepsWhoseCoulombFixedPointDidNotSettleAreCountedNotHidden() throws Exception {
+        Path dir = Files.createTempDirectory("hold-unsettled");
+        try {
+            HoldTest t = Closed.of(planGrasp("plan-mug-s101-best01.json", dir)).test();
+            DirectionResult px = t.push(1, false), mx = t.push(0, false);
+            // +x creeps for the whole 2 s with contacts taking turns: some steps' normal impulses never settle
+            assertTrue(px.passed() && px.simulatedS() == 2.0, "+x held, simulated to the end: " + px.simulatedS());
+            assertTrue(px.unconvergedSteps() > 0 && px.unconvergedSteps() < 100, "+x: " + px.unconvergedSteps() + " of 2000 steps");
+            assertEquals(0, mx.unconvergedSteps(), "-x comes to rest at once, every step settled");
+            assertEquals(0.0, t.settling()[4], "the settling's steps all settled");
+        } finally {
+            ChildJvm.deleteTree(dir);
+        }
+    }
+
     /**
      * A planner grasp closed on its fixed object, its hold LP's loads (8-edge cones, the
      * scenario's μ; order +x, −x, +y, −y, +z, −z) and the hold test on it (the mesh's mass at
