@@ -29,7 +29,7 @@ import java.util.List;
  * @param simulatedS     how much of the push was simulated step by step, s
  * @param unconvergedSteps the steps whose contact solve ended without settling Coulomb's fixed
  *                       point ({@code ContactSolver.MAX_FIXED_POINT} solves: the normal impulses
- *                       kept changing, by 1e-6 to 0.13 of the largest on the planner's grasps,
+ *                       kept changing, by 6e-7 to 0.13 of the largest on a planner grasp measured,
  *                       between contact states that take turns); the step used the last solve
  * @param times          sample times, s (for the chart and the CSV; a sample every
  *                       {@link HoldTest#SAMPLE_S})
