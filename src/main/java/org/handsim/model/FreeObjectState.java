@@ -28,6 +28,8 @@ final class FreeObjectState {
     double speed, spin, penetration, disp, rot, maxDisp, maxRot;
     int contacts, handContacts;
     double releasedAt = Double.NaN, slippedAt = Double.NaN, lostAt = Double.NaN;
+    /** Steps whose Coulomb fixed point did not settle (the step used the last exact solve): summary.json's {@code unconverged_steps}. */
+    long unconverged;
 
     /** At the start: the palm and the object where they are, the references of the displacement and rotation. */
     void reset(double[] palm, FreeObjectScene s) {
@@ -37,6 +39,7 @@ final class FreeObjectState {
         speed = spin = penetration = disp = rot = maxDisp = maxRot = 0;
         contacts = handContacts = 0;
         releasedAt = slippedAt = lostAt = Double.NaN;
+        unconverged = 0;
         java.util.Arrays.fill(innerForce, 0);
     }
 

@@ -435,7 +435,13 @@ public final class HandModel {
                 free.hand(FreeObjectScene.linkBody(k, j), f, 12 * j, twistScratch, j >= 2 ? f2 : -1, j == 3 ? f3 : -1);
             }
         }
-        free.step(t - h, h);
+        org.handsim.body.ContactSolver.Outcome outcome = free.step(t - h, h);
+        if (outcome == org.handsim.body.ContactSolver.Outcome.NOT_POSITIVE_DEFINITE) {
+            // its impulses are not a solution: an answer from them would be made up
+            throw new SimulationException("the free object's contact problem at t = " + t + " s is not positive definite");
+        }
+        // each of Coulomb's solves is exact; only their fixed point may not settle: counted, said in the outputs
+        if (outcome == org.handsim.body.ContactSolver.Outcome.MAX_ITERATIONS) objectState.unconverged++;
         org.handsim.body.BodyStepper stepper = free.stepper();
         for (int i = 0; i < 3; i++) {
             double w2 = followerOf[i][0] >= 0 ? stepper.followerVelocity(followerOf[i][0]) : 0;
@@ -1386,7 +1392,8 @@ public final class HandModel {
      * or a joint's fingertip-equivalent force exceeded Barrett's rating ({@link RatingWatch}); each
      * kind in the order the stretches ended, those still going on ending now, last; then, for a
      * free object, the steps in which it moved more than the contact margin (tunnelling: the
-     * first and the fastest, with their times and speeds).
+     * first and the fastest, with their times and speeds) and those whose Coulomb fixed point did
+     * not settle.
      */
     public java.util.List<String> warnings() {
         java.util.List<String> w = startWarnings();
@@ -1394,6 +1401,10 @@ public final class HandModel {
         w.addAll(ratings.warnings());
         String tunnel = free == null || free.tunnelling() == null ? null : free.tunnelling().warning();
         if (tunnel != null) w.add(tunnel.replaceFirst("^warning: ", ""));
+        if (objectUnconvergedSteps() > 0) {
+            w.add(objectUnconvergedSteps() + " of the free object's steps did not settle Coulomb's fixed point within "
+                + org.handsim.body.ContactSolver.MAX_FIXED_POINT + " solves and used the last (unconverged_steps)");
+        }
         return w;
     }
     /** Motor count of finger k's (first) breakaway, NaN if none. */
@@ -1464,6 +1475,13 @@ public final class HandModel {
      * margin), or null for a fixed object or before the release.
      */
     public org.handsim.body.Tunnelling objectTunnelling() { return free == null ? null : free.tunnelling(); }
+
+    /**
+     * The free object's steps whose Coulomb fixed point did not settle within
+     * {@link org.handsim.body.ContactSolver#MAX_FIXED_POINT} solves (each step then used the last
+     * exact solve); 0 for a fixed object.
+     */
+    public long objectUnconvergedSteps() { return free == null ? 0 : objectState.unconverged; }
 
     /** When the free object was released (the start of its first free step), s; NaN before. */
     public double objectReleasedAt() { return free == null ? Double.NaN : objectState.releasedAt; }

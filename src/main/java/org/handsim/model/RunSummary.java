@@ -21,7 +21,9 @@ import java.util.Map;
  * more than 5 mm relative to the palm, or null), {@code dropped_at_s} (when it lost every
  * contact with the hand and moved away, or null) and its tunnelling ({@code tunnelling_steps},
  * {@code tunnelling_at_s} and {@code tunnelling_speed_m_s}: how many steps moved a point of it
- * more than the contact margin, the first one's end time and speed bound, or null).
+ * more than the contact margin, the first one's end time and speed bound, or null), then
+ * {@code unconverged_steps} (steps whose Coulomb fixed point did not settle; each used its last
+ * exact solve).
  */
 public final class RunSummary {
     private RunSummary() {}
@@ -70,6 +72,7 @@ public final class RunSummary {
             s.put("tunnelling_steps", tu == null ? 0 : tu.steps());
             s.put("tunnelling_at_s", tu == null ? null : orNull(tu.firstTimeS()));
             s.put("tunnelling_speed_m_s", tu == null ? null : orNull(tu.firstSpeedMS()));
+            s.put("unconverged_steps", m.objectUnconvergedSteps());
         }
         Map<String, Object> c = new LinkedHashMap<>();
         for (HandModel.Counter counter : HandModel.Counter.values()) c.put(counter.name().toLowerCase(), m.counter(counter));

@@ -119,6 +119,9 @@ class FreeObjectRunTest {
         Map<String, Object> s = RunSummary.of(slips, 1);
         assertEquals(slipped, (Double) s.get("slipped_at_s"), 1e-9);
         assertEquals(dropped, (Double) s.get("dropped_at_s"), 1e-9);
+        // a lift whose Coulomb fixed point settles at every step, through the slip and the drop
+        assertEquals(0L, s.get("unconverged_steps"));
+        assertEquals(0L, RunSummary.of(held, 1).get("unconverged_steps"));
     }
 
     @SuppressWarnings("unchecked")
