@@ -510,6 +510,15 @@ public final class ContactSolver {
     /** @return the convex solves of the last {@link #solveCoulomb} */
     public int fixedPointIterations() { return fixedPoint; }
 
+    /**
+     * How the outputs say that some steps' fixed point did not settle ({@link #solveCoulomb}
+     * returned {@link Outcome#MAX_ITERATIONS}): "{@code count} steps did not settle …", count
+     * being e.g. "38 of 4785".
+     */
+    public static String unsettledSteps(String count) {
+        return count + " steps did not settle Coulomb's fixed point within " + MAX_FIXED_POINT + " solves and used the last";
+    }
+
     /** @return the Newton iterations of the last solve (all of a {@link #solveCoulomb}'s together) */
     public int iterations() { return iterations; }
 

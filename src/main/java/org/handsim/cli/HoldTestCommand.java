@@ -210,8 +210,7 @@ public final class HoldTestCommand implements Callable<Integer> {
             steps += Math.round(d.simulatedS() / r.test().settings().dtS());
         }
         if (n == 0) return null;
-        return String.format(Locale.ROOT, "handsim hold-test: note: %d of %d steps did not settle Coulomb's fixed point within %d solves"
-            + " and used the last (unconverged_steps in hold-test.json)", n, steps, ContactSolver.MAX_FIXED_POINT);
+        return "handsim hold-test: note: " + ContactSolver.unsettledSteps(n + " of " + steps) + " (unconverged_steps in hold-test.json)";
     }
 
     /** The warm in-process median of one six-direction test of the report's locked grasp. */

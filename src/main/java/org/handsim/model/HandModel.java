@@ -1402,8 +1402,7 @@ public final class HandModel {
         String tunnel = free == null || free.tunnelling() == null ? null : free.tunnelling().warning();
         if (tunnel != null) w.add(tunnel.replaceFirst("^warning: ", ""));
         if (objectUnconvergedSteps() > 0) {
-            w.add(objectUnconvergedSteps() + " of the free object's steps did not settle Coulomb's fixed point within "
-                + org.handsim.body.ContactSolver.MAX_FIXED_POINT + " solves and used the last (unconverged_steps)");
+            w.add(org.handsim.body.ContactSolver.unsettledSteps(objectUnconvergedSteps() + " of the free object's") + " (unconverged_steps)");
         }
         return w;
     }
