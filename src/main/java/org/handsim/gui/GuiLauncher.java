@@ -182,8 +182,13 @@ public final class GuiLauncher {
         return done;
     }
 
+    /** A time limit in seconds as the messages give it: 0.3, 10, 60. */
+    static String seconds(long ms) {
+        return java.math.BigDecimal.valueOf(ms, 3).stripTrailingZeros().toPlainString();
+    }
+
     private static String notClosed(long timeoutMs) {
-        String s = java.math.BigDecimal.valueOf(timeoutMs, 3).stripTrailingZeros().toPlainString();
+        String s = seconds(timeoutMs);
         return "the window did not close within " + s + " s (Java3D's threads no longer answer): leaving without it";
     }
 

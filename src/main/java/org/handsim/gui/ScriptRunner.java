@@ -648,19 +648,41 @@ public final class ScriptRunner {
         return r.x + "," + r.y + "," + r.width + "," + r.height;
     }
 
-    /** Runs {@code c} on the event dispatch thread and returns its value. */
+    /**
+     * How long an action may wait for the event dispatch thread before the script fails: longer
+     * than any action takes, so only a blocked thread reaches it (a Java3D thread that died leaves
+     * the event dispatch thread waiting for it for ever in some of Java3D's calls).
+     */
+    static final long EDT_TIMEOUT_MS = 60_000;
+
+    /** Runs {@code c} on the event dispatch thread and returns its value ({@link #EDT_TIMEOUT_MS} at most). */
     static <T> T edt(Callable<T> c) throws Exception {
+        return edt(c, EDT_TIMEOUT_MS);
+    }
+
+    /**
+     * Runs {@code c} on the event dispatch thread and returns its value, or fails the script when
+     * the thread has not run it within {@code timeoutMs} ({@link GuiLauncher#onEdtWithin}: a
+     * blocked event dispatch thread never holds the script, and with it the run, for ever).
+     */
+    static <T> T edt(Callable<T> c, long timeoutMs) throws Exception {
         if (SwingUtilities.isEventDispatchThread()) return c.call();
         AtomicReference<T> value = new AtomicReference<>();
-        AtomicReference<Exception> failure = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> {
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        boolean ran = GuiLauncher.onEdtWithin(() -> {
             try {
                 value.set(c.call());
-            } catch (Exception e) {
+            } catch (Throwable e) {
                 failure.set(e);
             }
-        });
-        if (failure.get() != null) throw failure.get();
+        }, timeoutMs);
+        if (!ran) {
+            throw new ScriptFailure("the event dispatch thread did not answer within " + GuiLauncher.seconds(timeoutMs)
+                + " s (Java3D's threads no longer answer?)", 1);
+        }
+        Throwable f = failure.get();
+        if (f instanceof Exception e) throw e;
+        if (f instanceof Error e) throw e;
         return value.get();
     }
 }

@@ -27,6 +27,43 @@ import org.junit.jupiter.api.Test;
  */
 class BoundedCloseTest {
     @Test
+    void aScriptActionGivesUpWhenTheEventDispatchThreadIsBlockedAndSaysSo() throws Exception {
+        CountDownLatch inside = new CountDownLatch(1), release = new CountDownLatch(1);
+        SwingUtilities.invokeLater(() -> {
+            inside.countDown();
+            try {
+                release.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        assertTrue(inside.await(60, TimeUnit.SECONDS));
+        AtomicBoolean ran = new AtomicBoolean();
+        long t0 = System.nanoTime();
+        String message = null;
+        try {
+            ScriptRunner.edt(() -> ran.getAndSet(true), 300);
+        } catch (ScriptRunner.ScriptFailure f) {
+            message = f.getMessage();
+            assertEquals(1, f.exitCode());
+        } finally {
+            release.countDown();
+        }
+        double waited = (System.nanoTime() - t0) / 1e9;
+        assertEquals("the event dispatch thread did not answer within 0.3 s (Java3D's threads no longer answer?)", message);
+        assertTrue(waited >= 0.29, "gave up before its limit: " + waited + " s");
+        // a free event dispatch thread answers: the value, and the action's own exception as it was thrown
+        assertEquals(Integer.valueOf(7), ScriptRunner.edt(() -> 7, 60_000));
+        IllegalStateException thrown = new IllegalStateException("from the action");
+        try {
+            ScriptRunner.edt(() -> { throw thrown; }, 60_000);
+            fail("the action's exception was lost");
+        } catch (IllegalStateException e) {
+            assertTrue(e == thrown, "the same exception: " + e);
+        }
+    }
+
+    @Test
     void closingGivesUpWhenTheEventDispatchThreadIsBlockedAndSaysSo() throws Exception {
         CountDownLatch inside = new CountDownLatch(1), release = new CountDownLatch(1);
         SwingUtilities.invokeLater(() -> {

@@ -16,14 +16,15 @@ import org.junit.jupiter.api.Test;
  * thread dies after the first frame ({@link Java3dThreadDeath}): Java3D's other threads and
  * {@code SimpleUniverse.cleanup()} then wait for it for ever, as they did for the
  * rendering-attributes thread that a NullPointerException ended. The run still ends, within
- * {@value #LIMIT_S} s (its window closing gives up after {@link GuiLauncher#CLOSE_TIMEOUT_MS}),
+ * {@value #LIMIT_S} s (its window closing gives up after {@link GuiLauncher#CLOSE_TIMEOUT_MS}, and
+ * a script action whose event dispatch thread Java3D blocked after {@link ScriptRunner#EDT_TIMEOUT_MS}),
  * with exit code 1 and the uncaught exception counted (whether the thread dies while the script
  * plays or while the window closes). Closing the window with
  * {@code invokeAndWait} never returned here: the JVM stayed until it was killed.
  */
 @Tag("slow")   // a child JVM with a window: ./test --all
 class DeadJava3dThreadTest {
-    /** The hang guard: start-up under load, the script, closing's limit and the exit's grace, with room. */
+    /** The hang guard: start-up under load, the script (an action's limit at most), closing's limit and the exit's grace, with room. */
     static final long LIMIT_S = 180;
 
     @Test
