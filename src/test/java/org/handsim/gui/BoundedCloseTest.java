@@ -26,8 +26,8 @@ import org.junit.jupiter.api.Test;
  * display: the event dispatch thread runs headless.
  */
 class BoundedCloseTest {
-    @Test
-    void aScriptActionGivesUpWhenTheEventDispatchThreadIsBlockedAndSaysSo() throws Exception {
+    /** Blocks the event dispatch thread (once it is blocked, returns) until the latch returned is counted down. */
+    private static CountDownLatch blockTheEventDispatchThread() throws InterruptedException {
         CountDownLatch inside = new CountDownLatch(1), release = new CountDownLatch(1);
         SwingUtilities.invokeLater(() -> {
             inside.countDown();
@@ -38,17 +38,26 @@ class BoundedCloseTest {
             }
         });
         assertTrue(inside.await(60, TimeUnit.SECONDS));
+        return release;
+    }
+
+    @Test
+    void aScriptActionGivesUpWhenTheEventDispatchThreadIsBlockedAndSaysSo() throws Exception {
+        CountDownLatch release = blockTheEventDispatchThread();
         AtomicBoolean ran = new AtomicBoolean();
         long t0 = System.nanoTime();
         String message = null;
+        boolean ranThen = true;
         try {
             ScriptRunner.edt(() -> ran.getAndSet(true), 300);
         } catch (ScriptRunner.ScriptFailure f) {
             message = f.getMessage();
             assertEquals(1, f.exitCode());
         } finally {
+            ranThen = ran.get();
             release.countDown();
         }
+        assertFalse(ranThen, "the action cannot have run on a blocked thread");
         double waited = (System.nanoTime() - t0) / 1e9;
         assertEquals("the event dispatch thread did not answer within 0.3 s (Java3D's threads no longer answer?)", message);
         assertTrue(waited >= 0.29, "gave up before its limit: " + waited + " s");
@@ -65,16 +74,7 @@ class BoundedCloseTest {
 
     @Test
     void closingGivesUpWhenTheEventDispatchThreadIsBlockedAndSaysSo() throws Exception {
-        CountDownLatch inside = new CountDownLatch(1), release = new CountDownLatch(1);
-        SwingUtilities.invokeLater(() -> {
-            inside.countDown();
-            try {
-                release.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        assertTrue(inside.await(60, TimeUnit.SECONDS));
+        CountDownLatch release = blockTheEventDispatchThread();
         AtomicBoolean disposed = new AtomicBoolean();
         StringWriter text = new StringWriter();
         long t0 = System.nanoTime();
