@@ -188,8 +188,7 @@ public final class GuiLauncher {
     }
 
     private static String notClosed(long timeoutMs) {
-        String s = seconds(timeoutMs);
-        return "the window did not close within " + s + " s (Java3D's threads no longer answer): leaving without it";
+        return "the window did not close within " + seconds(timeoutMs) + " s (Java3D's threads no longer answer): leaving without it";
     }
 
     /**

@@ -110,25 +110,9 @@ class GuiWindowTest {
 
     /**
      * Runs {@code java MAIN ARGS} (the tests' class path, {@code handsim.home} the checkout) in
-     * {@code dir} on the current display; fails, naming {@code what} and showing the output, when
-     * it has not ended within {@code limitSeconds}.
+     * {@code dir} on the current display; fails, naming {@code what} and showing the output and
+     * the child's threads ({@link #threadDump}), when it has not ended within {@code limitSeconds}.
      */
-    /** The JDK's thread dump of a JVM that did not end (where it hangs), or why there is none; 30 s at most. */
-    static String threadDump(long pid, Path dir) {
-        try {
-            Path out = dir.resolve("threads.txt");
-            Process j = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "jstack").toString(), Long.toString(pid))
-                .redirectErrorStream(true).redirectOutput(out.toFile()).start();
-            if (!j.waitFor(30, TimeUnit.SECONDS)) {
-                j.destroyForcibly();
-                return "(jstack did not answer within 30 s)";
-            }
-            return Files.readString(out, StandardCharsets.UTF_8);
-        } catch (Exception e) {
-            return "(no thread dump: " + e + ")";
-        }
-    }
-
     static Child runOnDisplay(Path dir, long limitSeconds, String what, String... mainAndArgs) throws Exception {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
@@ -154,6 +138,22 @@ class GuiWindowTest {
         String log = Files.readString(logFile, StandardCharsets.UTF_8);
         System.out.println("---- " + what + " log ----\n" + log + "-------------------------");
         return new Child(p.exitValue(), log);
+    }
+
+    /** The JDK's thread dump of a JVM that did not end (where it hangs), or why there is none; 30 s at most. */
+    static String threadDump(long pid, Path dir) {
+        try {
+            Path out = dir.resolve("threads.txt");
+            Process j = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "jstack").toString(), Long.toString(pid))
+                .redirectErrorStream(true).redirectOutput(out.toFile()).start();
+            if (!j.waitFor(30, TimeUnit.SECONDS)) {
+                j.destroyForcibly();
+                return "(jstack did not answer within 30 s)";
+            }
+            return Files.readString(out, StandardCharsets.UTF_8);
+        } catch (Exception e) {
+            return "(no thread dump: " + e + ")";
+        }
     }
 
     @Test
